@@ -1,0 +1,73 @@
+// The estimator's configuration: plain data, validated before use.
+// The host (or the HID configuration report) fills it; nothing here does I/O.
+#pragma once
+#include <cstdint>
+
+#include "lumavel/core/fixed.hpp"
+#include "lumavel/core/limits.hpp"
+
+namespace lumavel {
+
+// One camera at the working resolution. Columns are meridians (the camera's
+// y axis is vertical in the body frame), so a column has one body-frame yaw.
+struct CameraGeometry {
+  PixelQ16 fu;        // focal length, working pixels
+  PixelQ16 cu;        // principal point column, working pixels (pixel 0 centre = 0)
+  AngleQ28 axis_yaw;  // yaw of the optical axis in the body frame (CCW from body x)
+  int8_t u_sign;      // d(body yaw)/du sign: -1 for an upright camera, +1 upside down
+};
+
+// A Gaussian-derivative kernel along the body yaw, repeated along the vertical.
+struct KernelSpec {
+  uint8_t order;   // derivative order 0..kMaxKernelOrder
+  AngleQ28 sigma;  // scale, radians
+};
+
+struct EstimatorConfig {
+  uint16_t width;   // working columns, kMinColumns..kMaxColumns
+  uint16_t height;  // working rows, 1 (line scan)..kMaxRows
+  CameraGeometry cam[2];
+  LengthQ24 baseline;     // h: x of cam1's optical centre minus cam0's (signed)
+  KernelSpec normaliser;  // order-0 window: the brightness that F is relative to
+  KernelSpec kernels[kMaxKernels];
+  uint8_t kernel_count;
+  uint32_t tau_us;              // observer time constant
+  uint32_t frame_period_us;     // nominal frame interval
+  uint32_t max_gap_us;          // longest frame interval bridged; longer restarts
+  uint32_t gyro_gap_us;         // gyro sample spacing that raises kStatusGyroGap
+  ValueQ28 low_texture;         // rms of F1-F0 over kernels below which V is held
+  uint16_t saturated_permille;  // clipped pixels (0 or 255) that raise kStatusSaturated
+  uint8_t options;              // ConfigOption bits
+};
+
+enum ConfigOption : uint8_t {
+  kOptionBaselineCorrection = 1u << 0,  // finite-baseline (h^2) correction, see velocity_observer.hpp
+};
+
+enum class ConfigError : uint8_t {
+  kOk = 0,
+  kWidth,
+  kHeight,
+  kFocalLength,
+  kPrincipalPoint,
+  kAxisYaw,
+  kUSign,
+  kBaseline,
+  kKernelCount,
+  kKernelOrder,
+  kKernelSigma,
+  kKernelOutsideView,
+  kTau,
+  kFramePeriod,
+  kMaxGap,
+  kGyroGap,
+  kLowTexture,
+  kSaturatedPermille,
+  kOptions,
+};
+
+// Names the first field that is out of range (kOk if none).
+ConfigError validate(const EstimatorConfig& cfg);
+const char* to_string(ConfigError e);
+
+}  // namespace lumavel

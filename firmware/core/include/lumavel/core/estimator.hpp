@@ -1,0 +1,65 @@
+// The estimator: a stereo pair of working-resolution frames and the gyro in,
+// the curvilinear velocity V (and s, heading, status) out. Fixed memory,
+// integer only, no I/O.
+#pragma once
+#include <cstdint>
+
+#include "lumavel/core/config.hpp"
+#include "lumavel/core/gyro_integrator.hpp"
+#include "lumavel/core/kernel_bank.hpp"
+#include "lumavel/core/measurement.hpp"
+#include "lumavel/core/velocity_observer.hpp"
+
+namespace lumavel {
+
+// Two 8-bit frames at the configured working resolution, taken together.
+struct FramePair {
+  uint64_t t_ns;          // middle of the exposure
+  const uint8_t* cam[2];  // row-major, `stride` bytes between rows
+  uint16_t stride;
+};
+
+struct Estimate {
+  uint64_t t_ns;
+  uint32_t frame_index;
+  SpeedQ16 v;          // filtered curvilinear velocity
+  DistQ32 distance;    // integral of v
+  AngleQ28 heading;    // integral of the gyro, wrapped to [-pi, pi)
+  uint16_t status;     // StatusFlag bits
+  SpeedQ16 v_direct;   // this interval's direct measurement (0 when none)
+  ValueQ28 texture;    // rms over kernels of F1 - F0 (observability)
+};
+
+class Estimator {
+ public:
+  // Validates, builds the kernel tables and resets. On error the estimator
+  // keeps its previous configuration.
+  ConfigError configure(const EstimatorConfig& cfg);
+  void reset();
+
+  // Gyro samples in time order. Before step(t) push every sample up to the
+  // first one at or after t when the sensor has it (interpolation needs it).
+  void push_gyro(uint64_t t_ns, RateQ24 rate_z) { gyro_.push(t_ns, rate_z); }
+
+  Estimate step(const FramePair& frames);
+
+  const EstimatorConfig& config() const { return cfg_; }
+  const KernelBank& bank() const { return bank_; }
+  const StereoMeasurement& last_measurement() const { return meas_[cur_]; }
+
+ private:
+  EstimatorConfig cfg_{};
+  KernelBank bank_{};
+  GyroIntegrator gyro_{};
+  VelocityObserver observer_{};
+  StereoMeasurement meas_[2]{};  // previous and current frame
+  int cur_ = 0;
+  bool have_prev_ = false;
+  bool configured_ = false;
+  uint64_t prev_t_ns_ = 0;
+  int64_t prev_gyro_angle_ = 0;  // unwrapped, Q3.28
+  uint32_t frame_index_ = 0;
+  DistQ32 distance_ = 0;
+};
+
+}  // namespace lumavel

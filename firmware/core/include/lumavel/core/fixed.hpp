@@ -1,0 +1,86 @@
+// Named fixed-point formats of the firmware, with range, resolution and
+// saturation. Every quantity crossing a module boundary uses one of these.
+//
+//   name        storage  format   range                 resolution        used for
+//   q15_t       int16    Q0.15    [-1, 1)               3.05e-5           spare (CMSIS naming)
+//   q31_t       int32    Q0.31    [-1, 1)               4.66e-10          kernel tables (see kernel_bank.hpp)
+//   AngleQ28    int32    Q3.28    [-8, 8) rad           3.73e-9 rad       angles: yaw, heading, gyro increments
+//   RateQ24     int32    Q7.24    [-128, 128) rad/s     5.96e-8 rad/s     gyro rate (MPU-6050 max 34.9 rad/s)
+//   LengthQ24   int32    Q7.24    [-128, 128) m         5.96e-8 m         baseline h (0.06 ppm of 8 cm)
+//   SpeedQ16    int32    Q15.16   [-32768, 32768) m/s   1.53e-5 m/s       velocity V (report and state)
+//   DistQ32     int64    Q31.32   +-2.1e9 m             2.3e-10 m         travelled distance s
+//   ValueQ28    int32    Q3.28    [-8, 8)               3.73e-9           normalised kernel outputs F, S, dM
+//   SlopeQ20    int32    Q11.20   [-2048, 2048) /rad    9.5e-7 /rad       angular derivative dF/dtheta
+//   PixelQ16    int32    Q15.16   [-32768, 32768) px    1.53e-5 px        intrinsics fu, cu
+//   CurvQ12     int32    Q19.12   [-524288, 524288)/rad^3 2.4e-4 /rad^3   d3F/dtheta3 (a correction term:
+//                                                                         1e-4 relative is plenty)
+//
+// Every conversion that can overflow saturates and reports it (see sat32).
+#pragma once
+#include <cstdint>
+
+namespace lumavel {
+
+using q15_t = int16_t;
+using q31_t = int32_t;
+using AngleQ28 = int32_t;
+using RateQ24 = int32_t;
+using LengthQ24 = int32_t;
+using SpeedQ16 = int32_t;
+using DistQ32 = int64_t;
+using ValueQ28 = int32_t;
+using SlopeQ20 = int32_t;
+using PixelQ16 = int32_t;
+using CurvQ12 = int32_t;
+
+namespace fx {
+
+constexpr int kAngleFrac = 28;
+constexpr int kRateFrac = 24;
+constexpr int kLengthFrac = 24;
+constexpr int kSpeedFrac = 16;
+constexpr int kDistFrac = 32;
+constexpr int kValueFrac = 28;
+constexpr int kSlopeFrac = 20;
+constexpr int kPixelFrac = 16;
+constexpr int kCurvFrac = 12;
+
+constexpr int32_t kInt32Max = 2147483647;
+constexpr int32_t kInt32Min = -kInt32Max - 1;
+
+// pi in Q3.28, rounded.
+constexpr AngleQ28 kPiQ28 = 843314857;
+
+// Clamps a 64-bit value into int32; sets *saturated when it had to.
+constexpr int32_t sat32(int64_t v, bool* saturated = nullptr) {
+  if (v > kInt32Max) {
+    if (saturated) *saturated = true;
+    return kInt32Max;
+  }
+  if (v < kInt32Min) {
+    if (saturated) *saturated = true;
+    return kInt32Min;
+  }
+  return static_cast<int32_t>(v);
+}
+
+// Arithmetic shift right with round-half-away-from-zero (symmetric, so that
+// positive and negative values carry no opposite biases).
+constexpr int64_t shr_round(int64_t v, int s) {
+  if (s <= 0) return v;
+  const int64_t half = int64_t{1} << (s - 1);
+  return v >= 0 ? (v + half) >> s : -((-v + half) >> s);
+}
+
+// Rounded, saturated quotient num/den in Q(q) (0 <= q <= 62; beyond 31 the
+// scale moves into num or den). A zero
+// denominator saturates toward the sign of num and sets *saturated.
+int32_t div_q(int64_t num, int64_t den, int q, bool* saturated = nullptr);
+
+// (a * b) >> s with rounding, saturated to int32.
+constexpr int32_t mul_shr(int32_t a, int32_t b, int s, bool* saturated = nullptr) {
+  return sat32(shr_round(int64_t{a} * int64_t{b}, s), saturated);
+}
+
+}  // namespace fx
+}  // namespace lumavel

@@ -1,0 +1,60 @@
+// Kernel tables: for each camera and kernel, the weights that turn a column
+// profile into B (the kernel-weighted brightness, paper eq. 2) and into
+// dB/dtheta (the derivative kernel, paper eq. 6).
+//
+// Geometry: kernel k is phi_k(psi - c), a Gaussian derivative of order n_k
+// and scale sigma_k in body-frame yaw psi, centred on c = the mean of the two
+// optical-axis yaws. Each camera's table integrates phi over the yaw interval
+// of each column (true pinhole column edges, atan), weighted by
+// cos(psi - axis) so that the column sum becomes a solid-angle integral:
+//     K[u] =  Int_{column u} phi(psi - c)  cos(psi - axis) dpsi
+//     D[u] = -Int_{column u} phi'(psi - c) cos(psi - axis) dpsi
+//     T[u] = -Int_{column u} phi'''(psi - c) cos(psi - axis) dpsi
+// Centring both cameras on the same body yaw compensates the misalignment
+// exactly (paper eq. 8 does it to first order).
+//
+// Storage: q31_t, value = w * 2^-(31 + exp). Each table uses the full range
+// (|w| max in [2^30, 2^31)), so table rounding is <= 2^-31 of the peak:
+// below 1e-9 relative, 4 orders under the 0.1 % fixed-vs-float budget.
+#pragma once
+#include <cstdint>
+
+#include "lumavel/core/config.hpp"
+#include "lumavel/core/fixed.hpp"
+#include "lumavel/core/limits.hpp"
+
+namespace lumavel {
+
+struct KernelTable {
+  q31_t w[kMaxColumns];
+  int8_t exp;  // value = w * 2^-(31 + exp)
+};
+
+struct CameraKernels {
+  KernelTable norm;                 // normaliser window (order 0)
+  KernelTable norm_d;               // its angular derivative
+  KernelTable k[kMaxKernels];       // B kernels
+  KernelTable d[kMaxKernels];       // dB/dtheta kernels
+  KernelTable t[kMaxKernels];       // d3B/dtheta3 kernels (finite-baseline correction)
+};
+
+struct KernelBank {
+  uint16_t width;
+  uint8_t count;
+  CameraKernels cam[2];
+  // Body-frame yaw of each column edge, width + 1 values, increasing with u
+  // for u_sign = +1 and decreasing otherwise.
+  AngleQ28 edge[2][kMaxColumns + 1];
+};
+
+// Pinhole column edges: axis + u_sign * atan((u - 0.5 - cu) / fu), u = 0..width.
+void pinhole_column_edges(const CameraGeometry& g, uint16_t width, AngleQ28* edges);
+
+// Builds all tables of a validated configuration.
+void build_kernel_bank(const EstimatorConfig& cfg, KernelBank& bank);
+
+// Gaussian-derivative kernel helpers (exposed for tests).
+// phi_n(s) = (-1)^n He_n(s) exp(-s^2/2), s = (psi - c)/sigma, in Q1.30.
+int32_t gaussian_derivative_q30(int order, int32_t s_q24);
+
+}  // namespace lumavel

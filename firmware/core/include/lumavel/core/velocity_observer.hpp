@@ -1,0 +1,69 @@
+// The velocity observer (paper eq. 9), discretised per frame interval.
+//
+// Between frames n-1 and n the measurement model is, for every kernel k,
+//   dM_k = M_k(n) - M_k(n-1) = d * Sbar_k / h + dtheta * Rbar_k
+// with d = V dt the distance travelled, Sbar/Rbar the trapezoid means of S and
+// R over the two frames and dtheta the integrated gyro. The innovation of eq. 9
+// with a deadbeat B-hat (L1 -> B reset every frame) projected on dF/dx gives
+// the least-squares distance over the kernels:
+//   d = h * sum_k (dM_k - dtheta Rbar_k) Sbar_k / sum_k Sbar_k^2
+// and the V-hat update of eq. 9 with l2 normalised by |dF/dx|^2 becomes
+//   V <- V + g (d/dt - V),  g = dt / (tau + dt)          (implicit Euler)
+// so V's error decays with time constant tau whatever the texture contrast,
+// resolution or frame rate. The observer starts from the first direct value.
+//
+// Finite-baseline correction: M = (F0 + F1)/2 behaves like F' + h^2/8 F''' in
+// time while S/h = F' + h^2/24 F''', which biases V by about -(k h)^2/12 for
+// texture of spatial frequency k (-4 % at h = 8 cm, 2 m, 6 deg kernels). Locally
+// a translation acts like a rotation (F_x = kappa F_theta), so F''' = kappa^3 C
+// with C the third angular derivative and kappa h = sum S R / sum R^2; the
+// least squares then uses A_k = Sbar_k + (kappa h)^3 / 12 Cbar_k for Sbar_k.
+#pragma once
+#include <cstdint>
+
+#include "lumavel/core/fixed.hpp"
+#include "lumavel/core/measurement.hpp"
+
+namespace lumavel {
+
+struct ObserverInput {
+  const StereoMeasurement* prev;
+  const StereoMeasurement* cur;
+  int64_t dt_ns;
+  AngleQ28 dtheta;  // integrated gyro over the interval
+  LengthQ24 baseline;
+  uint32_t tau_us;
+  ValueQ28 low_texture;
+  bool baseline_correction;
+};
+
+struct ObserverOutput {
+  SpeedQ16 v;
+  SpeedQ16 v_direct;
+  ValueQ28 texture;
+  bool updated;      // false: low texture, V held
+  bool saturated;
+  bool converging;
+};
+
+class VelocityObserver {
+ public:
+  void reset();
+  // Next measurement re-initialises V directly; V is held until then.
+  void restart() {
+    started_ = false;
+    since_start_ns_ = 0;
+  }
+  ObserverOutput update(const ObserverInput& in);
+  SpeedQ16 v() const { return v_; }
+  // Not started, or started less than three time constants ago.
+  bool converging_now() const { return !started_ || since_start_ns_ < 3 * tau_ns_; }
+
+ private:
+  SpeedQ16 v_ = 0;
+  bool started_ = false;
+  int64_t since_start_ns_ = 0;
+  int64_t tau_ns_ = 0;
+};
+
+}  // namespace lumavel

@@ -1,0 +1,105 @@
+#include "lumavel/core/estimator.hpp"
+
+#include "lumavel/core/column_profile.hpp"
+#include "lumavel/core/imath.hpp"
+#include "lumavel/core/status.hpp"
+
+namespace lumavel {
+namespace {
+
+// distance += v * dt: Q16 m/s * ns -> Q32 m, split to stay inside int64.
+DistQ32 advance(DistQ32 s, SpeedQ16 v, int64_t dt_ns) {
+  const int64_t x = int64_t{v} * dt_ns;  // Q16 m/s * ns, |x| < 2^31 * 2^32
+  constexpr int64_t kNsPerS = 1000000000;
+  const int64_t ip = x / kNsPerS;
+  const int64_t rem = x % kNsPerS;
+  return s + ip * 65536 + (rem * 65536) / kNsPerS;
+}
+
+}  // namespace
+
+ConfigError Estimator::configure(const EstimatorConfig& cfg) {
+  const ConfigError e = validate(cfg);
+  if (e != ConfigError::kOk) return e;
+  cfg_ = cfg;
+  build_kernel_bank(cfg_, bank_);
+  configured_ = true;
+  reset();
+  return ConfigError::kOk;
+}
+
+void Estimator::reset() {
+  gyro_.reset();
+  observer_.reset();
+  have_prev_ = false;
+  cur_ = 0;
+  prev_t_ns_ = 0;
+  prev_gyro_angle_ = 0;
+  frame_index_ = 0;
+  distance_ = 0;
+}
+
+Estimate Estimator::step(const FramePair& frames) {
+  Estimate est{};
+  est.t_ns = frames.t_ns;
+  est.frame_index = frame_index_++;
+  if (!configured_) return est;
+
+  ColumnProfile p[2];
+  column_profile(frames.cam[0], cfg_.width, cfg_.height, frames.stride, p[0]);
+  column_profile(frames.cam[1], cfg_.width, cfg_.height, frames.stride, p[1]);
+  const int next = have_prev_ ? 1 - cur_ : cur_;
+  StereoMeasurement& m = meas_[next];
+  stereo_measurement(p[0], p[1], bank_, m);
+
+  uint16_t status = 0;
+  const uint32_t sampled = p[0].clip_sampled + p[1].clip_sampled;
+  if (m.saturated || uint64_t{m.clipped} * 1000 > uint64_t{cfg_.saturated_permille} * sampled)
+    status |= kStatusSaturated;
+
+  const int64_t angle = gyro_.angle_at(frames.t_ns);
+  est.heading = fx::wrap_pi(angle);
+  if (gyro_.take_max_spacing() > uint64_t{cfg_.gyro_gap_us} * 1000) status |= kStatusGyroGap;
+
+  if (m.no_light) {
+    // Unusable frame: hold V, and pair the next good frame with nothing.
+    status |= kStatusNoLight | kStatusLowTexture;
+    have_prev_ = false;
+  } else if (!have_prev_) {
+    have_prev_ = true;
+    cur_ = next;
+  } else {
+    const int64_t dt_ns = static_cast<int64_t>(frames.t_ns - prev_t_ns_);
+    if (frames.t_ns <= prev_t_ns_ || dt_ns > int64_t{cfg_.max_gap_us} * 1000) {
+      status |= kStatusFrameGap | kStatusRestarted;
+      observer_.restart();
+    } else {
+      if (dt_ns * 2 > int64_t{cfg_.frame_period_us} * 3000) status |= kStatusFrameGap;
+      ObserverInput in{};
+      in.prev = &meas_[cur_];
+      in.cur = &m;
+      in.dt_ns = dt_ns;
+      in.dtheta = fx::sat32(angle - prev_gyro_angle_);
+      in.baseline = cfg_.baseline;
+      in.tau_us = cfg_.tau_us;
+      in.low_texture = cfg_.low_texture;
+      in.baseline_correction = (cfg_.options & kOptionBaselineCorrection) != 0;
+      const ObserverOutput o = observer_.update(in);
+      if (!o.updated) status |= kStatusLowTexture;
+      if (o.saturated) status |= kStatusSaturated;
+      est.v_direct = o.v_direct;
+      est.texture = o.texture;
+      distance_ = advance(distance_, o.v, dt_ns);
+    }
+    cur_ = next;
+  }
+  if (observer_.converging_now()) status |= kStatusConverging;
+  prev_t_ns_ = frames.t_ns;
+  prev_gyro_angle_ = angle;
+  est.v = observer_.v();
+  est.distance = distance_;
+  est.status = status;
+  return est;
+}
+
+}  // namespace lumavel

@@ -1,0 +1,69 @@
+#include "lumavel/core/gyro_integrator.hpp"
+
+namespace lumavel {
+namespace {
+
+// Longest interval integrated in one piece: keeps rate * dt inside int64.
+constexpr uint64_t kMaxStepNs = 4000000000ull;
+
+// Integral of a rate (Q7.24 rad/s) over dt nanoseconds, Q3.28 rad:
+// rate * dt * 2^4 / 1e9 = rate * dt / 62500000, rounded
+// (|rate| <= 2^31, dt <= 4e9: the product stays below 2^63).
+int64_t angle_of(int64_t rate_q24, uint64_t dt_ns) {
+  if (dt_ns > kMaxStepNs) dt_ns = kMaxStepNs;
+  const int64_t x = rate_q24 * static_cast<int64_t>(dt_ns);
+  constexpr int64_t kDiv = 62500000;
+  return x >= 0 ? (x + kDiv / 2) / kDiv : -((-x + kDiv / 2) / kDiv);
+}
+
+}  // namespace
+
+void GyroIntegrator::reset() { *this = GyroIntegrator{}; }
+
+void GyroIntegrator::push(uint64_t t_ns, RateQ24 rate) {
+  if (count_ == 0) {
+    t_[1] = t_ns;
+    r_[1] = rate;
+    angle_[1] = 0;
+    count_ = 1;
+    return;
+  }
+  if (t_ns <= t_[1]) return;  // out of order: ignore (the host refuses such input)
+  const uint64_t dt = t_ns - t_[1];
+  if (dt > max_spacing_) max_spacing_ = dt;
+  t_[0] = t_[1];
+  r_[0] = r_[1];
+  angle_[0] = angle_[1];
+  t_[1] = t_ns;
+  r_[1] = rate;
+  // Trapezoid between the two samples.
+  angle_[1] = angle_[0] + angle_of((int64_t{r_[0]} + r_[1]) / 2, dt);
+  ++count_;
+}
+
+int64_t GyroIntegrator::angle_at(uint64_t t_ns) const {
+  if (count_ == 0) return 0;
+  if (t_ns >= t_[1]) return angle_[1] + angle_of(r_[1], t_ns - t_[1]);
+  if (count_ < 2 || t_ns <= t_[0]) {
+    // Before the window: hold the oldest rate backwards.
+    const uint64_t ref = count_ < 2 ? t_[1] : t_[0];
+    const int64_t a = count_ < 2 ? angle_[1] : angle_[0];
+    const RateQ24 r = count_ < 2 ? r_[1] : r_[0];
+    return a - angle_of(r, ref - t_ns);
+  }
+  // Inside [t0, t1]: exact integral of the linear rate from t0 to t.
+  const uint64_t span = t_[1] - t_[0];
+  const uint64_t dt = t_ns - t_[0];
+  // Rate at t by linear interpolation, position in Q16 (|dr| < 2^32).
+  const int64_t frac_q16 = fx::div_q(static_cast<int64_t>(dt), static_cast<int64_t>(span), 16);
+  const int64_t rate_t = r_[0] + fx::shr_round((int64_t{r_[1]} - r_[0]) * frac_q16, 16);
+  return angle_[0] + angle_of((int64_t{r_[0]} + rate_t) / 2, dt);
+}
+
+uint64_t GyroIntegrator::take_max_spacing() {
+  const uint64_t m = max_spacing_;
+  max_spacing_ = 0;
+  return m;
+}
+
+}  // namespace lumavel

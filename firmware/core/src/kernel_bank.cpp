@@ -1,0 +1,171 @@
+#include "lumavel/core/kernel_bank.hpp"
+
+#include "lumavel/core/imath.hpp"
+
+namespace lumavel {
+namespace {
+
+constexpr int kSimpsonIntervals = 8;  // per column; error ~1e-7 for sigma >= 1 column
+constexpr int kSimpsonWeight[kSimpsonIntervals + 1] = {1, 4, 2, 4, 2, 4, 2, 4, 1};
+constexpr int64_t kSimpsonWeightSum = 3 * kSimpsonIntervals;
+constexpr int kPoints = kSimpsonIntervals + 1;
+
+// phi_n, phi_(n+1) and phi_(n+3) at s (Q7.24), Q1.30 (phi_(n+3): Q4.27,
+// |phi_6| peaks at 15). Each product He * e is the value itself times 2^54
+// (< 2^58), so it cannot overflow however large He grows.
+void gaussian_triple(int order, int64_t s, int32_t* phi_n, int32_t* phi_n1, int32_t* phi_n3) {
+  const int64_t one = int64_t{1} << 24;
+  if (s > 7 * one || s < -7 * one) {
+    *phi_n = 0;
+    *phi_n1 = 0;
+    *phi_n3 = 0;
+    return;
+  }
+  const int32_t e = fx::exp_neg_q27((s * s) >> 22);  // exp(-s^2/2), Q1.30
+  // He_0..He_4 in Q24 and He_5, He_6 in Q20 by He_(k+1) = s He_k - k He_(k-1);
+  // the lower precision of the last two keeps s * He_k inside int64 (|s| <= 7).
+  int64_t he[7];
+  he[0] = one;
+  he[1] = s;
+  for (int k = 1; k < 4; ++k) he[k + 1] = ((s * he[k]) >> 24) - k * he[k - 1];
+  const int64_t s20 = s / 16;
+  he[5] = ((s20 * (he[4] / 16)) >> 20) - 4 * (he[3] / 16);
+  he[6] = ((s20 * he[5]) >> 20) - 5 * (he[4] / 16);
+  // phi_n = (-1)^n He_n e^{-s^2/2}
+  const int64_t a = fx::shr_round(he[order] * e, 24);
+  const int64_t b = fx::shr_round(he[order + 1] * e, 24);
+  const int n3 = order + 3;
+  const int64_t c = n3 <= 4 ? fx::shr_round(he[n3] * e, 27) : fx::shr_round(he[n3] * e, 23);
+  *phi_n = static_cast<int32_t>(order % 2 == 0 ? a : -a);
+  *phi_n1 = static_cast<int32_t>((order + 1) % 2 == 0 ? b : -b);
+  *phi_n3 = static_cast<int32_t>((order + 3) % 2 == 0 ? c : -c);
+}
+
+// Raw column integrals, in sigma units, Q3.28, written into the tables'
+// storage before quantisation (no scratch memory):
+//   K = Int phi_n(s) cos(psi - axis) ds,  D = -Int phi_(n+1)(s) cos(psi - axis) ds
+void integrate(const AngleQ28* edges, uint16_t width, AngleQ28 axis, int64_t centre,
+               const KernelSpec& k, KernelTable& kk, KernelTable& dd, KernelTable* tt) {
+  for (uint16_t u = 0; u < width; ++u) {
+    const int64_t lo = edges[u], hi = edges[u + 1];
+    int64_t acc_k = 0, acc_d = 0, acc_t = 0;
+    for (int j = 0; j < kPoints; ++j) {
+      const int64_t psi = lo + (hi - lo) * j / kSimpsonIntervals;
+      int32_t cosw = 0;
+      fx::cos_sin_q30(static_cast<AngleQ28>(psi - axis), &cosw, nullptr);
+      const int64_t s = fx::div_q(psi - centre, k.sigma, 24);
+      int32_t pn = 0, pn1 = 0, pn3 = 0;
+      gaussian_triple(k.order, s, &pn, &pn1, &pn3);
+      acc_k += kSimpsonWeight[j] * fx::shr_round(int64_t{pn} * cosw, 30);
+      acc_d += kSimpsonWeight[j] * fx::shr_round(int64_t{pn1} * cosw, 30);
+      acc_t += kSimpsonWeight[j] * fx::shr_round(int64_t{pn3} * cosw, 30);  // Q27
+    }
+    const int64_t ds = fx::div_q(hi > lo ? hi - lo : lo - hi, k.sigma, 24);  // Q24
+    kk.w[u] = fx::sat32(fx::shr_round(acc_k * ds, 26) / kSimpsonWeightSum);
+    dd.w[u] = fx::sat32(-(fx::shr_round(acc_d * ds, 26) / kSimpsonWeightSum));
+    if (tt) tt->w[u] = fx::sat32(-(fx::shr_round(acc_t * ds, 24) / kSimpsonWeightSum));  // Q3.27
+  }
+  for (uint16_t u = width; u < kMaxColumns; ++u) {
+    kk.w[u] = dd.w[u] = 0;
+    if (tt) tt->w[u] = 0;
+  }
+}
+
+// Re-scales raw Q28 values in place to value = raw / den (den Q28), as a
+// full-range q31 table with a power-of-two exponent.
+void quantise(int64_t den, uint16_t width, KernelTable& t) {
+  int64_t peak = 0;
+  for (uint16_t u = 0; u < width; ++u) {
+    const int64_t a = t.w[u] < 0 ? -int64_t{t.w[u]} : t.w[u];
+    if (a > peak) peak = a;
+  }
+  // Largest exponent that keeps the peak below 2^31.
+  int e = 20;
+  for (; e > -40; --e) {
+    bool sat = false;
+    const int32_t w = fx::div_q(peak, den, 31 + e, &sat);
+    if (!sat && w < fx::kInt32Max) break;
+  }
+  t.exp = static_cast<int8_t>(e);
+  for (uint16_t u = 0; u < width; ++u) t.w[u] = fx::div_q(t.w[u], den, 31 + e);
+}
+
+int64_t sum(const KernelTable& t, uint16_t width) {
+  int64_t s = 0;
+  for (uint16_t u = 0; u < width; ++u) s += t.w[u];
+  return s;
+}
+
+uint64_t sum_sq(const KernelTable& t, uint16_t width) {  // Q56
+  uint64_t s = 0;
+  for (uint16_t u = 0; u < width; ++u) s += static_cast<uint64_t>(int64_t{t.w[u]} * t.w[u]);
+  return s;
+}
+
+// Builds K and D of one kernel for both cameras with one shared scale, so
+// that F1 - F0 compares like with like. unit_l1: the normaliser (sum K = 1);
+// otherwise sum K^2 = 1/width, which gives every kernel the same pixel-noise
+// variance, so that the least squares over kernels weighs them fairly.
+void build_kernel(const EstimatorConfig& cfg, KernelBank& bank, int64_t centre,
+                  const KernelSpec& spec, bool unit_l1, KernelTable* k_out[2],
+                  KernelTable* d_out[2], KernelTable* t_out[2]) {
+  const uint16_t w = bank.width;
+  for (int i = 0; i < 2; ++i)
+    integrate(bank.edge[i], w, cfg.cam[i].axis_yaw, centre, spec, *k_out[i], *d_out[i], t_out[i]);
+  int64_t norm = 0;  // Q28
+  if (unit_l1) {
+    norm = (sum(*k_out[0], w) + sum(*k_out[1], w)) / 2;
+  } else {
+    const uint64_t mean_sq = (sum_sq(*k_out[0], w) + sum_sq(*k_out[1], w)) / 2;  // Q56
+    const uint64_t root = fx::isqrt64(mean_sq);                                   // Q28
+    const uint64_t sqrt_w = fx::isqrt64(uint64_t{w} << 32);                      // Q16
+    norm = static_cast<int64_t>(fx::shr_round(static_cast<int64_t>(root * sqrt_w), 16));
+  }
+  if (norm <= 0) norm = 1;
+  // D per radian: divide by sigma as well (Q28 * Q28 -> Q28).
+  int64_t norm_sigma = fx::shr_round(norm * spec.sigma, 28);
+  if (norm_sigma <= 0) norm_sigma = 1;
+  // T per radian cubed: raw Q27 values over norm * sigma^3.
+  int64_t norm_sigma3 = fx::shr_round(fx::shr_round(norm_sigma * spec.sigma, 28) * spec.sigma, 28);
+  norm_sigma3 = norm_sigma3 > 1 ? norm_sigma3 / 2 : 1;  // Q27 over Q28 -> same scale as the others
+  for (int i = 0; i < 2; ++i) {
+    quantise(norm, w, *k_out[i]);
+    quantise(norm_sigma, w, *d_out[i]);
+    if (t_out[i]) quantise(norm_sigma3, w, *t_out[i]);
+  }
+}
+
+}  // namespace
+
+int32_t gaussian_derivative_q30(int order, int32_t s_q24) {
+  int32_t a = 0, b = 0, c = 0;
+  gaussian_triple(order, s_q24, &a, &b, &c);
+  return a;
+}
+
+void pinhole_column_edges(const CameraGeometry& g, uint16_t width, AngleQ28* edges) {
+  for (uint16_t u = 0; u <= width; ++u) {
+    const int64_t x = (int64_t{u} << 16) - (int64_t{1} << 15) - g.cu;  // Q16 px
+    const int32_t tan_q16 = fx::div_q(x, g.fu, 16);
+    edges[u] = static_cast<AngleQ28>(g.axis_yaw + g.u_sign * fx::atan_q16(tan_q16));
+  }
+}
+
+void build_kernel_bank(const EstimatorConfig& cfg, KernelBank& bank) {
+  bank.width = cfg.width;
+  bank.count = cfg.kernel_count;
+  const int64_t centre = (int64_t{cfg.cam[0].axis_yaw} + cfg.cam[1].axis_yaw) / 2;
+  for (int i = 0; i < 2; ++i) pinhole_column_edges(cfg.cam[i], cfg.width, bank.edge[i]);
+  KernelTable* k_out[2] = {&bank.cam[0].norm, &bank.cam[1].norm};
+  KernelTable* d_out[2] = {&bank.cam[0].norm_d, &bank.cam[1].norm_d};
+  KernelTable* none[2] = {nullptr, nullptr};
+  build_kernel(cfg, bank, centre, cfg.normaliser, true, k_out, d_out, none);
+  for (int k = 0; k < cfg.kernel_count; ++k) {
+    KernelTable* kk[2] = {&bank.cam[0].k[k], &bank.cam[1].k[k]};
+    KernelTable* dd[2] = {&bank.cam[0].d[k], &bank.cam[1].d[k]};
+    KernelTable* tt[2] = {&bank.cam[0].t[k], &bank.cam[1].t[k]};
+    build_kernel(cfg, bank, centre, cfg.kernels[k], false, kk, dd, tt);
+  }
+}
+
+}  // namespace lumavel

@@ -1,0 +1,89 @@
+#include "lumavel/core/velocity_observer.hpp"
+
+#include "lumavel/core/imath.hpp"
+
+namespace lumavel {
+namespace {
+
+constexpr int32_t kClampQ28 = int32_t{1} << 30;  // |values| <= 4 keep sums of squares in int64
+
+int32_t clamp4(int64_t v, bool* sat) {
+  if (v > kClampQ28) {
+    *sat = true;
+    return kClampQ28;
+  }
+  if (v < -kClampQ28) {
+    *sat = true;
+    return -kClampQ28;
+  }
+  return static_cast<int32_t>(v);
+}
+
+}  // namespace
+
+void VelocityObserver::reset() { *this = VelocityObserver{}; }
+
+ObserverOutput VelocityObserver::update(const ObserverInput& in) {
+  ObserverOutput out{};
+  tau_ns_ = int64_t{in.tau_us} * 1000;
+  bool sat = false;
+  const uint8_t count = in.cur->count;
+  int32_t s_bar[kMaxKernels], e[kMaxKernels];
+  int64_t r_bar[kMaxKernels];
+  int64_t sr = 0, rr = 0, ss = 0;  // Q40, Q32, Q56
+  for (uint8_t k = 0; k < count; ++k) {
+    const int64_t d_mid = int64_t{in.cur->mid[k]} - in.prev->mid[k];
+    s_bar[k] = clamp4(fx::shr_round(int64_t{in.cur->diff[k]} + in.prev->diff[k], 1), &sat);
+    r_bar[k] = fx::shr_round(int64_t{in.cur->rot[k]} + in.prev->rot[k], 1);
+    // Innovation with the rotation term removed: Q28.
+    e[k] = clamp4(d_mid - fx::shr_round(int64_t{in.dtheta} * r_bar[k], fx::kSlopeFrac), &sat);
+    sr += fx::shr_round(int64_t{s_bar[k]} * r_bar[k], 8);
+    rr += fx::shr_round(r_bar[k] * r_bar[k], 8);
+    ss += int64_t{s_bar[k]} * s_bar[k];
+  }
+  out.texture = count ? static_cast<ValueQ28>(fx::isqrt64(static_cast<uint64_t>(ss / count))) : 0;
+  int64_t c3 = 0;  // (kappa h)^3 / 12, Q36
+  if (in.baseline_correction && rr > 0) {
+    int64_t kh = fx::div_q(sr, rr, 20, &sat);  // Q28, clamped to +-0.5 rad
+    if (kh > (int64_t{1} << 27)) kh = int64_t{1} << 27;
+    if (kh < -(int64_t{1} << 27)) kh = -(int64_t{1} << 27);
+    c3 = fx::shr_round(fx::shr_round(kh * kh, 28) * kh, 20) / 12;
+  }
+  int64_t num = 0, den = 0;  // Q56
+  for (uint8_t k = 0; k < count; ++k) {
+    const int64_t ck = fx::shr_round(int64_t{in.cur->curv[k]} + in.prev->curv[k], 1);
+    const int32_t a = clamp4(s_bar[k] + fx::shr_round(c3 * ck, 20), &sat);
+    num += int64_t{e[k]} * a;
+    den += int64_t{a} * a;
+  }
+  out.saturated = sat;
+  if (count == 0 || den == 0 || ss == 0 || out.texture < in.low_texture || in.dt_ns <= 0) {
+    out.v = v_;
+    out.updated = false;
+    out.converging = converging_now();
+    return out;
+  }
+  // Distance over the interval: d = h * num / den.
+  const int32_t ratio = fx::div_q(num, den, fx::kValueFrac, &sat);                            // Q28
+  const int64_t d_q24 = fx::shr_round(int64_t{ratio} * in.baseline, fx::kValueFrac);       // Q24 m
+  const SpeedQ16 v_direct = fx::div_q(d_q24 * 1000000000, in.dt_ns * 256, 0, &sat);       // Q16 m/s
+  out.v_direct = v_direct;
+  if (!started_) {
+    v_ = v_direct;
+    started_ = true;
+    since_start_ns_ = 0;
+  } else {
+    // Implicit Euler of dV/dt = (v_direct - V) / tau: V += (v_direct - V) dt / (tau + dt).
+    const int64_t dt_us = in.dt_ns / 1000;
+    const int64_t step = fx::div_q((int64_t{v_direct} - v_) * dt_us, int64_t{in.tau_us} + dt_us, 0, &sat);
+    v_ = fx::sat32(int64_t{v_} + step, &sat);
+    since_start_ns_ += in.dt_ns;
+  }
+  out.v = v_;
+  out.updated = true;
+  out.saturated = sat;
+  out.converging = converging_now();
+  return out;
+}
+
+}  // namespace lumavel

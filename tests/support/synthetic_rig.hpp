@@ -1,0 +1,91 @@
+// A small synthetic stereo rig for the core tests: two upright pinhole
+// cameras looking left (body +y) at a textured wall, cam1 ahead of cam0 by h,
+// each pixel the mean of an S x S grid of rays (area averaging).
+#pragma once
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "lumavel/host/settings.hpp"
+
+namespace lumavel::test {
+
+struct Pose2 {
+  double x = 0, y = 0, theta = 0;  // body origin in the world, yaw (CCW)
+};
+
+struct SyntheticRig {
+  int width = 40, height = 30;
+  double hfov = 50.0 * M_PI / 180, vfov = 40.0 * M_PI / 180;
+  double baseline = 0.08;       // cam1 ahead of cam0 along body x
+  double misalignment = 0;      // yaw of cam1 relative to cam0, rad
+  double wall = 2.0;            // wall at world y = wall
+  int supersample = 3;
+  // Wall brightness (0..255) at wall coordinates (X along the wall, Z up).
+  std::function<double(double, double)> texture = [](double X, double Z) {
+    return 128 + 45 * std::sin(2 * M_PI * X / 0.37) * std::cos(2 * M_PI * Z / 0.9) +
+           30 * std::sin(2 * M_PI * X / 0.23 + 1.3) + 20 * std::sin(2 * M_PI * X / 0.71 + 0.4);
+  };
+  double noise = 0;    // additive Gaussian, gray levels (deterministic LCG)
+  double gain = 1;     // global lighting gain
+  uint64_t seed = 1;
+
+  double fu() const { return width / 2.0 / std::tan(hfov / 2); }
+  double fv() const { return height / 2.0 / std::tan(vfov / 2); }
+  double axis(int cam) const { return M_PI / 2 + (cam == 1 ? misalignment / 2 : -misalignment / 2); }
+
+  host::EstimatorSettings settings() const {
+    host::EstimatorSettings s;
+    s.width = width;
+    s.height = height;
+    for (int i = 0; i < 2; ++i) {
+      s.cam[i].fu = fu();
+      s.cam[i].cu = (width - 1) / 2.0;
+      s.cam[i].axis_yaw = axis(i);
+      s.cam[i].u_sign = -1;
+    }
+    s.baseline = baseline;
+    s.kernels = host::default_kernels(hfov);
+    s.normaliser = {0, hfov / 2 / 3};
+    return s;
+  }
+
+  // Renders camera `cam` of a body at `pose`.
+  std::vector<uint8_t> render(int cam, const Pose2& pose) {
+    std::vector<uint8_t> img(static_cast<size_t>(width * height));
+    const double off = cam == 1 ? baseline / 2 : -baseline / 2;
+    const double cx = pose.x + off * std::cos(pose.theta), cy = pose.y + off * std::sin(pose.theta);
+    const double a = pose.theta + axis(cam);
+    const double fx = fu(), fy = fv(), cu = (width - 1) / 2.0, cv = (height - 1) / 2.0;
+    const int S = supersample;
+    for (int v = 0; v < height; ++v)
+      for (int u = 0; u < width; ++u) {
+        double acc = 0;
+        for (int i = 0; i < S; ++i)
+          for (int j = 0; j < S; ++j) {
+            const double xn = (u + (i + 0.5) / S - 0.5 - cu) / fx;
+            const double yn = (v + (j + 0.5) / S - 0.5 - cv) / fy;
+            const double dx = xn * std::sin(a) + std::cos(a), dy = -xn * std::cos(a) + std::sin(a);
+            const double t = (wall - cy) / dy;
+            acc += texture(cx + t * dx, -t * yn);
+          }
+        double p = gain * acc / (S * S) + noise * gaussian();
+        p = std::fmin(255, std::fmax(0, std::round(p)));
+        img[static_cast<size_t>(v * width + u)] = static_cast<uint8_t>(p);
+      }
+    return img;
+  }
+
+  double gaussian() {
+    // Box-Muller on a 64-bit LCG: deterministic across platforms.
+    auto uni = [this] {
+      seed = seed * 6364136223846793005ull + 1442695040888963407ull;
+      return (static_cast<double>(seed >> 11) + 0.5) / 9007199254740992.0;
+    };
+    const double u1 = uni(), u2 = uni();
+    return std::sqrt(-2 * std::log(u1)) * std::cos(2 * M_PI * u2);
+  }
+};
+
+}  // namespace lumavel::test
