@@ -1,0 +1,37 @@
+// One interface over both estimator engines, so every host tool can select
+// the fixed-point firmware core or the double-precision reference.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "lumavel/host/settings.hpp"
+
+namespace lumavel::host {
+
+struct EngineEstimate {
+  uint64_t t_ns = 0;
+  double v = 0;         // m/s
+  double distance = 0;  // m
+  double heading = 0;   // rad, wrapped to [-pi, pi)
+  uint16_t status = 0;  // lumavel::StatusFlag bits
+  double v_direct = 0;  // this interval's direct measurement, m/s
+  double texture = 0;   // rms of F1 - F0 over kernels
+};
+
+enum class EngineKind { kFixed, kFloat };
+EngineKind parse_engine_kind(const std::string& name);  // "fixed" | "float"; throws
+const char* engine_name(EngineKind k);
+
+class Engine {
+ public:
+  virtual ~Engine() = default;
+  virtual void push_gyro(uint64_t t_ns, double rate_z) = 0;  // rad/s
+  // Frames at the working resolution, width * height bytes each.
+  virtual EngineEstimate step(uint64_t t_ns, const uint8_t* cam0, const uint8_t* cam1) = 0;
+};
+
+// Throws std::invalid_argument when the settings are out of range.
+std::unique_ptr<Engine> make_engine(EngineKind kind, const EstimatorSettings& s);
+
+}  // namespace lumavel::host

@@ -1,0 +1,58 @@
+// The double-precision reference engine: the firmware core's mathematics
+// (kernel_bank, measurement, velocity_observer, gyro_integrator) with no
+// quantisation, on Eigen vectors. Used to bound the fixed-point error and as
+// `--engine float`.
+#pragma once
+#include <Eigen/Dense>
+#include <cstdint>
+#include <vector>
+
+#include "lumavel/host/engine.hpp"
+#include "lumavel/host/settings.hpp"
+
+namespace lumavel::host {
+
+struct FloatKernels {
+  Eigen::VectorXd norm, norm_d;
+  std::vector<Eigen::VectorXd> k, d, t;  // B, dB/dtheta, d3B/dtheta3 kernels
+};
+
+// Tables of both cameras, built exactly as build_kernel_bank does.
+struct FloatBank {
+  FloatKernels cam[2];
+  Eigen::VectorXd edge[2];  // column edge yaws, width + 1
+};
+FloatBank build_float_bank(const EstimatorSettings& s);
+
+struct FloatMeasurement {
+  Eigen::VectorXd mid, diff, rot, curv;  // curv: mean d3F/dtheta3
+  bool no_light = false;
+  double clipped = 0, sampled = 0;
+};
+
+class FloatEstimator {
+ public:
+  explicit FloatEstimator(const EstimatorSettings& s);
+  void push_gyro(uint64_t t_ns, double rate);
+  EngineEstimate step(uint64_t t_ns, const uint8_t* cam0, const uint8_t* cam1);
+  const FloatBank& bank() const { return bank_; }
+
+ private:
+  double angle_at(uint64_t t_ns) const;
+  FloatMeasurement measure(const uint8_t* cam0, const uint8_t* cam1) const;
+
+  EstimatorSettings s_;
+  FloatBank bank_;
+  // gyro: the last two samples and the integrated angle at each
+  uint64_t gt_[2]{};
+  double gr_[2]{}, ga_[2]{};
+  int gcount_ = 0;
+  double gmax_spacing_ = 0;
+  // observer
+  FloatMeasurement prev_;
+  bool have_prev_ = false, started_ = false;
+  double v_ = 0, since_start_ = 0, distance_ = 0, prev_angle_ = 0;
+  uint64_t prev_t_ = 0;
+};
+
+}  // namespace lumavel::host

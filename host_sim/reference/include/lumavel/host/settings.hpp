@@ -1,0 +1,49 @@
+// Host-side estimator settings in physical units (double). Both engines are
+// built from these: the fixed engine after quantisation (to_fixed_config), the
+// double reference engine directly, so the two see the same problem.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "lumavel/core/config.hpp"
+
+namespace lumavel::host {
+
+struct CameraModel {
+  double fu = 0, cu = 0;      // working-resolution pixels (pixel 0 centre = 0)
+  double axis_yaw = 0;        // optical axis yaw in the body frame, rad (CCW from x)
+  int u_sign = -1;            // d(body yaw)/du sign: -1 upright, +1 upside down
+  // Optional column-edge yaws (width + 1, rad) overriding the pinhole model
+  // (lens distortion); empty = pinhole.
+  std::vector<double> edges;
+};
+
+struct KernelModel {
+  int order = 1;
+  double sigma = 0.07;  // rad
+};
+
+struct EstimatorSettings {
+  int width = 40, height = 30;   // working resolution
+  CameraModel cam[2];
+  double baseline = 0.08;        // m, x of cam1 minus x of cam0
+  KernelModel normaliser{0, 0.20};
+  std::vector<KernelModel> kernels;
+  double tau = 0.1;              // s
+  double frame_period = 1.0 / 60;  // s
+  double max_gap = 0.5;          // s
+  double gyro_gap = 0.05;        // s
+  double low_texture = 2e-3;     // rms of F1 - F0
+  int saturated_permille = 50;
+  bool baseline_correction = true;  // finite-baseline (h^2) correction
+};
+
+// Default kernel bank for a field of view (radians, horizontal).
+std::vector<KernelModel> default_kernels(double hfov);
+
+// Quantises to the firmware configuration. Throws std::invalid_argument
+// naming the field when a value does not fit its fixed-point format.
+EstimatorConfig to_fixed_config(const EstimatorSettings& s);
+
+}  // namespace lumavel::host

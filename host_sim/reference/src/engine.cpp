@@ -1,0 +1,71 @@
+#include "lumavel/host/engine.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "lumavel/core/estimator.hpp"
+#include "lumavel/host/float_estimator.hpp"
+
+namespace lumavel::host {
+namespace {
+
+class FixedEngine final : public Engine {
+ public:
+  explicit FixedEngine(const EstimatorSettings& s) : est_(std::make_unique<Estimator>()) {
+    const EstimatorConfig c = to_fixed_config(s);
+    const ConfigError e = est_->configure(c);
+    if (e != ConfigError::kOk) throw std::invalid_argument(to_string(e));
+    width_ = s.width;
+  }
+  void push_gyro(uint64_t t_ns, double rate_z) override {
+    if (!std::isfinite(rate_z)) throw std::invalid_argument("gyro rate is not a finite number");
+    const double q = std::round(std::ldexp(rate_z, fx::kRateFrac));
+    est_->push_gyro(t_ns, fx::sat32(static_cast<int64_t>(std::fmax(std::fmin(q, 4e18), -4e18))));
+  }
+  EngineEstimate step(uint64_t t_ns, const uint8_t* cam0, const uint8_t* cam1) override {
+    FramePair f{t_ns, {cam0, cam1}, static_cast<uint16_t>(width_)};
+    const Estimate e = est_->step(f);
+    EngineEstimate o;
+    o.t_ns = e.t_ns;
+    o.v = std::ldexp(e.v, -fx::kSpeedFrac);
+    o.distance = std::ldexp(static_cast<double>(e.distance), -fx::kDistFrac);
+    o.heading = std::ldexp(e.heading, -fx::kAngleFrac);
+    o.status = e.status;
+    o.v_direct = std::ldexp(e.v_direct, -fx::kSpeedFrac);
+    o.texture = std::ldexp(e.texture, -fx::kValueFrac);
+    return o;
+  }
+
+ private:
+  std::unique_ptr<Estimator> est_;
+  int width_ = 0;
+};
+
+class FloatEngine final : public Engine {
+ public:
+  explicit FloatEngine(const EstimatorSettings& s) : est_(s) {}
+  void push_gyro(uint64_t t_ns, double rate_z) override { est_.push_gyro(t_ns, rate_z); }
+  EngineEstimate step(uint64_t t_ns, const uint8_t* cam0, const uint8_t* cam1) override {
+    return est_.step(t_ns, cam0, cam1);
+  }
+
+ private:
+  FloatEstimator est_;
+};
+
+}  // namespace
+
+EngineKind parse_engine_kind(const std::string& name) {
+  if (name == "fixed") return EngineKind::kFixed;
+  if (name == "float") return EngineKind::kFloat;
+  throw std::invalid_argument("unknown engine '" + name + "' (expected fixed or float)");
+}
+
+const char* engine_name(EngineKind k) { return k == EngineKind::kFixed ? "fixed" : "float"; }
+
+std::unique_ptr<Engine> make_engine(EngineKind kind, const EstimatorSettings& s) {
+  if (kind == EngineKind::kFixed) return std::make_unique<FixedEngine>(s);
+  return std::make_unique<FloatEngine>(s);
+}
+
+}  // namespace lumavel::host

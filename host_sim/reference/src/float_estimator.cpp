@@ -1,0 +1,242 @@
+#include "lumavel/host/float_estimator.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "lumavel/core/status.hpp"
+
+namespace lumavel::host {
+namespace {
+
+constexpr int kSimpsonIntervals = 8;
+constexpr double kSimpsonWeight[kSimpsonIntervals + 1] = {1, 4, 2, 4, 2, 4, 2, 4, 1};
+
+// phi_n(s) = (-1)^n He_n(s) exp(-s^2/2), probabilists' Hermite polynomials.
+double gaussian_derivative(int n, double s) {
+  if (std::fabs(s) > 7) return 0;
+  const double s2 = s * s;
+  const double he[7] = {1, s, s2 - 1, s2 * s - 3 * s, s2 * s2 - 6 * s2 + 3,
+                        s2 * s2 * s - 10 * s2 * s + 15 * s, s2 * s2 * s2 - 15 * s2 * s2 + 45 * s2 - 15};
+  const double v = he[n] * std::exp(-s * s / 2);
+  return n % 2 == 0 ? v : -v;
+}
+
+Eigen::VectorXd column_edges(const CameraModel& c, int width) {
+  Eigen::VectorXd e(width + 1);
+  if (!c.edges.empty()) {
+    for (int u = 0; u <= width; ++u) e[u] = c.edges[static_cast<size_t>(u)];
+    return e;
+  }
+  for (int u = 0; u <= width; ++u) e[u] = c.axis_yaw + c.u_sign * std::atan((u - 0.5 - c.cu) / c.fu);
+  return e;
+}
+
+void integrate(const Eigen::VectorXd& edges, double axis, double centre, const KernelModel& k,
+               Eigen::VectorXd& kk, Eigen::VectorXd& dd, Eigen::VectorXd& tt) {
+  const int width = static_cast<int>(edges.size()) - 1;
+  kk.resize(width);
+  dd.resize(width);
+  tt.resize(width);
+  for (int u = 0; u < width; ++u) {
+    const double lo = edges[u], hi = edges[u + 1];
+    double ak = 0, ad = 0, at = 0;
+    for (int j = 0; j <= kSimpsonIntervals; ++j) {
+      const double psi = lo + (hi - lo) * j / kSimpsonIntervals;
+      const double c = std::cos(psi - axis);
+      const double s = (psi - centre) / k.sigma;
+      ak += kSimpsonWeight[j] * gaussian_derivative(k.order, s) * c;
+      ad += kSimpsonWeight[j] * gaussian_derivative(k.order + 1, s) * c;
+      at += kSimpsonWeight[j] * gaussian_derivative(k.order + 3, s) * c;
+    }
+    const double ds = std::fabs(hi - lo) / k.sigma;
+    kk[u] = ak * ds / (3 * kSimpsonIntervals);
+    dd[u] = -ad * ds / (3 * kSimpsonIntervals);
+    tt[u] = -at * ds / (3 * kSimpsonIntervals);
+  }
+}
+
+void build_kernel(const EstimatorSettings& s, const Eigen::VectorXd (&edges)[2], double centre,
+                  const KernelModel& k, bool unit_l1, Eigen::VectorXd* kout[2],
+                  Eigen::VectorXd* dout[2], Eigen::VectorXd* tout[2]) {
+  for (int i = 0; i < 2; ++i) integrate(edges[i], s.cam[i].axis_yaw, centre, k, *kout[i], *dout[i], *tout[i]);
+  const double norm = unit_l1 ? (kout[0]->sum() + kout[1]->sum()) / 2
+                              : std::sqrt(s.width * (kout[0]->squaredNorm() + kout[1]->squaredNorm()) / 2);
+  for (int i = 0; i < 2; ++i) {
+    *kout[i] /= norm;
+    *dout[i] /= norm * k.sigma;
+    *tout[i] /= norm * k.sigma * k.sigma * k.sigma;
+  }
+}
+
+}  // namespace
+
+FloatBank build_float_bank(const EstimatorSettings& s) {
+  FloatBank b;
+  for (int i = 0; i < 2; ++i) b.edge[i] = column_edges(s.cam[i], s.width);
+  const double centre = (s.cam[0].axis_yaw + s.cam[1].axis_yaw) / 2;
+  Eigen::VectorXd* kn[2] = {&b.cam[0].norm, &b.cam[1].norm};
+  Eigen::VectorXd* dn[2] = {&b.cam[0].norm_d, &b.cam[1].norm_d};
+  Eigen::VectorXd unused[2];
+  Eigen::VectorXd* tn[2] = {&unused[0], &unused[1]};
+  build_kernel(s, b.edge, centre, s.normaliser, true, kn, dn, tn);
+  const size_t n = s.kernels.size();
+  for (auto& c : b.cam) {
+    c.k.resize(n);
+    c.d.resize(n);
+    c.t.resize(n);
+  }
+  for (size_t k = 0; k < n; ++k) {
+    Eigen::VectorXd* kk[2] = {&b.cam[0].k[k], &b.cam[1].k[k]};
+    Eigen::VectorXd* dd[2] = {&b.cam[0].d[k], &b.cam[1].d[k]};
+    Eigen::VectorXd* tt[2] = {&b.cam[0].t[k], &b.cam[1].t[k]};
+    build_kernel(s, b.edge, centre, s.kernels[k], false, kk, dd, tt);
+  }
+  return b;
+}
+
+FloatEstimator::FloatEstimator(const EstimatorSettings& s) : s_(s) {
+  to_fixed_config(s);  // same validation as the fixed engine; throws
+  bank_ = build_float_bank(s_);
+}
+
+void FloatEstimator::push_gyro(uint64_t t_ns, double rate) {
+  if (!std::isfinite(rate)) throw std::invalid_argument("gyro rate is not a finite number");
+  if (gcount_ == 0) {
+    gt_[1] = t_ns;
+    gr_[1] = rate;
+    ga_[1] = 0;
+    gcount_ = 1;
+    return;
+  }
+  if (t_ns <= gt_[1]) return;
+  const double dt = static_cast<double>(t_ns - gt_[1]) * 1e-9;
+  gmax_spacing_ = std::max(gmax_spacing_, dt);
+  gt_[0] = gt_[1];
+  gr_[0] = gr_[1];
+  ga_[0] = ga_[1];
+  gt_[1] = t_ns;
+  gr_[1] = rate;
+  ga_[1] = ga_[0] + (gr_[0] + gr_[1]) / 2 * dt;
+  ++gcount_;
+}
+
+double FloatEstimator::angle_at(uint64_t t) const {
+  if (gcount_ == 0) return 0;
+  auto secs = [](uint64_t a, uint64_t b) { return (static_cast<double>(a) - static_cast<double>(b)) * 1e-9; };
+  if (t >= gt_[1]) return ga_[1] + gr_[1] * std::min(secs(t, gt_[1]), 4.0);
+  if (gcount_ < 2) return ga_[1] - gr_[1] * std::min(secs(gt_[1], t), 4.0);
+  if (t <= gt_[0]) return ga_[0] - gr_[0] * std::min(secs(gt_[0], t), 4.0);
+  const double span = secs(gt_[1], gt_[0]), dt = secs(t, gt_[0]);
+  const double rate_t = gr_[0] + (gr_[1] - gr_[0]) * dt / span;
+  return ga_[0] + (gr_[0] + rate_t) / 2 * dt;
+}
+
+FloatMeasurement FloatEstimator::measure(const uint8_t* cam0, const uint8_t* cam1) const {
+  FloatMeasurement m;
+  const int w = s_.width, h = s_.height;
+  const size_t n = s_.kernels.size();
+  Eigen::VectorXd f[2], r[2], c[2];
+  const uint8_t* img[2] = {cam0, cam1};
+  for (int i = 0; i < 2; ++i) {
+    Eigen::VectorXd col = Eigen::VectorXd::Zero(w);
+    for (int y = 0; y < h; ++y)
+      for (int u = 0; u < w; ++u) col[u] += img[i][y * w + u];
+    for (int y = 0; y < h; y += 4)
+      for (int u = 0; u < w; ++u) {
+        const uint8_t p = img[i][y * w + u];
+        m.clipped += (p == 0 || p == 255);
+        m.sampled += 1;
+      }
+    const FloatKernels& k = bank_.cam[i];
+    const double nrm = k.norm.dot(col);
+    f[i] = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));
+    r[i] = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));
+    c[i] = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));
+    if (nrm <= 0) {
+      m.no_light = true;
+      continue;
+    }
+    const double dn = k.norm_d.dot(col) / nrm;
+    for (size_t j = 0; j < n; ++j) {
+      const Eigen::Index jj = static_cast<Eigen::Index>(j);
+      f[i][jj] = k.k[j].dot(col) / nrm;
+      r[i][jj] = k.d[j].dot(col) / nrm - f[i][jj] * dn;
+      c[i][jj] = k.t[j].dot(col) / nrm;  // derivatives of N neglected: a correction term
+    }
+  }
+  m.mid = (f[0] + f[1]) / 2;
+  m.diff = f[1] - f[0];
+  m.rot = (r[0] + r[1]) / 2;
+  m.curv = (c[0] + c[1]) / 2;
+  return m;
+}
+
+EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const uint8_t* cam1) {
+  EngineEstimate est;
+  est.t_ns = t_ns;
+  FloatMeasurement m = measure(cam0, cam1);
+  uint16_t status = 0;
+  if (m.clipped * 1000 > s_.saturated_permille * m.sampled) status |= kStatusSaturated;
+  const double angle = angle_at(t_ns);
+  est.heading = std::remainder(angle, 2 * M_PI);
+  if (est.heading >= M_PI) est.heading -= 2 * M_PI;
+  if (gmax_spacing_ > s_.gyro_gap) status |= kStatusGyroGap;
+  gmax_spacing_ = 0;
+  auto converging = [&] { return !started_ || since_start_ < 3 * s_.tau; };
+  if (m.no_light) {
+    status |= kStatusNoLight | kStatusLowTexture;
+    have_prev_ = false;
+  } else if (!have_prev_) {
+    have_prev_ = true;
+    prev_ = m;
+  } else {
+    const double dt = (static_cast<double>(t_ns) - static_cast<double>(prev_t_)) * 1e-9;
+    if (t_ns <= prev_t_ || dt > s_.max_gap) {
+      status |= kStatusFrameGap | kStatusRestarted;
+      started_ = false;  // V held; the next interval re-initialises it
+      since_start_ = 0;
+    } else {
+      if (dt > 1.5 * s_.frame_period) status |= kStatusFrameGap;
+      const double dtheta = angle - prev_angle_;
+      Eigen::VectorXd s_bar = (m.diff + prev_.diff) / 2;
+      const Eigen::VectorXd r_bar = (m.rot + prev_.rot) / 2;
+      const Eigen::VectorXd e = (m.mid - prev_.mid) - dtheta * r_bar;
+      if (s_.baseline_correction) {
+        // M = (F0 + F1)/2 sees F'(x) + h^2/8 F''' while S/h sees F' + h^2/24 F''':
+        // compare dM with S + h^3/12 F''', F''' = kappa^3 d3F/dtheta3, kappa = dx/dtheta.
+        const double rr = r_bar.squaredNorm();
+        if (rr > 0) {
+          const double kappa_h = s_bar.dot(r_bar) / rr;  // h * kappa
+          s_bar += (kappa_h * kappa_h * kappa_h / 12) * (m.curv + prev_.curv) / 2;
+        }
+      }
+      const double den = s_bar.squaredNorm();
+      est.texture = s_bar.size() ? std::sqrt(den / static_cast<double>(s_bar.size())) : 0;
+      if (den <= 0 || est.texture < s_.low_texture) {
+        status |= kStatusLowTexture;
+      } else {
+        const double d = s_.baseline * e.dot(s_bar) / den;
+        est.v_direct = d / dt;
+        if (!started_) {
+          v_ = est.v_direct;
+          started_ = true;
+          since_start_ = 0;
+        } else {
+          v_ += (est.v_direct - v_) * dt / (s_.tau + dt);
+          since_start_ += dt;
+        }
+      }
+      distance_ += v_ * dt;
+    }
+    prev_ = m;
+  }
+  if (converging()) status |= kStatusConverging;
+  prev_t_ = t_ns;
+  prev_angle_ = angle;
+  est.v = v_;
+  est.distance = distance_;
+  est.status = status;
+  return est;
+}
+
+}  // namespace lumavel::host

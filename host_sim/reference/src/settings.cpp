@@ -1,0 +1,76 @@
+#include "lumavel/host/settings.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace lumavel::host {
+namespace {
+
+int64_t quantise(double v, int frac, const char* field, int64_t lo = INT32_MIN, int64_t hi = INT32_MAX) {
+  if (!std::isfinite(v)) throw std::invalid_argument(std::string(field) + " is not a finite number");
+  const double q = std::round(std::ldexp(v, frac));
+  if (q < static_cast<double>(lo) || q > static_cast<double>(hi))
+    throw std::invalid_argument(std::string(field) + " = " + std::to_string(v) + " does not fit its fixed-point format");
+  return static_cast<int64_t>(q);
+}
+
+uint32_t micros(double seconds, const char* field) {
+  return static_cast<uint32_t>(quantise(seconds * 1e6, 0, field, 0, UINT32_MAX));
+}
+
+}  // namespace
+
+std::vector<KernelModel> default_kernels(double hfov) {
+  // Two scales, orders 1 and 2, sized so that each kernel is below 1 % of its
+  // peak on the outer ~12 % of each side of the view (the side strips of
+  // paper eq. 19, with room for a couple of degrees of misalignment).
+  const double half = hfov / 2;
+  const double wide = half / 4.0, narrow = half / 6.0;
+  return {{1, wide}, {2, wide}, {1, narrow}, {2, narrow}};
+}
+
+EstimatorConfig to_fixed_config(const EstimatorSettings& s) {
+  EstimatorConfig c{};
+  if (s.width < kMinColumns || s.width > kMaxColumns)
+    throw std::invalid_argument("working width " + std::to_string(s.width) + " is outside 16.." + std::to_string(kMaxColumns));
+  if (s.height < 1 || s.height > kMaxRows)
+    throw std::invalid_argument("working height " + std::to_string(s.height) + " is outside 1.." + std::to_string(kMaxRows));
+  c.width = static_cast<uint16_t>(s.width);
+  c.height = static_cast<uint16_t>(s.height);
+  for (int i = 0; i < 2; ++i) {
+    c.cam[i].fu = static_cast<PixelQ16>(quantise(s.cam[i].fu, fx::kPixelFrac, "focal length fu"));
+    c.cam[i].cu = static_cast<PixelQ16>(quantise(s.cam[i].cu, fx::kPixelFrac, "principal point cu"));
+    c.cam[i].axis_yaw = static_cast<AngleQ28>(quantise(s.cam[i].axis_yaw, fx::kAngleFrac, "axis yaw"));
+    c.cam[i].u_sign = static_cast<int8_t>(s.cam[i].u_sign);
+  }
+  c.baseline = static_cast<LengthQ24>(quantise(s.baseline, fx::kLengthFrac, "baseline"));
+  c.normaliser.order = static_cast<uint8_t>(s.normaliser.order);
+  c.normaliser.sigma = static_cast<AngleQ28>(quantise(s.normaliser.sigma, fx::kAngleFrac, "normaliser sigma"));
+  if (s.kernels.empty() || s.kernels.size() > static_cast<size_t>(kMaxKernels))
+    throw std::invalid_argument("kernel count " + std::to_string(s.kernels.size()) + " is outside 1.." + std::to_string(kMaxKernels));
+  c.kernel_count = static_cast<uint8_t>(s.kernels.size());
+  for (size_t k = 0; k < s.kernels.size(); ++k) {
+    if (s.kernels[k].order < 0 || s.kernels[k].order > kMaxKernelOrder)
+      throw std::invalid_argument("kernel order " + std::to_string(s.kernels[k].order) + " is outside 0..3");
+    c.kernels[k].order = static_cast<uint8_t>(s.kernels[k].order);
+    c.kernels[k].sigma = static_cast<AngleQ28>(quantise(s.kernels[k].sigma, fx::kAngleFrac, "kernel sigma"));
+  }
+  c.tau_us = micros(s.tau, "observer tau");
+  c.frame_period_us = micros(s.frame_period, "frame period");
+  c.max_gap_us = micros(s.max_gap, "max gap");
+  c.gyro_gap_us = micros(s.gyro_gap, "gyro gap");
+  c.low_texture = static_cast<ValueQ28>(quantise(s.low_texture, fx::kValueFrac, "low-texture threshold"));
+  if (s.saturated_permille < 0 || s.saturated_permille > 1000)
+    throw std::invalid_argument("saturated permille is outside 0..1000");
+  c.saturated_permille = static_cast<uint16_t>(s.saturated_permille);
+  c.options = s.baseline_correction ? kOptionBaselineCorrection : 0;
+  for (const CameraModel& cam : s.cam)
+    if (!cam.edges.empty())
+      throw std::invalid_argument("column-edge tables (lens distortion) are not supported by the fixed engine yet");
+  const ConfigError e = validate(c);
+  if (e != ConfigError::kOk) throw std::invalid_argument(std::string("configuration: ") + to_string(e));
+  return c;
+}
+
+}  // namespace lumavel::host
