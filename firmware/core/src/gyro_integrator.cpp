@@ -6,13 +6,13 @@ namespace {
 // Longest interval integrated in one piece: keeps rate * dt inside int64.
 constexpr uint64_t kMaxStepNs = 4000000000ull;
 
-// Integral of a rate (Q7.24 rad/s) over dt nanoseconds, Q3.28 rad:
-// rate * dt * 2^4 / 1e9 = rate * dt / 62500000, rounded
+// Integral of a rate (Q7.24 rad/s) over dt nanoseconds, Q32 rad:
+// rate * dt * 2^8 / 1e9 = rate * dt / 3906250, rounded
 // (|rate| <= 2^31, dt <= 4e9: the product stays below 2^63).
 int64_t angle_of(int64_t rate_q24, uint64_t dt_ns) {
   if (dt_ns > kMaxStepNs) dt_ns = kMaxStepNs;
   const int64_t x = rate_q24 * static_cast<int64_t>(dt_ns);
-  constexpr int64_t kDiv = 62500000;
+  constexpr int64_t kDiv = 3906250;
   return x >= 0 ? (x + kDiv / 2) / kDiv : -((-x + kDiv / 2) / kDiv);
 }
 
@@ -41,7 +41,9 @@ void GyroIntegrator::push(uint64_t t_ns, RateQ24 rate) {
   ++count_;
 }
 
-int64_t GyroIntegrator::angle_at(uint64_t t_ns) const {
+int64_t GyroIntegrator::angle_at(uint64_t t_ns) const { return fx::shr_round(angle_q32(t_ns), 4); }
+
+int64_t GyroIntegrator::angle_q32(uint64_t t_ns) const {
   if (count_ == 0) return 0;
   if (t_ns >= t_[1]) return angle_[1] + angle_of(r_[1], t_ns - t_[1]);
   if (count_ < 2 || t_ns <= t_[0]) {

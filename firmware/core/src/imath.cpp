@@ -1,18 +1,18 @@
-// Integer elementary functions: CORDIC for angles, range-reduced Taylor for exp.
+// Integer elementary functions: CORDIC for atan, range-reduced Taylor for exp.
 #include "lumavel/core/imath.hpp"
 
 namespace lumavel::fx {
 namespace {
 
-// atan(2^-i) in Q3.28.
-constexpr int32_t kAtanTable[] = {
-    210828714, 124459457, 65760959, 33381290, 16755422, 8385879, 4193963, 2097109,
-    1048571,   524287,    262144,   131072,   65536,    32768,    16384,   8192,
-    4096,      2048,      1024,     512,      256,      128,      64,      32,
-    16,        8,         4,        2,        1};
+// atan(2^-i) in Q3.32: the angle accumulates 4 bits finer than its Q3.28
+// result so that the table's rounding does not add up over the steps.
+constexpr int64_t kAtanTable[] = {
+    3373259426, 1991351318, 1052175346, 534100635, 268086748, 134174063, 67103403, 33553749,
+    16777131,   8388597,    4194303,    2097152,   1048576,   524288,    262144,   131072,
+    65536,      32768,      16384,      8192,      4096,      2048,      1024,     512,
+    256,        128,        64,         32,        16,        8,         4,        2};
 constexpr int kCordicSteps = sizeof(kAtanTable) / sizeof(kAtanTable[0]);
 // prod 1/sqrt(1 + 2^-2i) in Q1.30.
-constexpr int64_t kCordicGainInvQ30 = 652032874;
 constexpr int64_t kLn2Q27 = 93032640;
 
 // Vectoring CORDIC for x > 0: returns atan(y/x) in Q3.28.
@@ -38,12 +38,10 @@ AngleQ28 cordic_vector(int64_t x, int64_t y) {
       z -= kAtanTable[i];
     }
   }
-  return static_cast<AngleQ28>(z);
+  return static_cast<AngleQ28>(shr_round(z, 4));
 }
 
 }  // namespace
-
-AngleQ28 atan_q16(int32_t x_q16) { return cordic_vector(int64_t{1} << 16, x_q16); }
 
 AngleQ28 atan2_i32(int32_t y, int32_t x) {
   if (x == 0 && y == 0) return 0;
@@ -52,36 +50,6 @@ AngleQ28 atan2_i32(int32_t y, int32_t x) {
   // x < 0: rotate by pi.
   const AngleQ28 a = cordic_vector(-int64_t{x}, -int64_t{y});
   return y >= 0 ? a + kPiQ28 : a - kPiQ28;
-}
-
-void cos_sin_q30(AngleQ28 a, int32_t* c, int32_t* s) {
-  int64_t z = wrap_pi(a);
-  // Reduce to [-pi/2, pi/2]; cos changes sign, sin keeps it.
-  int sign = 1;
-  if (z > kPiQ28 / 2) {
-    z = kPiQ28 - z;
-    sign = -1;
-  } else if (z < -(kPiQ28 / 2)) {
-    z = -kPiQ28 - z;
-    sign = -1;
-  }
-  int64_t x = kCordicGainInvQ30 << 24;  // Q54 for precision
-  int64_t y = 0;
-  for (int i = 0; i < kCordicSteps; ++i) {
-    const int64_t xs = x / (int64_t{1} << i);
-    const int64_t ys = y / (int64_t{1} << i);
-    if (z >= 0) {
-      x -= ys;
-      y += xs;
-      z -= kAtanTable[i];
-    } else {
-      x += ys;
-      y -= xs;
-      z += kAtanTable[i];
-    }
-  }
-  if (c) *c = sat32(sign * shr_round(x, 24));
-  if (s) *s = sat32(shr_round(y, 24));
 }
 
 int32_t exp_neg_q27(int64_t x_q27) {

@@ -43,22 +43,20 @@ void gaussian_triple(int order, int64_t s, int32_t* phi_n, int32_t* phi_n1, int3
 
 // Raw column integrals, in sigma units, Q3.28, written into the tables'
 // storage before quantisation (no scratch memory):
-//   K = Int phi_n(s) cos(psi - axis) ds,  D = -Int phi_(n+1)(s) cos(psi - axis) ds
-void integrate(const AngleQ28* edges, uint16_t width, AngleQ28 axis, int64_t centre,
+//   K = Int phi_n(s) ds,  D = -Int phi_(n+1)(s) ds,  T = -Int phi_(n+3)(s) ds
+void integrate(const AngleQ28* edges, uint16_t width, int64_t centre,
                const KernelSpec& k, KernelTable& kk, KernelTable& dd, KernelTable* tt) {
   for (uint16_t u = 0; u < width; ++u) {
     const int64_t lo = edges[u], hi = edges[u + 1];
     int64_t acc_k = 0, acc_d = 0, acc_t = 0;
     for (int j = 0; j < kPoints; ++j) {
       const int64_t psi = lo + (hi - lo) * j / kSimpsonIntervals;
-      int32_t cosw = 0;
-      fx::cos_sin_q30(static_cast<AngleQ28>(psi - axis), &cosw, nullptr);
       const int64_t s = fx::div_q(psi - centre, k.sigma, 24);
       int32_t pn = 0, pn1 = 0, pn3 = 0;
       gaussian_triple(k.order, s, &pn, &pn1, &pn3);
-      acc_k += kSimpsonWeight[j] * fx::shr_round(int64_t{pn} * cosw, 30);
-      acc_d += kSimpsonWeight[j] * fx::shr_round(int64_t{pn1} * cosw, 30);
-      acc_t += kSimpsonWeight[j] * fx::shr_round(int64_t{pn3} * cosw, 30);  // Q27
+      acc_k += kSimpsonWeight[j] * int64_t{pn};
+      acc_d += kSimpsonWeight[j] * int64_t{pn1};
+      acc_t += kSimpsonWeight[j] * int64_t{pn3};  // Q27
     }
     const int64_t ds = fx::div_q(hi > lo ? hi - lo : lo - hi, k.sigma, 24);  // Q24
     kk.w[u] = fx::sat32(fx::shr_round(acc_k * ds, 26) / kSimpsonWeightSum);
@@ -96,9 +94,14 @@ int64_t sum(const KernelTable& t, uint16_t width) {
   return s;
 }
 
-uint64_t sum_sq(const KernelTable& t, uint16_t width) {  // Q56
+// Sum of squares in Q48 (values rounded to Q24 first: 160 columns of |v| < 8
+// stay below 2^62 even after the multiplication by the width).
+uint64_t sum_sq_q48(const KernelTable& t, uint16_t width) {
   uint64_t s = 0;
-  for (uint16_t u = 0; u < width; ++u) s += static_cast<uint64_t>(int64_t{t.w[u]} * t.w[u]);
+  for (uint16_t u = 0; u < width; ++u) {
+    const int64_t v = fx::shr_round(t.w[u], 4);
+    s += static_cast<uint64_t>(v * v);
+  }
   return s;
 }
 
@@ -106,20 +109,19 @@ uint64_t sum_sq(const KernelTable& t, uint16_t width) {  // Q56
 // that F1 - F0 compares like with like. unit_l1: the normaliser (sum K = 1);
 // otherwise sum K^2 = 1/width, which gives every kernel the same pixel-noise
 // variance, so that the least squares over kernels weighs them fairly.
-void build_kernel(const EstimatorConfig& cfg, KernelBank& bank, int64_t centre,
+void build_kernel(KernelBank& bank, int64_t centre,
                   const KernelSpec& spec, bool unit_l1, KernelTable* k_out[2],
                   KernelTable* d_out[2], KernelTable* t_out[2]) {
   const uint16_t w = bank.width;
   for (int i = 0; i < 2; ++i)
-    integrate(bank.edge[i], w, cfg.cam[i].axis_yaw, centre, spec, *k_out[i], *d_out[i], t_out[i]);
+    integrate(bank.edge[i], w, centre, spec, *k_out[i], *d_out[i], t_out[i]);
   int64_t norm = 0;  // Q28
   if (unit_l1) {
     norm = (sum(*k_out[0], w) + sum(*k_out[1], w)) / 2;
   } else {
-    const uint64_t mean_sq = (sum_sq(*k_out[0], w) + sum_sq(*k_out[1], w)) / 2;  // Q56
-    const uint64_t root = fx::isqrt64(mean_sq);                                   // Q28
-    const uint64_t sqrt_w = fx::isqrt64(uint64_t{w} << 32);                      // Q16
-    norm = static_cast<int64_t>(fx::shr_round(static_cast<int64_t>(root * sqrt_w), 16));
+    // sqrt(width * mean sum of squares) in one root: Q48 -> Q24 -> Q28.
+    const uint64_t sq = (sum_sq_q48(*k_out[0], w) + sum_sq_q48(*k_out[1], w)) / 2 * w;
+    norm = static_cast<int64_t>(fx::isqrt64(sq)) * 16;
   }
   if (norm <= 0) norm = 1;
   // D per radian: divide by sigma as well (Q28 * Q28 -> Q28).
@@ -145,9 +147,9 @@ int32_t gaussian_derivative_q30(int order, int32_t s_q24) {
 
 void pinhole_column_edges(const CameraGeometry& g, uint16_t width, AngleQ28* edges) {
   for (uint16_t u = 0; u <= width; ++u) {
-    const int64_t x = (int64_t{u} << 16) - (int64_t{1} << 15) - g.cu;  // Q16 px
-    const int32_t tan_q16 = fx::div_q(x, g.fu, 16);
-    edges[u] = static_cast<AngleQ28>(g.axis_yaw + g.u_sign * fx::atan_q16(tan_q16));
+    // atan of the exact ratio (x / fu, both Q16 px): no rounded tangent.
+    const int64_t x = (int64_t{u} << 16) - (int64_t{1} << 15) - g.cu;
+    edges[u] = static_cast<AngleQ28>(g.axis_yaw + g.u_sign * fx::atan2_i32(static_cast<int32_t>(x), g.fu));
   }
 }
 
@@ -159,12 +161,12 @@ void build_kernel_bank(const EstimatorConfig& cfg, KernelBank& bank) {
   KernelTable* k_out[2] = {&bank.cam[0].norm, &bank.cam[1].norm};
   KernelTable* d_out[2] = {&bank.cam[0].norm_d, &bank.cam[1].norm_d};
   KernelTable* none[2] = {nullptr, nullptr};
-  build_kernel(cfg, bank, centre, cfg.normaliser, true, k_out, d_out, none);
+  build_kernel(bank, centre, cfg.normaliser, true, k_out, d_out, none);
   for (int k = 0; k < cfg.kernel_count; ++k) {
     KernelTable* kk[2] = {&bank.cam[0].k[k], &bank.cam[1].k[k]};
     KernelTable* dd[2] = {&bank.cam[0].d[k], &bank.cam[1].d[k]};
     KernelTable* tt[2] = {&bank.cam[0].t[k], &bank.cam[1].t[k]};
-    build_kernel(cfg, bank, centre, cfg.kernels[k], false, kk, dd, tt);
+    build_kernel(bank, centre, cfg.kernels[k], false, kk, dd, tt);
   }
 }
 

@@ -30,7 +30,7 @@ ObserverOutput VelocityObserver::update(const ObserverInput& in) {
   const uint8_t count = in.cur->count;
   int32_t s_bar[kMaxKernels], e[kMaxKernels];
   int64_t r_bar[kMaxKernels];
-  int64_t sr = 0, rr = 0, ss = 0;  // Q40, Q32, Q56
+  int64_t sr = 0, rr = 0, ss = 0, ss_cur = 0, ss_prev = 0;  // Q40, Q32, Q56
   for (uint8_t k = 0; k < count; ++k) {
     const int64_t d_mid = int64_t{in.cur->mid[k]} - in.prev->mid[k];
     s_bar[k] = clamp4(fx::shr_round(int64_t{in.cur->diff[k]} + in.prev->diff[k], 1), &sat);
@@ -40,8 +40,15 @@ ObserverOutput VelocityObserver::update(const ObserverInput& in) {
     sr += fx::shr_round(int64_t{s_bar[k]} * r_bar[k], 8);
     rr += fx::shr_round(r_bar[k] * r_bar[k], 8);
     ss += int64_t{s_bar[k]} * s_bar[k];
+    const int64_t sc = clamp4(in.cur->diff[k], &sat), sp = clamp4(in.prev->diff[k], &sat);
+    ss_cur += sc * sc;
+    ss_prev += sp * sp;
   }
-  out.texture = count ? static_cast<ValueQ28>(fx::isqrt64(static_cast<uint64_t>(ss / count))) : 0;
+  // Observability of the interval: the weaker of its two frames, so that
+  // texture appearing or vanishing between frames (lights, occlusion) is not
+  // read as motion.
+  const int64_t ss_min = ss_cur < ss_prev ? ss_cur : ss_prev;
+  out.texture = count ? static_cast<ValueQ28>(fx::isqrt64(static_cast<uint64_t>(ss_min / count))) : 0;
   int64_t c3 = 0;  // (kappa h)^3 / 12, Q36
   if (in.baseline_correction && rr > 0) {
     int64_t kh = fx::div_q(sr, rr, 20, &sat);  // Q28, clamped to +-0.5 rad

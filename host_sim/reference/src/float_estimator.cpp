@@ -1,5 +1,6 @@
 #include "lumavel/host/float_estimator.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -31,7 +32,7 @@ Eigen::VectorXd column_edges(const CameraModel& c, int width) {
   return e;
 }
 
-void integrate(const Eigen::VectorXd& edges, double axis, double centre, const KernelModel& k,
+void integrate(const Eigen::VectorXd& edges, double centre, const KernelModel& k,
                Eigen::VectorXd& kk, Eigen::VectorXd& dd, Eigen::VectorXd& tt) {
   const int width = static_cast<int>(edges.size()) - 1;
   kk.resize(width);
@@ -42,11 +43,10 @@ void integrate(const Eigen::VectorXd& edges, double axis, double centre, const K
     double ak = 0, ad = 0, at = 0;
     for (int j = 0; j <= kSimpsonIntervals; ++j) {
       const double psi = lo + (hi - lo) * j / kSimpsonIntervals;
-      const double c = std::cos(psi - axis);
       const double s = (psi - centre) / k.sigma;
-      ak += kSimpsonWeight[j] * gaussian_derivative(k.order, s) * c;
-      ad += kSimpsonWeight[j] * gaussian_derivative(k.order + 1, s) * c;
-      at += kSimpsonWeight[j] * gaussian_derivative(k.order + 3, s) * c;
+      ak += kSimpsonWeight[j] * gaussian_derivative(k.order, s);
+      ad += kSimpsonWeight[j] * gaussian_derivative(k.order + 1, s);
+      at += kSimpsonWeight[j] * gaussian_derivative(k.order + 3, s);
     }
     const double ds = std::fabs(hi - lo) / k.sigma;
     kk[u] = ak * ds / (3 * kSimpsonIntervals);
@@ -58,7 +58,7 @@ void integrate(const Eigen::VectorXd& edges, double axis, double centre, const K
 void build_kernel(const EstimatorSettings& s, const Eigen::VectorXd (&edges)[2], double centre,
                   const KernelModel& k, bool unit_l1, Eigen::VectorXd* kout[2],
                   Eigen::VectorXd* dout[2], Eigen::VectorXd* tout[2]) {
-  for (int i = 0; i < 2; ++i) integrate(edges[i], s.cam[i].axis_yaw, centre, k, *kout[i], *dout[i], *tout[i]);
+  for (int i = 0; i < 2; ++i) integrate(edges[i], centre, k, *kout[i], *dout[i], *tout[i]);
   const double norm = unit_l1 ? (kout[0]->sum() + kout[1]->sum()) / 2
                               : std::sqrt(s.width * (kout[0]->squaredNorm() + kout[1]->squaredNorm()) / 2);
   for (int i = 0; i < 2; ++i) {
@@ -131,10 +131,11 @@ double FloatEstimator::angle_at(uint64_t t) const {
   return ga_[0] + (gr_[0] + rate_t) / 2 * dt;
 }
 
-FloatMeasurement FloatEstimator::measure(const uint8_t* cam0, const uint8_t* cam1) const {
+FloatMeasurement measure_float(const FloatBank& bank, const EstimatorSettings& s,
+                               const uint8_t* cam0, const uint8_t* cam1) {
   FloatMeasurement m;
-  const int w = s_.width, h = s_.height;
-  const size_t n = s_.kernels.size();
+  const int w = s.width, h = s.height;
+  const size_t n = s.kernels.size();
   Eigen::VectorXd f[2], r[2], c[2];
   const uint8_t* img[2] = {cam0, cam1};
   for (int i = 0; i < 2; ++i) {
@@ -147,7 +148,7 @@ FloatMeasurement FloatEstimator::measure(const uint8_t* cam0, const uint8_t* cam
         m.clipped += (p == 0 || p == 255);
         m.sampled += 1;
       }
-    const FloatKernels& k = bank_.cam[i];
+    const FloatKernels& k = bank.cam[i];
     const double nrm = k.norm.dot(col);
     f[i] = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));
     r[i] = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));
@@ -174,7 +175,7 @@ FloatMeasurement FloatEstimator::measure(const uint8_t* cam0, const uint8_t* cam
 EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const uint8_t* cam1) {
   EngineEstimate est;
   est.t_ns = t_ns;
-  FloatMeasurement m = measure(cam0, cam1);
+  FloatMeasurement m = measure_float(bank_, s_, cam0, cam1);
   uint16_t status = 0;
   if (m.clipped * 1000 > s_.saturated_permille * m.sampled) status |= kStatusSaturated;
   const double angle = angle_at(t_ns);
@@ -198,24 +199,26 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
     } else {
       if (dt > 1.5 * s_.frame_period) status |= kStatusFrameGap;
       const double dtheta = angle - prev_angle_;
-      Eigen::VectorXd s_bar = (m.diff + prev_.diff) / 2;
+      const Eigen::VectorXd s_bar = (m.diff + prev_.diff) / 2;
       const Eigen::VectorXd r_bar = (m.rot + prev_.rot) / 2;
       const Eigen::VectorXd e = (m.mid - prev_.mid) - dtheta * r_bar;
+      Eigen::VectorXd a = s_bar;
       if (s_.baseline_correction) {
-        // M = (F0 + F1)/2 sees F'(x) + h^2/8 F''' while S/h sees F' + h^2/24 F''':
+        // M = (F0 + F1)/2 sees F' + h^2/8 F''' while S/h sees F' + h^2/24 F''':
         // compare dM with S + h^3/12 F''', F''' = kappa^3 d3F/dtheta3, kappa = dx/dtheta.
         const double rr = r_bar.squaredNorm();
         if (rr > 0) {
-          const double kappa_h = s_bar.dot(r_bar) / rr;  // h * kappa
-          s_bar += (kappa_h * kappa_h * kappa_h / 12) * (m.curv + prev_.curv) / 2;
+          const double kappa_h = std::clamp(s_bar.dot(r_bar) / rr, -0.5, 0.5);  // h * kappa
+          a += (kappa_h * kappa_h * kappa_h / 12) * (m.curv + prev_.curv) / 2;
         }
       }
-      const double den = s_bar.squaredNorm();
-      est.texture = s_bar.size() ? std::sqrt(den / static_cast<double>(s_bar.size())) : 0;
-      if (den <= 0 || est.texture < s_.low_texture) {
+      const double ss_min = std::min(m.diff.squaredNorm(), prev_.diff.squaredNorm());
+      est.texture = s_bar.size() ? std::sqrt(ss_min / static_cast<double>(s_bar.size())) : 0;
+      const double den = a.squaredNorm();
+      if (den <= 0 || s_bar.squaredNorm() <= 0 || est.texture < s_.low_texture) {
         status |= kStatusLowTexture;
       } else {
-        const double d = s_.baseline * e.dot(s_bar) / den;
+        const double d = s_.baseline * e.dot(a) / den;
         est.v_direct = d / dt;
         if (!started_) {
           v_ = est.v_direct;

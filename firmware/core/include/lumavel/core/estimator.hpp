@@ -27,7 +27,7 @@ struct Estimate {
   AngleQ28 heading;    // integral of the gyro, wrapped to [-pi, pi)
   uint16_t status;     // StatusFlag bits
   SpeedQ16 v_direct;   // this interval's direct measurement (0 when none)
-  ValueQ28 texture;    // rms over kernels of F1 - F0 (observability)
+  ValueQ28 texture;    // rms over kernels of F1 - F0, weaker frame of the interval
 };
 
 class Estimator {

@@ -30,6 +30,11 @@ struct FloatMeasurement {
   double clipped = 0, sampled = 0;
 };
 
+// Both cameras' normalised kernel outputs for one frame pair (the twin of
+// column_profile + stereo_measurement).
+FloatMeasurement measure_float(const FloatBank& bank, const EstimatorSettings& s,
+                               const uint8_t* cam0, const uint8_t* cam1);
+
 class FloatEstimator {
  public:
   explicit FloatEstimator(const EstimatorSettings& s);
@@ -39,7 +44,6 @@ class FloatEstimator {
 
  private:
   double angle_at(uint64_t t_ns) const;
-  FloatMeasurement measure(const uint8_t* cam0, const uint8_t* cam1) const;
 
   EstimatorSettings s_;
   FloatBank bank_;

@@ -1,0 +1,52 @@
+#include <CppUTest/TestHarness.h>
+
+#include <vector>
+
+#include "lumavel/core/column_profile.hpp"
+
+using namespace lumavel;
+
+TEST_GROUP(ColumnProfile){};
+
+TEST(ColumnProfile, SumsEveryColumnWhateverTheWidth) {
+  for (uint16_t w : {16, 17, 18, 19, 40, 159, 160}) {
+    const uint16_t h = 7, stride = static_cast<uint16_t>(w + 3);
+    std::vector<uint8_t> img(static_cast<size_t>(stride) * h, 0xEE);
+    for (uint16_t y = 0; y < h; ++y)
+      for (uint16_t x = 0; x < w; ++x) img[static_cast<size_t>(y * stride + x)] = static_cast<uint8_t>((x * 13 + y * 31) % 251);
+    ColumnProfile p;
+    column_profile(img.data(), w, h, stride, p);
+    for (uint16_t x = 0; x < w; ++x) {
+      unsigned s = 0;
+      for (uint16_t y = 0; y < h; ++y) s += img[static_cast<size_t>(y * stride + x)];
+      LONGS_EQUAL(s, p.sum[x]);
+    }
+  }
+}
+
+TEST(ColumnProfile, MaxSizeWhiteFrameDoesNotOverflow) {
+  std::vector<uint8_t> img(static_cast<size_t>(kMaxColumns) * kMaxRows, 255);
+  ColumnProfile p;
+  column_profile(img.data(), kMaxColumns, kMaxRows, kMaxColumns, p);
+  for (int x = 0; x < kMaxColumns; ++x) LONGS_EQUAL(255 * kMaxRows, p.sum[x]);
+  LONGS_EQUAL(p.clip_sampled, p.clipped);  // every sampled pixel is clipped
+}
+
+TEST(ColumnProfile, CountsClippedOnSampledRows) {
+  std::vector<uint8_t> img(40 * 8, 100);
+  img[0] = 0;        // row 0: sampled
+  img[4 * 40] = 255; // row 4: sampled
+  img[1 * 40] = 0;   // row 1: not sampled
+  ColumnProfile p;
+  column_profile(img.data(), 40, 8, 40, p);
+  LONGS_EQUAL(2, p.clipped);
+  LONGS_EQUAL(80, p.clip_sampled);
+}
+
+TEST(ColumnProfile, LineScan) {
+  std::vector<uint8_t> img(128);
+  for (int i = 0; i < 128; ++i) img[static_cast<size_t>(i)] = static_cast<uint8_t>(i);
+  ColumnProfile p;
+  column_profile(img.data(), 128, 1, 128, p);
+  for (int i = 0; i < 128; ++i) LONGS_EQUAL(i, p.sum[i]);
+}

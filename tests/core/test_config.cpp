@@ -1,0 +1,83 @@
+#include <CppUTest/TestHarness.h>
+
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+#include "lumavel/core/config.hpp"
+#include "lumavel/core/estimator.hpp"
+#include "lumavel/host/settings.hpp"
+#include "synthetic_rig.hpp"
+
+using namespace lumavel;
+
+namespace {
+EstimatorConfig good() { return host::to_fixed_config(test::SyntheticRig{}.settings()); }
+}  // namespace
+
+TEST_GROUP(Config){};
+
+TEST(Config, DefaultRigIsValid) { CHECK(validate(good()) == ConfigError::kOk); }
+
+TEST(Config, EachFieldOutOfRangeIsNamed) {
+  struct Case {
+    void (*mutate)(EstimatorConfig&);
+    ConfigError want;
+  };
+  const Case cases[] = {
+      {[](EstimatorConfig& c) { c.width = 1; }, ConfigError::kWidth},  // single column
+      {[](EstimatorConfig& c) { c.width = kMaxColumns + 1; }, ConfigError::kWidth},
+      {[](EstimatorConfig& c) { c.height = 0; }, ConfigError::kHeight},
+      {[](EstimatorConfig& c) { c.height = kMaxRows + 1; }, ConfigError::kHeight},
+      {[](EstimatorConfig& c) { c.cam[1].fu = 0; }, ConfigError::kFocalLength},
+      {[](EstimatorConfig& c) { c.cam[0].cu = -(100 << 16); }, ConfigError::kPrincipalPoint},
+      {[](EstimatorConfig& c) { c.cam[0].axis_yaw = fx::kPiQ28 + 1; }, ConfigError::kAxisYaw},
+      {[](EstimatorConfig& c) { c.cam[0].u_sign = 0; }, ConfigError::kUSign},
+      {[](EstimatorConfig& c) { c.baseline = 0; }, ConfigError::kBaseline},
+      {[](EstimatorConfig& c) { c.kernel_count = 0; }, ConfigError::kKernelCount},
+      {[](EstimatorConfig& c) { c.kernels[0].order = 4; }, ConfigError::kKernelOrder},
+      {[](EstimatorConfig& c) { c.normaliser.order = 1; }, ConfigError::kKernelOrder},
+      {[](EstimatorConfig& c) { c.kernels[0].sigma = 1000; }, ConfigError::kKernelSigma},
+      {[](EstimatorConfig& c) { c.kernels[0].sigma = 20 * 4685082; }, ConfigError::kKernelOutsideView},
+      {[](EstimatorConfig& c) { c.tau_us = 0; }, ConfigError::kTau},
+      {[](EstimatorConfig& c) { c.frame_period_us = 0; }, ConfigError::kFramePeriod},
+      {[](EstimatorConfig& c) { c.max_gap_us = 1; }, ConfigError::kMaxGap},
+      {[](EstimatorConfig& c) { c.gyro_gap_us = 0; }, ConfigError::kGyroGap},
+      {[](EstimatorConfig& c) { c.low_texture = -1; }, ConfigError::kLowTexture},
+      {[](EstimatorConfig& c) { c.saturated_permille = 1001; }, ConfigError::kSaturatedPermille},
+      {[](EstimatorConfig& c) { c.options = 0x80; }, ConfigError::kOptions},
+  };
+  for (const Case& k : cases) {
+    EstimatorConfig c = good();
+    k.mutate(c);
+    LONGS_EQUAL(static_cast<int>(k.want), static_cast<int>(validate(c)));
+    CHECK(std::strlen(to_string(k.want)) > 5);
+  }
+}
+
+TEST(Config, HostQuantisationRefusesWhatDoesNotFit) {
+  auto s = test::SyntheticRig{}.settings();
+  s.baseline = 300;  // 300 m: outside Q7.24
+  try {
+    host::to_fixed_config(s);
+    FAIL("expected an exception");
+  } catch (const std::invalid_argument& e) {
+    CHECK(std::string(e.what()).find("baseline") != std::string::npos);
+  }
+  s = test::SyntheticRig{}.settings();
+  s.cam[0].fu = std::nan("");
+  CHECK_THROWS(std::invalid_argument, host::to_fixed_config(s));
+  s = test::SyntheticRig{}.settings();
+  s.width = 1;
+  CHECK_THROWS(std::invalid_argument, host::to_fixed_config(s));
+}
+
+TEST(Config, EstimatorKeepsItsConfigurationOnError) {
+  Estimator* est = new Estimator;
+  CHECK(est->configure(good()) == ConfigError::kOk);
+  EstimatorConfig bad = good();
+  bad.width = 3;
+  CHECK(est->configure(bad) == ConfigError::kWidth);
+  LONGS_EQUAL(40, est->config().width);
+  delete est;
+}

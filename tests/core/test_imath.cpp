@@ -1,0 +1,63 @@
+// Error budgets of the integer elementary functions, against libm.
+#include <CppUTest/TestHarness.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "lumavel/core/imath.hpp"
+
+using namespace lumavel;
+
+namespace {
+double rad(AngleQ28 a) { return std::ldexp(a, -28); }
+}  // namespace
+
+TEST_GROUP(IMath){};
+
+TEST(IMath, AtanOfRatiosWithin5e9Rad) {
+  double worst = 0;
+  for (double x = -40; x <= 40; x += 0.0137) {
+    const int32_t y = static_cast<int32_t>(std::lround(x * 65536));
+    const double err = std::fabs(rad(fx::atan2_i32(y, 65536)) - std::atan(y / 65536.0));
+    if (err > worst) worst = err;
+  }
+  std::printf("\n  atan worst error %.2e rad\n", worst);
+  CHECK(worst < 5e-9);
+}
+
+TEST(IMath, Atan2AllQuadrants) {
+  for (double a = -3.1; a < 3.14; a += 0.05) {
+    const int32_t y = static_cast<int32_t>(std::lround(1e6 * std::sin(a)));
+    const int32_t x = static_cast<int32_t>(std::lround(1e6 * std::cos(a)));
+    DOUBLES_EQUAL(std::atan2(y, x), rad(fx::atan2_i32(y, x)), 5e-9);
+  }
+  LONGS_EQUAL(0, fx::atan2_i32(0, 0));
+}
+
+TEST(IMath, ExpNegRelativeError) {
+  double worst = 0;
+  for (double x = 0; x < 22; x += 0.0093) {
+    const int64_t xq = std::llround(std::ldexp(x, 27));
+    const double want = std::exp(-std::ldexp(static_cast<double>(xq), -27));
+    const double got = std::ldexp(fx::exp_neg_q27(xq), -30);
+    worst = std::fmax(worst, std::fabs(got - want));
+  }
+  std::printf("\n  exp(-x) worst absolute error %.2e\n", worst);
+  CHECK(worst < 2e-9);
+  LONGS_EQUAL(0, fx::exp_neg_q27(int64_t{30} << 27));
+  LONGS_EQUAL(1 << 30, fx::exp_neg_q27(0));
+}
+
+TEST(IMath, Isqrt) {
+  const uint64_t vals[] = {0, 1, 2, 3, 4, 15, 16, 17, 1000000, 0xFFFFFFFFull, 0xFFFFFFFFFFFFFFFFull};
+  for (uint64_t v : vals) {
+    const uint64_t r = fx::isqrt64(v);
+    CHECK(r * r <= v);
+    CHECK((r + 1) * (r + 1) > v || r == 0xFFFFFFFFull);
+  }
+}
+
+TEST(IMath, WrapPi) {
+  DOUBLES_EQUAL(-M_PI + 0.1, rad(fx::wrap_pi(std::llround(std::ldexp(M_PI + 0.1, 28)))), 1e-8);
+  DOUBLES_EQUAL(0.5, rad(fx::wrap_pi(std::llround(std::ldexp(0.5 + 6 * M_PI, 28)))), 1e-7);
+}
