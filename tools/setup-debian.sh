@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages that lumavel builds, tests and runs with.
+# Idempotent and quiet when everything is present; uses sudo when not root.
+set -euo pipefail
+
+packages=(
+  # host build and tests
+  build-essential cmake pkg-config cpputest libeigen3-dev libbenchmark-dev
+  # recordings, scenarios, images
+  libpng-dev libyaml-cpp-dev
+  # USB HID readout and the kernel-in-the-loop test
+  libhidapi-dev libusb-1.0-0-dev qemu-system-x86 busybox-static cpio xz-utils kmod
+  # fuzzing (libFuzzer)
+  clang
+  # firmware cross build and the emulated Cortex-M
+  gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+sudo=""
+if [ "$(id -u)" -ne 0 ]; then
+  command -v sudo >/dev/null || { echo "setup: need root or sudo to install: ${missing[*]}" >&2; exit 1; }
+  sudo=sudo
+fi
+echo "setup: installing ${missing[*]}" >&2
+$sudo apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
