@@ -33,12 +33,12 @@ TEST(ColumnProfile, MaxSizeWhiteFrameDoesNotOverflow) {
 }
 
 TEST(ColumnProfile, CountsClippedOnSampledRows) {
-  std::vector<uint8_t> img(40 * 8, 100);
+  std::vector<uint8_t> img(40 * 9, 100);
   img[0] = 0;        // row 0: sampled
-  img[4 * 40] = 255; // row 4: sampled
+  img[8 * 40] = 255; // row 8: sampled
   img[1 * 40] = 0;   // row 1: not sampled
   ColumnProfile p;
-  column_profile(img.data(), 40, 8, 40, p);
+  column_profile(img.data(), 40, 9, 40, p);
   LONGS_EQUAL(2, p.clipped);
   LONGS_EQUAL(80, p.clip_sampled);
 }

@@ -11,6 +11,45 @@ int64_t dot(const KernelTable& t, const ColumnProfile& p) {
   return acc;
 }
 
+// 1/N as a 31-bit mantissa and a power of two, so that each ratio X/N is
+// one 32x32->64 multiply instead of a 64-bit division (no divider on M0, a
+// slow library routine on M3).
+struct Reciprocal {
+  int64_t mant;  // 2^61 / N_norm, in (2^30, 2^31]
+  int exp;       // N = N_norm * 2^exp, N_norm in [2^30, 2^31)
+};
+
+Reciprocal reciprocal(int64_t n) {  // n > 0
+  int e = 0;
+  while (n >= (int64_t{1} << 31)) {
+    n /= 2;
+    ++e;
+  }
+  while (n < (int64_t{1} << 30)) {
+    n *= 2;
+    --e;
+  }
+  return {(int64_t{1} << 61) / n, e};
+}
+
+// round(x / N * 2^q), saturated to int32; relative error ~1e-9.
+int32_t ratio(int64_t x, const Reciprocal& r, int q, bool* sat) {
+  int sx = 0;
+  while (x >= (int64_t{1} << 31) || x < -(int64_t{1} << 31)) {
+    x /= 2;
+    ++sx;
+  }
+  // x * 2^sx * mant / 2^61 / 2^exp * 2^q
+  const int shift = 61 + r.exp - sx - q;
+  const int64_t p = x * r.mant;  // < 2^62
+  if (shift <= 0) {
+    if (shift < -30) return fx::sat32(p >= 0 ? (int64_t{1} << 40) : -(int64_t{1} << 40), sat);
+    return fx::sat32(fx::sat32(p, sat) * (int64_t{1} << -shift), sat);
+  }
+  if (shift >= 63) return 0;
+  return fx::sat32(fx::shr_round(p, shift), sat);
+}
+
 struct CameraOutputs {
   ValueQ28 f[kMaxKernels];
   SlopeQ20 r[kMaxKernels];
@@ -31,17 +70,15 @@ void camera_outputs(const ColumnProfile& p, const CameraKernels& ck, uint8_t cou
     for (uint8_t k = 0; k < count; ++k) out.f[k] = out.r[k] = out.c[k] = 0;
     return;
   }
-  const int64_t dn = dot(ck.norm_d, p);
+  const Reciprocal inv = reciprocal(n);
   bool sat = false;
   // value of table t = w * 2^-(31 + exp): a ratio of two dots carries 2^(exp_n - exp_t).
-  const SlopeQ20 dn_over_n = fx::div_q(dn, n, fx::kSlopeFrac + ck.norm.exp - ck.norm_d.exp, &sat);
+  const SlopeQ20 dn_over_n = ratio(dot(ck.norm_d, p), inv, fx::kSlopeFrac + ck.norm.exp - ck.norm_d.exp, &sat);
   for (uint8_t k = 0; k < count; ++k) {
-    const int64_t b = dot(ck.k[k], p);
-    const int64_t db = dot(ck.d[k], p);
-    const ValueQ28 f = fx::div_q(b, n, fx::kValueFrac + ck.norm.exp - ck.k[k].exp, &sat);
-    const SlopeQ20 db_over_n = fx::div_q(db, n, fx::kSlopeFrac + ck.norm.exp - ck.d[k].exp, &sat);
+    const ValueQ28 f = ratio(dot(ck.k[k], p), inv, fx::kValueFrac + ck.norm.exp - ck.k[k].exp, &sat);
+    const SlopeQ20 db_over_n = ratio(dot(ck.d[k], p), inv, fx::kSlopeFrac + ck.norm.exp - ck.d[k].exp, &sat);
     out.f[k] = f;
-    out.c[k] = fx::div_q(dot(ck.t[k], p), n, fx::kCurvFrac + ck.norm.exp - ck.t[k].exp, &sat);
+    out.c[k] = ratio(dot(ck.t[k], p), inv, fx::kCurvFrac + ck.norm.exp - ck.t[k].exp, &sat);
     out.r[k] = fx::sat32(int64_t{db_over_n} - fx::shr_round(int64_t{f} * dn_over_n, fx::kValueFrac), &sat);
   }
   out.saturated = sat;

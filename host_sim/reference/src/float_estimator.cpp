@@ -142,7 +142,7 @@ FloatMeasurement measure_float(const FloatBank& bank, const EstimatorSettings& s
     Eigen::VectorXd col = Eigen::VectorXd::Zero(w);
     for (int y = 0; y < h; ++y)
       for (int u = 0; u < w; ++u) col[u] += img[i][y * w + u];
-    for (int y = 0; y < h; y += 4)
+    for (int y = 0; y < h; y += 8)
       for (int u = 0; u < w; ++u) {
         const uint8_t p = img[i][y * w + u];
         m.clipped += (p == 0 || p == 255);
