@@ -46,6 +46,8 @@ TEST(Config, EachFieldOutOfRangeIsNamed) {
       {[](EstimatorConfig& c) { c.low_texture = -1; }, ConfigError::kLowTexture},
       {[](EstimatorConfig& c) { c.saturated_permille = 1001; }, ConfigError::kSaturatedPermille},
       {[](EstimatorConfig& c) { c.options = 0x80; }, ConfigError::kOptions},
+      {[](EstimatorConfig& c) { c.still_distance = 0; }, ConfigError::kStill},
+      {[](EstimatorConfig& c) { c.still_min_us = 0; }, ConfigError::kStill},
   };
   for (const Case& k : cases) {
     EstimatorConfig c = good();

@@ -30,6 +30,8 @@ ConfigError Estimator::configure(const EstimatorConfig& cfg) {
 
 void Estimator::reset() {
   gyro_.reset();
+  gyro_offset_.reset();
+  heading_ = 0;
   observer_.reset();
   have_prev_ = false;
   cur_ = 0;
@@ -58,7 +60,11 @@ Estimate Estimator::step(const FramePair& frames) {
     status |= kStatusSaturated;
 
   const int64_t angle = gyro_.angle_at(frames.t_ns);
-  est.heading = fx::wrap_pi(angle);
+  const int64_t since_prev_ns = frame_index_ > 1 ? static_cast<int64_t>(frames.t_ns - prev_t_ns_) : 0;
+  // Gyro angle of the interval with the learned offset removed.
+  const int64_t dtheta = frame_index_ > 1 ? angle - prev_gyro_angle_ - gyro_offset_.angle_over(since_prev_ns) : 0;
+  heading_ = frame_index_ > 1 ? heading_ + dtheta : angle;
+  est.heading = fx::wrap_pi(heading_);
   if (gyro_.take_max_spacing() > uint64_t{cfg_.gyro_gap_us} * 1000) status |= kStatusGyroGap;
 
   if (m.no_light) {
@@ -79,13 +85,17 @@ Estimate Estimator::step(const FramePair& frames) {
       in.prev = &meas_[cur_];
       in.cur = &m;
       in.dt_ns = dt_ns;
-      in.dtheta = fx::sat32(angle - prev_gyro_angle_);
+      in.dtheta = fx::sat32(dtheta);
       in.baseline = cfg_.baseline;
       in.tau_us = cfg_.tau_us;
       in.low_texture = cfg_.low_texture;
       in.baseline_correction = (cfg_.options & kOptionBaselineCorrection) != 0;
       const ObserverOutput o = observer_.update(in);
       if (!o.updated) status |= kStatusLowTexture;
+      if (cfg_.options & kOptionGyroOffsetLearning) {
+        gyro_offset_.update({&m, frames.t_ns, angle, o.updated, cfg_.baseline, cfg_.still_distance, cfg_.still_min_us});
+        if (gyro_offset_.still()) status |= kStatusStill;
+      }
       if (o.saturated) status |= kStatusSaturated;
       est.v_direct = o.v_direct;
       est.texture = o.texture;
@@ -99,6 +109,7 @@ Estimate Estimator::step(const FramePair& frames) {
   est.v = observer_.v();
   est.distance = distance_;
   est.status = status;
+  est.gyro_offset = gyro_offset_.offset();
   return est;
 }
 

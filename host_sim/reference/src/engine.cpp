@@ -33,6 +33,7 @@ class FixedEngine final : public Engine {
     o.status = e.status;
     o.v_direct = std::ldexp(e.v_direct, -fx::kSpeedFrac);
     o.texture = std::ldexp(e.texture, -fx::kValueFrac);
+    o.gyro_offset = std::ldexp(e.gyro_offset, -fx::kRateFrac);
     return o;
   }
 

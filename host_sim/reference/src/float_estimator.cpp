@@ -179,7 +179,12 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
   uint16_t status = 0;
   if (m.clipped * 1000 > s_.saturated_permille * m.sampled) status |= kStatusSaturated;
   const double angle = angle_at(t_ns);
-  est.heading = std::remainder(angle, 2 * M_PI);
+  const bool first = frames_ == 0;
+  ++frames_;
+  const double since_prev = first ? 0 : (static_cast<double>(t_ns) - static_cast<double>(prev_t_)) * 1e-9;
+  const double dtheta = first ? 0 : angle - prev_angle_ - offset_ * since_prev;
+  heading_ = first ? angle : heading_ + dtheta;
+  est.heading = std::remainder(heading_, 2 * M_PI);
   if (est.heading >= M_PI) est.heading -= 2 * M_PI;
   if (gmax_spacing_ > s_.gyro_gap) status |= kStatusGyroGap;
   gmax_spacing_ = 0;
@@ -198,7 +203,6 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
       since_start_ = 0;
     } else {
       if (dt > 1.5 * s_.frame_period) status |= kStatusFrameGap;
-      const double dtheta = angle - prev_angle_;
       const Eigen::VectorXd s_bar = (m.diff + prev_.diff) / 2;
       const Eigen::VectorXd r_bar = (m.rot + prev_.rot) / 2;
       const Eigen::VectorXd e = (m.mid - prev_.mid) - dtheta * r_bar;
@@ -230,6 +234,10 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
         }
       }
       distance_ += v_ * dt;
+      if (s_.gyro_offset_learning) {
+        learn_offset(m, t_ns, angle, !(status & kStatusLowTexture));
+        if (still_) status |= kStatusStill;
+      }
     }
     prev_ = m;
   }
@@ -239,7 +247,39 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
   est.v = v_;
   est.distance = distance_;
   est.status = status;
+  est.gyro_offset = offset_;
   return est;
+}
+
+void FloatEstimator::learn_offset(const FloatMeasurement& m, uint64_t t_ns, double angle, bool textured) {
+  auto anchor = [&] {
+    ref_ = m;
+    t_ref_ = t_ns;
+    angle_ref_ = angle;
+    have_ref_ = true;
+    still_ = false;
+  };
+  if (!textured) {
+    have_ref_ = still_ = false;
+    return;
+  }
+  if (!have_ref_ || t_ns <= t_ref_) return anchor();
+  const double den = m.diff.squaredNorm();
+  if (den <= 0) {
+    have_ref_ = false;
+    return;
+  }
+  const double d = s_.baseline * (m.mid - ref_.mid).dot(m.diff) / den;
+  if (std::fabs(d) > s_.still_distance) return anchor();
+  const double span = (static_cast<double>(t_ns) - static_cast<double>(t_ref_)) * 1e-9;
+  still_ = span >= s_.still_min;
+  if (still_) {
+    offset_ = (angle - angle_ref_) / span;
+    if (span > 20) {
+      anchor();
+      still_ = true;
+    }
+  }
 }
 
 }  // namespace lumavel::host

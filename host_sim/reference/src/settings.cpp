@@ -64,7 +64,10 @@ EstimatorConfig to_fixed_config(const EstimatorSettings& s) {
   if (s.saturated_permille < 0 || s.saturated_permille > 1000)
     throw std::invalid_argument("saturated permille is outside 0..1000");
   c.saturated_permille = static_cast<uint16_t>(s.saturated_permille);
-  c.options = s.baseline_correction ? kOptionBaselineCorrection : 0;
+  c.options = static_cast<uint8_t>((s.baseline_correction ? kOptionBaselineCorrection : 0) |
+                                   (s.gyro_offset_learning ? kOptionGyroOffsetLearning : 0));
+  c.still_distance = static_cast<LengthQ24>(quantise(s.still_distance, fx::kLengthFrac, "still distance"));
+  c.still_min_us = micros(s.still_min, "still duration");
   for (const CameraModel& cam : s.cam)
     if (!cam.edges.empty())
       throw std::invalid_argument("column-edge tables (lens distortion) are not supported by the fixed engine yet");

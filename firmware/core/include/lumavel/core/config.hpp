@@ -38,10 +38,13 @@ struct EstimatorConfig {
   ValueQ28 low_texture;         // rms of F1-F0 over kernels below which V is held
   uint16_t saturated_permille;  // clipped pixels (0 or 255) that raise kStatusSaturated
   uint8_t options;              // ConfigOption bits
+  LengthQ24 still_distance;     // image change since a reference below this counts as still
+  uint32_t still_min_us;        // stillness needed before the gyro offset is taken
 };
 
 enum ConfigOption : uint8_t {
   kOptionBaselineCorrection = 1u << 0,  // finite-baseline (h^2) correction, see velocity_observer.hpp
+  kOptionGyroOffsetLearning = 1u << 1,  // learn the gyro offset at standstill, see gyro_offset.hpp
 };
 
 enum class ConfigError : uint8_t {
@@ -64,6 +67,7 @@ enum class ConfigError : uint8_t {
   kLowTexture,
   kSaturatedPermille,
   kOptions,
+  kStill,
 };
 
 // Names the first field that is out of range (kOk if none).

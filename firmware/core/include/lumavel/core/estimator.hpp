@@ -6,6 +6,7 @@
 
 #include "lumavel/core/config.hpp"
 #include "lumavel/core/gyro_integrator.hpp"
+#include "lumavel/core/gyro_offset.hpp"
 #include "lumavel/core/kernel_bank.hpp"
 #include "lumavel/core/measurement.hpp"
 #include "lumavel/core/velocity_observer.hpp"
@@ -28,6 +29,7 @@ struct Estimate {
   uint16_t status;     // StatusFlag bits
   SpeedQ16 v_direct;   // this interval's direct measurement (0 when none)
   ValueQ28 texture;    // rms over kernels of F1 - F0, weaker frame of the interval
+  RateQ24 gyro_offset; // learned zero-rate offset, subtracted from the gyro
 };
 
 class Estimator {
@@ -51,13 +53,15 @@ class Estimator {
   EstimatorConfig cfg_{};
   KernelBank bank_{};
   GyroIntegrator gyro_{};
+  GyroOffset gyro_offset_{};
   VelocityObserver observer_{};
   StereoMeasurement meas_[2]{};  // previous and current frame
   int cur_ = 0;
   bool have_prev_ = false;
   bool configured_ = false;
   uint64_t prev_t_ns_ = 0;
-  int64_t prev_gyro_angle_ = 0;  // unwrapped, Q3.28
+  int64_t prev_gyro_angle_ = 0;  // raw integral, unwrapped, Q3.28
+  int64_t heading_ = 0;          // offset-corrected integral, unwrapped, Q3.28
   uint32_t frame_index_ = 0;
   DistQ32 distance_ = 0;
 };

@@ -13,6 +13,7 @@ enum StatusFlag : uint16_t {
   kStatusGyroGap = 1u << 4,     // gyro samples missing over the frame interval
   kStatusNoLight = 1u << 5,     // normaliser (mean brightness) is zero: frame unusable
   kStatusRestarted = 1u << 6,   // gap too long to bridge: the observer restarted here
+  kStatusStill = 1u << 7,       // images static: the gyro's zero-rate offset is being learned
 };
 
 }  // namespace lumavel

@@ -17,6 +17,7 @@ struct EngineEstimate {
   uint16_t status = 0;  // lumavel::StatusFlag bits
   double v_direct = 0;  // this interval's direct measurement, m/s
   double texture = 0;   // rms of F1 - F0 over kernels
+  double gyro_offset = 0;  // learned zero-rate offset, rad/s
 };
 
 enum class EngineKind { kFixed, kFloat };

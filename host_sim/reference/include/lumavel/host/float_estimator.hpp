@@ -44,6 +44,7 @@ class FloatEstimator {
 
  private:
   double angle_at(uint64_t t_ns) const;
+  void learn_offset(const FloatMeasurement& m, uint64_t t_ns, double angle, bool textured);
 
   EstimatorSettings s_;
   FloatBank bank_;
@@ -57,6 +58,11 @@ class FloatEstimator {
   bool have_prev_ = false, started_ = false;
   double v_ = 0, since_start_ = 0, distance_ = 0, prev_angle_ = 0;
   uint64_t prev_t_ = 0;
+  // gyro offset learning and the corrected heading
+  double offset_ = 0, heading_ = 0, angle_ref_ = 0;
+  uint64_t frames_ = 0, t_ref_ = 0;
+  FloatMeasurement ref_;
+  bool have_ref_ = false, still_ = false;
 };
 
 }  // namespace lumavel::host

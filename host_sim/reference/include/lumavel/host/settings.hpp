@@ -37,6 +37,9 @@ struct EstimatorSettings {
   double low_texture = 2e-3;     // rms of F1 - F0
   int saturated_permille = 50;
   bool baseline_correction = true;  // finite-baseline (h^2) correction
+  bool gyro_offset_learning = true;  // learn the gyro offset at standstill
+  double still_distance = 0.002;    // m: image change since a reference below this is standstill
+  double still_min = 0.5;           // s of stillness before the offset is taken
 };
 
 // Default kernel bank for a field of view (radians, horizontal).

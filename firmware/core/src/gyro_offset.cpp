@@ -1,0 +1,63 @@
+#include "lumavel/core/gyro_offset.hpp"
+
+namespace lumavel {
+namespace {
+constexpr uint64_t kRenewNs = 20000000000ull;  // 20 s
+}  // namespace
+
+void GyroOffset::anchor(const StillnessInput& in) {
+  ref_ = *in.cur;
+  t_ref_ = in.t_ns;
+  angle_ref_ = in.angle_raw;
+  have_ref_ = true;
+  still_ = false;
+}
+
+void GyroOffset::update(const StillnessInput& in) {
+  if (!in.textured) {
+    have_ref_ = false;
+    still_ = false;
+    return;
+  }
+  if (!have_ref_ || in.t_ns <= t_ref_) {
+    anchor(in);
+    return;
+  }
+  // Displacement since the reference, read as a translation: h * dM.S / S.S.
+  int64_t num = 0, den = 0;
+  for (uint8_t k = 0; k < in.cur->count; ++k) {
+    const int64_t s = in.cur->diff[k] / 4;  // Q26: four kernels' products stay in int64
+    num += (int64_t{in.cur->mid[k]} - ref_.mid[k]) / 4 * s;
+    den += s * s;
+  }
+  if (den == 0) {
+    have_ref_ = false;
+    return;
+  }
+  bool sat = false;
+  const int64_t d = fx::shr_round(int64_t{fx::div_q(num, den, fx::kValueFrac, &sat)} * in.baseline, fx::kValueFrac);
+  if (sat || d > in.still_distance || d < -int64_t{in.still_distance}) {
+    anchor(in);  // moved: a new candidate period starts here
+    return;
+  }
+  const uint64_t span = in.t_ns - t_ref_;
+  still_ = span >= uint64_t{in.still_min_us} * 1000;
+  if (still_) {
+    // Mean rate since the reference: Q28 rad over ns -> Q24 rad/s (* 1e9 / 16).
+    offset_ = fx::div_q((in.angle_raw - angle_ref_) * 62500000, static_cast<int64_t>(span), 0);
+    if (span > kRenewNs) {
+      const RateQ24 keep = offset_;
+      anchor(in);
+      offset_ = keep;
+    }
+  }
+}
+
+int64_t GyroOffset::angle_over(int64_t dt_ns) const {
+  // Q24 rad/s * ns -> Q28 rad: * 16 / 1e9.
+  const int64_t x = int64_t{offset_} * dt_ns;
+  constexpr int64_t kDiv = 62500000;
+  return x >= 0 ? (x + kDiv / 2) / kDiv : -((-x + kDiv / 2) / kDiv);
+}
+
+}  // namespace lumavel

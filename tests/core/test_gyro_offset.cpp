@@ -1,0 +1,75 @@
+// The gyro's zero-rate offset is learned at standstill: with a 2 deg/s offset
+// and no calibration, V comes out right after a standstill of 2 s.
+#include <CppUTest/TestHarness.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "lumavel/core/status.hpp"
+#include "lumavel/host/engine.hpp"
+#include "synthetic_rig.hpp"
+
+using namespace lumavel;
+
+namespace {
+
+struct Result {
+  double learned = 0, worst_moving = 0, still_frames = 0;
+  uint16_t last_status = 0;
+};
+
+// Standstill for `still_s`, then 0.6 m/s while turning gently; gyro with offset.
+Result drive(host::EngineKind kind, double offset, double still_s, bool learning) {
+  test::SyntheticRig rig;
+  rig.noise = 1.0;
+  auto s = rig.settings();
+  s.gyro_offset_learning = learning;
+  auto eng = host::make_engine(kind, s);
+  Result r;
+  double x = 0, th = 0;
+  const double fps = 60, total = still_s + 2;
+  for (int i = 0; i < total * fps; ++i) {
+    const double t = i / fps;
+    // Motion of the interval (t - 1/fps, t]: pose, gyro and image agree.
+    const bool moving = i > 0 && t - 1 / fps >= still_s;
+    const double v = moving ? 0.6 : 0, omega = moving ? 0.05 : 0;
+    x += v / fps;
+    th += omega / fps;
+    for (int g = 0; g < 4; ++g) {  // 240 Hz gyro
+      const double tg = t - 1 / fps + (g + 1) / (4 * fps);
+      if (tg >= 0) eng->push_gyro(static_cast<uint64_t>(std::llround(tg * 1e9)), omega + offset);
+    }
+    const test::Pose2 p{x, 0, th};
+    const auto a = rig.render(0, p), b = rig.render(1, p);
+    const host::EngineEstimate e = eng->step(static_cast<uint64_t>(std::llround(t * 1e9)), a.data(), b.data());
+    if (e.status & kStatusStill) ++r.still_frames;
+    if (t >= still_s + 0.5) r.worst_moving = std::fmax(r.worst_moving, std::fabs(e.v - v));
+    r.learned = e.gyro_offset;
+    r.last_status = e.status;
+  }
+  return r;
+}
+
+}  // namespace
+
+TEST_GROUP(GyroOffset){};
+
+TEST(GyroOffset, LearnedAtStandstillAndVIsRight) {
+  const double offset = 2 * M_PI / 180;
+  for (auto kind : {host::EngineKind::kFixed, host::EngineKind::kFloat}) {
+    const Result with = drive(kind, offset, 2.0, true), without = drive(kind, offset, 2.0, false);
+    std::printf("\n  %s: offset learned %.5f rad/s (true %.5f); worst |V error| moving: %.4f m/s learned, %.4f m/s not",
+                host::engine_name(kind), with.learned, offset, with.worst_moving, without.worst_moving);
+    DOUBLES_EQUAL(offset, with.learned, 0.02 * offset);
+    CHECK(with.worst_moving < 0.6 * 0.02);       // within 2 % of V
+    CHECK(without.worst_moving > 0.6 * 0.05);    // the offset matters without learning
+    CHECK(with.still_frames > 60);  // flagged from 0.5 s into the 2 s standstill
+    CHECK_FALSE(with.last_status & kStatusStill);  // moving: not still
+  }
+}
+
+TEST(GyroOffset, MovingRigIsNeverStill) {
+  const Result r = drive(host::EngineKind::kFixed, 0.01, 0.0, true);
+  LONGS_EQUAL(0, static_cast<long>(r.still_frames));
+  DOUBLES_EQUAL(0.0, r.learned, 1e-12);
+}
