@@ -168,6 +168,13 @@ void build_kernel_bank(const EstimatorConfig& cfg, KernelBank& bank) {
     KernelTable* tt[2] = {&bank.cam[0].t[k], &bank.cam[1].t[k]};
     build_kernel(bank, centre, cfg.kernels[k], false, kk, dd, tt);
   }
+  for (int k = 0; k < cfg.kernel_count; ++k) bank.sigma[k] = cfg.kernels[k].sigma;
+  for (int i = 0; i < 2; ++i) {
+    const int64_t n = sum(bank.cam[i].norm, cfg.width);
+    for (int k = 0; k < cfg.kernel_count; ++k)
+      bank.dc[i][k] = fx::div_q(sum(bank.cam[i].k[k], cfg.width), n > 0 ? n : 1,
+                                fx::kValueFrac + bank.cam[i].norm.exp - bank.cam[i].k[k].exp);
+  }
 }
 
 }  // namespace lumavel

@@ -1,5 +1,7 @@
 #include "lumavel/core/measurement.hpp"
 
+#include "lumavel/core/imath.hpp"
+
 namespace lumavel {
 namespace {
 
@@ -84,6 +86,41 @@ void camera_outputs(const ColumnProfile& p, const CameraKernels& ck, uint8_t cou
   out.saturated = sat;
 }
 
+int32_t clamp30(int64_t v) {
+  const int64_t lim = int64_t{1} << 30;
+  return static_cast<int32_t>(v > lim ? lim : (v < -lim ? -lim : v));
+}
+
+// Half the phase difference between the cameras of kernel k (see measurement.hpp).
+// (sigma w)^2 is clamped to [0.09, 16], the band a Gaussian-derivative kernel
+// passes: continuous, so that noise near w^2 = 0 cannot switch the correction.
+AngleQ28 half_phase(const CameraOutputs& c0, const CameraOutputs& c1, ValueQ28 dc0, ValueQ28 dc1,
+                    AngleQ28 sigma, uint8_t k) {
+  const int64_t r0 = c0.r[k], r1 = c1.r[k];  // Q20
+  const int64_t rr = fx::shr_round(r0 * r0 + r1 * r1, 8);                                  // Q32
+  if (rr == 0) return 0;
+  const int64_t cr = -(int64_t{c0.c[k]} * r0 + int64_t{c1.c[k]} * r1);                    // Q32
+  constexpr int64_t kUMin = 1509949, kUMax = int64_t{16} << 24;                          // Q24
+  int64_t u = kUMin;  // (sigma w)^2
+  if (cr > 0) {
+    bool sat = false;
+    const int64_t w2 = fx::div_q(cr, rr, 8, &sat);                                          // Q8 rad^-2
+    const int64_t s2 = fx::shr_round(int64_t{sigma} * sigma, 28);                            // Q28 rad^2
+    u = sat ? kUMax : fx::shr_round(w2 * s2, 12);
+    u = u < kUMin ? kUMin : (u > kUMax ? kUMax : u);
+  }
+  const int64_t root_u = fx::isqrt64(static_cast<uint64_t>(u) << 24);                       // Q24
+  // b = -R / w = -R sigma / sqrt(u)
+  const int64_t a0 = clamp30(int64_t{c0.f[k]} - dc0), a1 = clamp30(int64_t{c1.f[k]} - dc1);
+  const int64_t b0 = clamp30(fx::div_q(-r0 * sigma, root_u, 4)), b1 = clamp30(fx::div_q(-r1 * sigma, root_u, 4));
+  int64_t re = a1 * a0 + b1 * b0, im = b1 * a0 - a1 * b0;  // Q56, |.| < 2^61
+  while (re >= (int64_t{1} << 31) || re < -(int64_t{1} << 31) || im >= (int64_t{1} << 31) || im < -(int64_t{1} << 31)) {
+    re /= 2;
+    im /= 2;
+  }
+  return fx::atan2_i32(static_cast<int32_t>(im), static_cast<int32_t>(re)) / 2;
+}
+
 }  // namespace
 
 void stereo_measurement(const ColumnProfile& p0, const ColumnProfile& p1, const KernelBank& bank,
@@ -98,10 +135,11 @@ void stereo_measurement(const ColumnProfile& p0, const ColumnProfile& p1, const 
     out.mid[k] = static_cast<ValueQ28>(fx::shr_round(int64_t{c0.f[k]} + c1.f[k], 1));
     out.diff[k] = fx::sat32(int64_t{c1.f[k]} - c0.f[k], &sat);
     out.rot[k] = static_cast<SlopeQ20>(fx::shr_round(int64_t{c0.r[k]} + c1.r[k], 1));
-    out.curv[k] = static_cast<CurvQ12>(fx::shr_round(int64_t{c0.c[k]} + c1.c[k], 1));
   }
   out.saturated = sat;
   out.clipped = p0.clipped + p1.clipped;
+  for (uint8_t k = 0; k < bank.count; ++k)
+    out.half_phase[k] = out.no_light ? 0 : half_phase(c0, c1, bank.dc[0][k], bank.dc[1][k], bank.sigma[k], k);
 }
 
 }  // namespace lumavel

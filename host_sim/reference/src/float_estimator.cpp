@@ -91,6 +91,10 @@ FloatBank build_float_bank(const EstimatorSettings& s) {
     Eigen::VectorXd* tt[2] = {&b.cam[0].t[k], &b.cam[1].t[k]};
     build_kernel(s, b.edge, centre, s.kernels[k], false, kk, dd, tt);
   }
+  for (auto& c : b.cam) {
+    c.dc.resize(static_cast<Eigen::Index>(n));
+    for (size_t k = 0; k < n; ++k) c.dc[static_cast<Eigen::Index>(k)] = c.k[k].sum() / c.norm.sum();
+  }
   return b;
 }
 
@@ -168,7 +172,20 @@ FloatMeasurement measure_float(const FloatBank& bank, const EstimatorSettings& s
   m.mid = (f[0] + f[1]) / 2;
   m.diff = f[1] - f[0];
   m.rot = (r[0] + r[1]) / 2;
-  m.curv = (c[0] + c[1]) / 2;
+  // Each kernel's output as a local sinusoid: omega^2 = -C R / R^2 and
+  // z_i = (F_i - dc) - i R_i / omega; arg(z1 conj(z0)) = k h.
+  m.half_phase = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));
+  for (size_t j = 0; j < n && !m.no_light; ++j) {
+    const Eigen::Index jj = static_cast<Eigen::Index>(j);
+    const double rr = r[0][jj] * r[0][jj] + r[1][jj] * r[1][jj];
+    if (rr <= 0) continue;
+    const double sigma = s.kernels[j].sigma;
+    const double w2 = -(c[0][jj] * r[0][jj] + c[1][jj] * r[1][jj]) / rr;
+    const double omega = std::sqrt(std::clamp(w2 * sigma * sigma, 0.09, 16.0)) / sigma;
+    const double a0 = f[0][jj] - bank.cam[0].dc[jj], b0 = -r[0][jj] / omega;
+    const double a1 = f[1][jj] - bank.cam[1].dc[jj], b1 = -r[1][jj] / omega;
+    m.half_phase[jj] = std::atan2(b1 * a0 - a1 * b0, a1 * a0 + b1 * b0) / 2;
+  }
   return m;
 }
 
@@ -208,12 +225,10 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
       const Eigen::VectorXd e = (m.mid - prev_.mid) - dtheta * r_bar;
       Eigen::VectorXd a = s_bar;
       if (s_.baseline_correction) {
-        // M = (F0 + F1)/2 sees F' + h^2/8 F''' while S/h sees F' + h^2/24 F''':
-        // compare dM with S + h^3/12 F''', F''' = kappa^3 d3F/dtheta3, kappa = dx/dtheta.
-        const double rr = r_bar.squaredNorm();
-        if (rr > 0) {
-          const double kappa_h = std::clamp(s_bar.dot(r_bar) / rr, -0.5, 0.5);  // h * kappa
-          a += (kappa_h * kappa_h * kappa_h / 12) * (m.curv + prev_.curv) / 2;
+        // dM = (d/h) S x / tan(x), x = k h / 2 (velocity_observer.hpp).
+        for (Eigen::Index j = 0; j < a.size(); ++j) {
+          const double x = std::clamp((m.half_phase[j] + prev_.half_phase[j]) / 2, -1.2, 1.2);
+          a[j] *= std::fabs(x) > 1e-12 ? x / std::tan(x) : 1.0;
         }
       }
       const double ss_min = std::min(m.diff.squaredNorm(), prev_.diff.squaredNorm());

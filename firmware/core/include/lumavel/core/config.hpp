@@ -43,7 +43,7 @@ struct EstimatorConfig {
 };
 
 enum ConfigOption : uint8_t {
-  kOptionBaselineCorrection = 1u << 0,  // finite-baseline (h^2) correction, see velocity_observer.hpp
+  kOptionBaselineCorrection = 1u << 0,  // finite-baseline correction (x / tan x), see velocity_observer.hpp
   kOptionGyroOffsetLearning = 1u << 1,  // learn the gyro offset at standstill, see gyro_offset.hpp
 };
 

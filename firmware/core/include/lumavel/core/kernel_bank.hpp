@@ -47,6 +47,8 @@ struct KernelBank {
   uint16_t width;
   uint8_t count;
   CameraKernels cam[2];
+  ValueQ28 dc[2][kMaxKernels];  // F of a uniform image (sum K / sum N), per camera
+  AngleQ28 sigma[kMaxKernels];
   // Body-frame yaw of each column edge, width + 1 values, increasing with u
   // for u_sign = +1 and decreasing otherwise.
   AngleQ28 edge[2][kMaxColumns + 1];

@@ -15,7 +15,10 @@ struct StereoMeasurement {
   ValueQ28 mid[kMaxKernels];    // M = (F0 + F1) / 2, F = B / N (eq. 21 normalisation)
   ValueQ28 diff[kMaxKernels];   // S = F1 - F0 = h dF/dx (eq. 8, misalignment in the kernels)
   SlopeQ20 rot[kMaxKernels];    // R = (dF0/dtheta + dF1/dtheta) / 2 per radian
-  CurvQ12 curv[kMaxKernels];    // C = mean d3B/dtheta3 / N per radian^3 (derivatives of N neglected)
+  // Each kernel's output read as a local sinusoid of angular frequency w:
+  // w^2 = -C R / R^2 (C = d3F/dtheta3, derivatives of N neglected) and
+  // z_i = (F_i - dc) - i R_i / w; half_phase = arg(z1 conj(z0)) / 2 = k h / 2.
+  AngleQ28 half_phase[kMaxKernels];
   bool no_light;                // a normaliser was zero
   bool saturated;               // a ratio saturated
   uint32_t clipped;             // clipped pixels in both frames

@@ -12,12 +12,14 @@
 // so V's error decays with time constant tau whatever the texture contrast,
 // resolution or frame rate. The observer starts from the first direct value.
 //
-// Finite-baseline correction: M = (F0 + F1)/2 behaves like F' + h^2/8 F''' in
-// time while S/h = F' + h^2/24 F''', which biases V by about -(k h)^2/12 for
-// texture of spatial frequency k (-4 % at h = 8 cm, 2 m, 6 deg kernels). Locally
-// a translation acts like a rotation (F_x = kappa F_theta), so F''' = kappa^3 C
-// with C the third angular derivative and kappa h = sum S R / sum R^2; the
-// least squares then uses A_k = Sbar_k + (kappa h)^3 / 12 Cbar_k for Sbar_k.
+// Finite-baseline correction: for texture of spatial frequency k the mean
+// M = (F0 + F1)/2 is attenuated by cos(kh/2) while S = F1 - F0 is 2 sin(kh/2)/k
+// times dF/dx, so dM = (d/h) S x/tan(x), x = kh/2: V comes out low by about
+// x^2/3 (-8.6 % for the paper's 0.5 m sinusoid at h = 8 cm). Each kernel's
+// x is measured as half the phase difference between the cameras
+// (measurement.hpp) and the least squares uses A_k = Sbar_k x_k / tan(x_k).
+// (A second-order version through kappa^3 d3F/dtheta3 over-corrected by 2 %:
+// its own inputs carry the same finite-baseline factors.)
 #pragma once
 #include <cstdint>
 

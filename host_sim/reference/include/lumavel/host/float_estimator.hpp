@@ -14,6 +14,7 @@ namespace lumavel::host {
 
 struct FloatKernels {
   Eigen::VectorXd norm, norm_d;
+  Eigen::VectorXd dc;  // F of a uniform image, per kernel (sum K / sum N)
   std::vector<Eigen::VectorXd> k, d, t;  // B, dB/dtheta, d3B/dtheta3 kernels
 };
 
@@ -25,7 +26,8 @@ struct FloatBank {
 FloatBank build_float_bank(const EstimatorSettings& s);
 
 struct FloatMeasurement {
-  Eigen::VectorXd mid, diff, rot, curv;  // curv: mean d3F/dtheta3
+  Eigen::VectorXd mid, diff, rot;
+  Eigen::VectorXd half_phase;            // x = k h / 2 per kernel, from the cameras' phases
   bool no_light = false;
   double clipped = 0, sampled = 0;
 };

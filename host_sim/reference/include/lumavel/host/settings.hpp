@@ -36,7 +36,7 @@ struct EstimatorSettings {
   double gyro_gap = 0.05;        // s
   double low_texture = 2e-3;     // rms of F1 - F0
   int saturated_permille = 50;
-  bool baseline_correction = true;  // finite-baseline (h^2) correction
+  bool baseline_correction = true;  // finite-baseline correction (x / tan x per kernel)
   bool gyro_offset_learning = true;  // learn the gyro offset at standstill
   double still_distance = 0.002;    // m: image change since a reference below this is standstill
   double still_min = 0.5;           // s of stillness before the offset is taken
