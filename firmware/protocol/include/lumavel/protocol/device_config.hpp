@@ -1,0 +1,114 @@
+// The user-facing device configuration (feature report 0x03, and the blob kept
+// in the HAL's ConfigStore: the same bytes). Physical quantities in the named
+// fixed-point formats of lumavel/core/fixed.hpp; integer only.
+//
+// Flow on the device: decode_config() (CRC, version) -> validate() (ranges) ->
+// to_estimator_config() -> Estimator::configure() (the core's own checks) ->
+// ConfigStore::save(encoded bytes). Nothing is applied unless all pass.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+
+#include "lumavel/core/config.hpp"
+#include "lumavel/core/fixed.hpp"
+#include "lumavel/protocol/reports.hpp"
+
+namespace lumavel::protocol {
+
+constexpr uint8_t kConfigVersion = 1;
+// Kernel slots on the wire: fixed so that the layout does not depend on the
+// build's LUMAVEL_MAX_KERNELS (validate() refuses counts above kMaxKernels).
+constexpr int kWireKernels = 6;
+
+// Orientation bits.
+enum Orientation : uint8_t {
+  kLooksRight = 1u << 0,      // optical axes point to the body's right (-y); else left (+y)
+  kCam0UpsideDown = 1u << 1,  // cam0 mounted upside down (its u_sign becomes +1)
+  kCam1UpsideDown = 1u << 2,
+};
+constexpr uint8_t kKnownOrientationBits = 0x07u;
+
+struct KernelSetting {
+  uint8_t order;   // 0..kMaxKernelOrder
+  AngleQ28 sigma;  // rad
+};
+
+struct DeviceConfig {
+  uint16_t width;           // working columns, kMinColumns..kMaxColumns
+  uint16_t height;          // working rows, 1..kMaxRows
+  LengthQ24 baseline;       // h, m: x of cam1's optical centre minus cam0's, |h| in [1 mm, 1 m]
+  AngleQ28 misalignment;    // yaw from cam0 to cam1, rad, |dtheta| <= 0.35
+  PixelQ16 fu[2];           // focal length per camera, working pixels, [1, 8 * width]
+  PixelQ16 cu[2];           // principal point column, working pixels, [0, width - 1]
+  uint8_t orientation;      // Orientation bits
+  AngleQ28 normaliser_sigma;  // order-0 window, rad, [0.001, 2]
+  uint8_t kernel_count;     // 1..min(kWireKernels, kMaxKernels)
+  KernelSetting kernels[kWireKernels];  // slots >= kernel_count must be zero
+  uint32_t tau_us;          // observer time constant (gain 1/tau), [1 ms, 60 s]
+  uint32_t frame_period_us; // nominal frame interval, [1 ms, 1 s]
+  uint32_t max_gap_us;      // [frame_period_us, 10 s]
+  uint32_t gyro_gap_us;     // [100 us, 1 s]
+  ValueQ28 low_texture;     // [0, 1]
+  uint16_t saturated_permille;  // 0..1000
+};
+
+// Which field of a DeviceConfig was refused (travels in DeviceInfo.config_status).
+enum class ConfigField : uint8_t {
+  kOk = 0,
+  kWidth,
+  kHeight,
+  kBaseline,
+  kMisalignment,
+  kFocalLength,
+  kPrincipalPoint,
+  kOrientation,
+  kNormaliserSigma,
+  kKernelCount,
+  kKernelOrder,
+  kKernelSigma,
+  kTau,
+  kFramePeriod,
+  kMaxGap,
+  kGyroGap,
+  kLowTexture,
+  kSaturatedPermille,
+  kMalformed,  // the report itself was refused (length, id, version, CRC)
+  kEstimator,  // passed these ranges but the estimator refused it (e.g. kernel outside the view)
+  kStore,      // accepted but could not be persisted
+};
+const char* to_string(ConfigField f);
+
+// First field out of range, kOk if none.
+ConfigField validate(const DeviceConfig& c);
+
+// Feature report 0x03 layout (little-endian):
+//   off size field
+//   0   1    id = 0x03
+//   1   1    config version (kConfigVersion)
+//   2   2    width            4   2  height
+//   6   4    baseline         10  4  misalignment
+//   14  4    fu[0]            18  4  cu[0]
+//   22  4    fu[1]            26  4  cu[1]
+//   30  1    orientation      31  4  normaliser_sigma
+//   35  1    kernel_count     36  30 kernels[6] {order u8, sigma i32}
+//   66  4    tau_us           70  4  frame_period_us
+//   74  4    max_gap_us       78  4  gyro_gap_us
+//   82  4    low_texture      86  2  saturated_permille
+//   88  2    crc16 of bytes 0..87
+size_t encode_config(const DeviceConfig& c, uint8_t* buf, size_t cap);
+// Checks length, ID, version and CRC, then validate(): on kOutOfRange,
+// result.field names the field (to_string(ConfigField)).
+DecodeResult decode_config(const uint8_t* buf, size_t len, DeviceConfig& out);
+// The same checks, the outcome as a ConfigField: kMalformed for length, ID,
+// version or CRC, else the first field out of range (kOk: out is set).
+ConfigField parse_config(const uint8_t* buf, size_t len, DeviceConfig& out);
+
+// Builds the estimator's configuration. False (out untouched) if validate()
+// refuses c. The estimator still runs its own validate() in configure().
+bool to_estimator_config(const DeviceConfig& c, EstimatorConfig& out);
+
+// A working configuration for a 40 x 30, 60 degree, 8 cm rig looking left:
+// what a device runs when its store is empty or invalid.
+DeviceConfig default_device_config();
+
+}  // namespace lumavel::protocol

@@ -1,0 +1,116 @@
+// The lumavel HID reports other than the configuration: encode (device side)
+// and decode + validate (host side). Little-endian, packed, report ID first,
+// protocol version second, CRC-16 (crc.hpp) of all preceding bytes last.
+// Integer only, no heap, no exceptions.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+
+#include "lumavel/core/fixed.hpp"
+#include "lumavel/protocol/descriptor.hpp"
+
+namespace lumavel::protocol {
+
+// Why a received report was refused (kOk if it was not).
+enum class ReportError : uint8_t {
+  kOk = 0,
+  kShort,       // fewer bytes than the report's size
+  kWrongId,     // byte 0 is not the expected report ID
+  kBadVersion,  // byte 1 is not kProtocolVersion
+  kBadCrc,      // CRC-16 mismatch
+  kOutOfRange,  // a field outside its documented range (see `field`)
+};
+const char* to_string(ReportError e);
+
+// Result of a decode: the error and, for kOutOfRange, the field's name.
+struct DecodeResult {
+  ReportError error;
+  const char* field;  // static string, "" unless kOutOfRange
+  bool ok() const { return error == ReportError::kOk; }
+};
+
+// Input report 0x01: one per processed frame.
+//   off size field
+//   0   1    id = 0x01
+//   1   1    protocol version
+//   2   2    seq            u16, +1 per report sent (wraps); gaps = lost reports
+//   4   8    t_ns           u64, frame timestamp (middle of exposure), ns
+//   12  4    frame_index    u32
+//   16  4    v              SpeedQ16, m/s
+//   20  8    distance       DistQ32, m
+//   28  4    heading        AngleQ28, rad, in [-pi, pi)
+//   32  2    status         StatusFlag bits (bits 7..15 must be 0 in version 1)
+//   34  2    overruns       u16, frames dropped since start (saturates at 65535)
+//   36  2    crc16 of bytes 0..35
+struct Measurement {
+  uint16_t seq;
+  uint64_t t_ns;
+  uint32_t frame_index;
+  SpeedQ16 v;
+  DistQ32 distance;
+  AngleQ28 heading;
+  uint16_t status;
+  uint16_t overruns;
+};
+
+// Status bits defined in protocol version 1 (lumavel/core/status.hpp).
+constexpr uint16_t kKnownStatusBits = 0x007Fu;
+
+// Writes kMeasurementSize bytes; returns the size, or 0 if cap is too small.
+size_t encode_measurement(const Measurement& m, uint8_t* buf, size_t cap);
+DecodeResult decode_measurement(const uint8_t* buf, size_t len, Measurement& out);
+
+// Feature report 0x02 (get): what the device is and how it runs.
+//   off size field
+//   0   1    id = 0x02
+//   1   1    protocol version
+//   2   3    firmware version major, minor, patch
+//   5   16   board name, NUL-padded ASCII (printable, no NUL inside)
+//   21  2    working width  (columns)
+//   23  2    working height (rows)
+//   25  2    max columns (build capacity)
+//   27  2    max rows
+//   29  1    max kernels
+//   30  1    config_status: ConfigField of the last configuration set (0 = accepted)
+//   31  1    config_source: 0 defaults, 1 loaded from the store, 2 set by the host
+//   32  2    reserved, 0
+//   34  2    crc16 of bytes 0..33
+constexpr size_t kBoardNameSize = 16;
+struct DeviceInfo {
+  uint8_t fw_major, fw_minor, fw_patch;
+  char board[kBoardNameSize + 1];  // NUL-terminated
+  uint16_t width, height;
+  uint16_t max_columns, max_rows;
+  uint8_t max_kernels;
+  uint8_t config_status;
+  uint8_t config_source;
+};
+enum ConfigSource : uint8_t { kConfigDefaults = 0, kConfigStored = 1, kConfigSetByHost = 2 };
+// Largest config_status value (ConfigField::kStore in device_config.hpp).
+constexpr uint8_t kMaxConfigStatus = 20;
+
+size_t encode_device_info(const DeviceInfo& d, uint8_t* buf, size_t cap);
+DecodeResult decode_device_info(const uint8_t* buf, size_t len, DeviceInfo& out);
+
+// Feature report 0x04 (set): asks the device to send feature report
+// `report_id` (0x02 or 0x03) as input reports 0x84. For USB stacks whose
+// application cannot answer GET_REPORT (Linux gadget HID before 6.13).
+//   0 id = 0x04, 1 version, 2 report_id, 3 reserved 0
+size_t encode_mailbox_request(uint8_t report_id, uint8_t* buf, size_t cap);
+DecodeResult decode_mailbox_request(const uint8_t* buf, size_t len, uint8_t& report_id);
+
+// Input report 0x84: bytes [offset, offset + length) of feature report `report_id`.
+//   0 id = 0x84, 1 version, 2 report_id, 3 offset, 4 length (1..56),
+//   5 total size of the feature report, 6..61 data (zero padded); 62 bytes, no CRC
+//   (the reassembled feature report carries its own).
+struct FeatureChunk {
+  uint8_t report_id;
+  uint8_t offset;
+  uint8_t length;
+  uint8_t total;
+  uint8_t data[kFeatureChunkData];
+};
+size_t encode_feature_chunk(const FeatureChunk& c, uint8_t* buf, size_t cap);
+DecodeResult decode_feature_chunk(const uint8_t* buf, size_t len, FeatureChunk& out);
+
+}  // namespace lumavel::protocol

@@ -1,0 +1,229 @@
+#include "lumavel/protocol/device_config.hpp"
+
+#include "lumavel/core/limits.hpp"
+#include "lumavel/protocol/crc.hpp"
+#include "wire.hpp"
+
+namespace lumavel::protocol {
+
+using namespace wire;
+
+namespace {
+
+constexpr int64_t kOneQ16 = int64_t{1} << fx::kPixelFrac;
+constexpr LengthQ24 kMinBaseline = 16777;      // 1 mm
+constexpr LengthQ24 kMaxBaseline = 16777216;   // 1 m
+constexpr AngleQ28 kMaxMisalignment = 93952410;  // 0.35 rad
+constexpr AngleQ28 kMinSigma = 268435;         // 0.001 rad
+constexpr AngleQ28 kMaxSigma = 536870912;      // 2 rad
+constexpr AngleQ28 kHalfPi = 421657428;        // pi/2
+constexpr ValueQ28 kMaxLowTexture = ValueQ28{1} << fx::kValueFrac;
+constexpr size_t kKernelOffset = 36;
+constexpr size_t kKernelStride = 5;
+
+bool in(int64_t v, int64_t lo, int64_t hi) { return v >= lo && v <= hi; }
+
+}  // namespace
+
+const char* to_string(ConfigField f) {
+  switch (f) {
+    case ConfigField::kOk: return "ok";
+    case ConfigField::kWidth: return "width";
+    case ConfigField::kHeight: return "height";
+    case ConfigField::kBaseline: return "baseline";
+    case ConfigField::kMisalignment: return "misalignment";
+    case ConfigField::kFocalLength: return "fu";
+    case ConfigField::kPrincipalPoint: return "cu";
+    case ConfigField::kOrientation: return "orientation";
+    case ConfigField::kNormaliserSigma: return "normaliser_sigma";
+    case ConfigField::kKernelCount: return "kernel_count";
+    case ConfigField::kKernelOrder: return "kernel_order";
+    case ConfigField::kKernelSigma: return "kernel_sigma";
+    case ConfigField::kTau: return "tau_us";
+    case ConfigField::kFramePeriod: return "frame_period_us";
+    case ConfigField::kMaxGap: return "max_gap_us";
+    case ConfigField::kGyroGap: return "gyro_gap_us";
+    case ConfigField::kLowTexture: return "low_texture";
+    case ConfigField::kSaturatedPermille: return "saturated_permille";
+    case ConfigField::kMalformed: return "malformed report";
+    case ConfigField::kEstimator: return "refused by the estimator";
+    case ConfigField::kStore: return "could not be stored";
+  }
+  return "unknown";
+}
+
+ConfigField validate(const DeviceConfig& c) {
+  if (!in(c.width, kMinColumns, kMaxColumns)) return ConfigField::kWidth;
+  if (!in(c.height, 1, kMaxRows)) return ConfigField::kHeight;
+  const int64_t h = c.baseline < 0 ? -int64_t{c.baseline} : int64_t{c.baseline};
+  if (!in(h, kMinBaseline, kMaxBaseline)) return ConfigField::kBaseline;
+  if (!in(c.misalignment, -kMaxMisalignment, kMaxMisalignment)) return ConfigField::kMisalignment;
+  for (int i = 0; i < 2; ++i) {
+    if (!in(c.fu[i], kOneQ16, 8 * kOneQ16 * c.width)) return ConfigField::kFocalLength;
+    if (!in(c.cu[i], 0, kOneQ16 * (c.width - 1))) return ConfigField::kPrincipalPoint;
+  }
+  if ((c.orientation & ~kKnownOrientationBits) != 0) return ConfigField::kOrientation;
+  if (!in(c.normaliser_sigma, kMinSigma, kMaxSigma)) return ConfigField::kNormaliserSigma;
+  const int max_count = kMaxKernels < kWireKernels ? kMaxKernels : kWireKernels;
+  if (!in(c.kernel_count, 1, max_count)) return ConfigField::kKernelCount;
+  for (int i = 0; i < kWireKernels; ++i) {
+    const KernelSetting& k = c.kernels[i];
+    if (i >= c.kernel_count) {
+      // Unused slots are zero so that a configuration has one encoding.
+      if (k.order != 0) return ConfigField::kKernelOrder;
+      if (k.sigma != 0) return ConfigField::kKernelSigma;
+      continue;
+    }
+    if (k.order > kMaxKernelOrder) return ConfigField::kKernelOrder;
+    if (!in(k.sigma, kMinSigma, kMaxSigma)) return ConfigField::kKernelSigma;
+  }
+  if (!in(c.tau_us, 1000, 60000000)) return ConfigField::kTau;
+  if (!in(c.frame_period_us, 1000, 1000000)) return ConfigField::kFramePeriod;
+  if (!in(c.max_gap_us, c.frame_period_us, 10000000)) return ConfigField::kMaxGap;
+  if (!in(c.gyro_gap_us, 100, 1000000)) return ConfigField::kGyroGap;
+  if (!in(c.low_texture, 0, kMaxLowTexture)) return ConfigField::kLowTexture;
+  if (c.saturated_permille > 1000) return ConfigField::kSaturatedPermille;
+  return ConfigField::kOk;
+}
+
+size_t encode_config(const DeviceConfig& c, uint8_t* buf, size_t cap) {
+  if (buf == nullptr || cap < kConfigSize) return 0;
+  put_u8(buf, 0, kReportConfig);
+  put_u8(buf, 1, kConfigVersion);
+  put_u16(buf, 2, c.width);
+  put_u16(buf, 4, c.height);
+  put_i32(buf, 6, c.baseline);
+  put_i32(buf, 10, c.misalignment);
+  put_i32(buf, 14, c.fu[0]);
+  put_i32(buf, 18, c.cu[0]);
+  put_i32(buf, 22, c.fu[1]);
+  put_i32(buf, 26, c.cu[1]);
+  put_u8(buf, 30, c.orientation);
+  put_i32(buf, 31, c.normaliser_sigma);
+  put_u8(buf, 35, c.kernel_count);
+  for (int i = 0; i < kWireKernels; ++i) {
+    const size_t off = kKernelOffset + kKernelStride * static_cast<size_t>(i);
+    put_u8(buf, off, c.kernels[i].order);
+    put_i32(buf, off + 1, c.kernels[i].sigma);
+  }
+  put_u32(buf, 66, c.tau_us);
+  put_u32(buf, 70, c.frame_period_us);
+  put_u32(buf, 74, c.max_gap_us);
+  put_u32(buf, 78, c.gyro_gap_us);
+  put_i32(buf, 82, c.low_texture);
+  put_u16(buf, 86, c.saturated_permille);
+  put_u16(buf, 88, crc16(buf, 88));
+  return kConfigSize;
+}
+
+namespace {
+
+ReportError check_frame(const uint8_t* buf, size_t len) {
+  if (buf == nullptr || len < kConfigSize) return ReportError::kShort;
+  if (buf[0] != kReportConfig) return ReportError::kWrongId;
+  if (buf[1] != kConfigVersion) return ReportError::kBadVersion;
+  if (crc16(buf, 88) != get_u16(buf, 88)) return ReportError::kBadCrc;
+  return ReportError::kOk;
+}
+
+DeviceConfig unpack(const uint8_t* buf) {
+  DeviceConfig c{};
+  c.width = get_u16(buf, 2);
+  c.height = get_u16(buf, 4);
+  c.baseline = get_i32(buf, 6);
+  c.misalignment = get_i32(buf, 10);
+  c.fu[0] = get_i32(buf, 14);
+  c.cu[0] = get_i32(buf, 18);
+  c.fu[1] = get_i32(buf, 22);
+  c.cu[1] = get_i32(buf, 26);
+  c.orientation = buf[30];
+  c.normaliser_sigma = get_i32(buf, 31);
+  c.kernel_count = buf[35];
+  for (int i = 0; i < kWireKernels; ++i) {
+    const size_t off = kKernelOffset + kKernelStride * static_cast<size_t>(i);
+    c.kernels[i].order = buf[off];
+    c.kernels[i].sigma = get_i32(buf, off + 1);
+  }
+  c.tau_us = get_u32(buf, 66);
+  c.frame_period_us = get_u32(buf, 70);
+  c.max_gap_us = get_u32(buf, 74);
+  c.gyro_gap_us = get_u32(buf, 78);
+  c.low_texture = get_i32(buf, 82);
+  c.saturated_permille = get_u16(buf, 86);
+  return c;
+}
+
+}  // namespace
+
+DecodeResult decode_config(const uint8_t* buf, size_t len, DeviceConfig& out) {
+  const ReportError e = check_frame(buf, len);
+  if (e != ReportError::kOk) return DecodeResult{e, ""};
+  const DeviceConfig c = unpack(buf);
+  const ConfigField f = validate(c);
+  if (f != ConfigField::kOk) return DecodeResult{ReportError::kOutOfRange, to_string(f)};
+  out = c;
+  return DecodeResult{ReportError::kOk, ""};
+}
+
+ConfigField parse_config(const uint8_t* buf, size_t len, DeviceConfig& out) {
+  if (check_frame(buf, len) != ReportError::kOk) return ConfigField::kMalformed;
+  const DeviceConfig c = unpack(buf);
+  const ConfigField f = validate(c);
+  if (f == ConfigField::kOk) out = c;
+  return f;
+}
+
+bool to_estimator_config(const DeviceConfig& c, EstimatorConfig& out) {
+  if (validate(c) != ConfigField::kOk) return false;
+  EstimatorConfig e{};
+  e.width = c.width;
+  e.height = c.height;
+  const AngleQ28 axis0 = (c.orientation & kLooksRight) ? -kHalfPi : kHalfPi;
+  const uint8_t upside[2] = {kCam0UpsideDown, kCam1UpsideDown};
+  for (int i = 0; i < 2; ++i) {
+    e.cam[i].fu = c.fu[i];
+    e.cam[i].cu = c.cu[i];
+    e.cam[i].axis_yaw = i == 0 ? axis0 : axis0 + c.misalignment;
+    e.cam[i].u_sign = (c.orientation & upside[i]) ? int8_t{1} : int8_t{-1};
+  }
+  e.baseline = c.baseline;
+  e.normaliser = KernelSpec{0, c.normaliser_sigma};
+  for (int i = 0; i < c.kernel_count; ++i) {
+    e.kernels[i] = KernelSpec{c.kernels[i].order, c.kernels[i].sigma};
+  }
+  e.kernel_count = c.kernel_count;
+  e.tau_us = c.tau_us;
+  e.frame_period_us = c.frame_period_us;
+  e.max_gap_us = c.max_gap_us;
+  e.gyro_gap_us = c.gyro_gap_us;
+  e.low_texture = c.low_texture;
+  e.saturated_permille = c.saturated_permille;
+  out = e;
+  return true;
+}
+
+DeviceConfig default_device_config() {
+  DeviceConfig c{};
+  c.width = 40;
+  c.height = 30;
+  c.baseline = 1342177;  // 0.08 m
+  c.misalignment = 0;
+  for (int i = 0; i < 2; ++i) {
+    c.fu[i] = 2270234;  // 34.64 px: 60 degrees over 40 columns
+    c.cu[i] = 1277952;  // 19.5 px: the centre of 40 columns
+  }
+  c.orientation = 0;             // looking left, upright
+  c.normaliser_sigma = 53687091;  // 0.20 rad
+  c.kernel_count = 2;
+  c.kernels[0] = KernelSetting{1, 18790482};  // first derivative, 0.07 rad
+  c.kernels[1] = KernelSetting{1, 37580964};  // first derivative, 0.14 rad
+  c.tau_us = 100000;
+  c.frame_period_us = 16667;
+  c.max_gap_us = 500000;
+  c.gyro_gap_us = 50000;
+  c.low_texture = 536871;  // 2e-3
+  c.saturated_permille = 50;
+  return c;
+}
+
+}  // namespace lumavel::protocol

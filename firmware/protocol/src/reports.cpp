@@ -1,0 +1,180 @@
+#include "lumavel/protocol/reports.hpp"
+
+#include "lumavel/protocol/crc.hpp"
+#include "wire.hpp"
+
+namespace lumavel::protocol {
+
+using namespace wire;
+
+namespace {
+
+DecodeResult fail(ReportError e, const char* field = "") { return DecodeResult{e, field}; }
+
+// Length, ID, version and (when crc) CRC checks shared by every report.
+DecodeResult check_frame(const uint8_t* buf, size_t len, uint8_t id, size_t size, bool crc) {
+  if (buf == nullptr || len < size) return fail(ReportError::kShort);
+  if (buf[0] != id) return fail(ReportError::kWrongId);
+  if (buf[1] != kProtocolVersion) return fail(ReportError::kBadVersion);
+  if (crc && crc16(buf, size - 2) != get_u16(buf, size - 2)) return fail(ReportError::kBadCrc);
+  return fail(ReportError::kOk);
+}
+
+void seal(uint8_t* buf, size_t size) { put_u16(buf, size - 2, crc16(buf, size - 2)); }
+
+}  // namespace
+
+const char* to_string(ReportError e) {
+  switch (e) {
+    case ReportError::kOk: return "ok";
+    case ReportError::kShort: return "report too short";
+    case ReportError::kWrongId: return "wrong report ID";
+    case ReportError::kBadVersion: return "unsupported protocol version";
+    case ReportError::kBadCrc: return "CRC mismatch";
+    case ReportError::kOutOfRange: return "value out of range";
+  }
+  return "unknown error";
+}
+
+size_t encode_measurement(const Measurement& m, uint8_t* buf, size_t cap) {
+  if (buf == nullptr || cap < kMeasurementSize) return 0;
+  put_u8(buf, 0, kReportMeasurement);
+  put_u8(buf, 1, kProtocolVersion);
+  put_u16(buf, 2, m.seq);
+  put_u64(buf, 4, m.t_ns);
+  put_u32(buf, 12, m.frame_index);
+  put_i32(buf, 16, m.v);
+  put_i64(buf, 20, m.distance);
+  put_i32(buf, 28, m.heading);
+  put_u16(buf, 32, m.status);
+  put_u16(buf, 34, m.overruns);
+  seal(buf, kMeasurementSize);
+  return kMeasurementSize;
+}
+
+DecodeResult decode_measurement(const uint8_t* buf, size_t len, Measurement& out) {
+  const DecodeResult r = check_frame(buf, len, kReportMeasurement, kMeasurementSize, true);
+  if (!r.ok()) return r;
+  Measurement m{};
+  m.seq = get_u16(buf, 2);
+  m.t_ns = get_u64(buf, 4);
+  m.frame_index = get_u32(buf, 12);
+  m.v = get_i32(buf, 16);
+  m.distance = get_i64(buf, 20);
+  m.heading = get_i32(buf, 28);
+  m.status = get_u16(buf, 32);
+  m.overruns = get_u16(buf, 34);
+  if (m.heading < -fx::kPiQ28 || m.heading >= fx::kPiQ28) return fail(ReportError::kOutOfRange, "heading");
+  if ((m.status & ~kKnownStatusBits) != 0) return fail(ReportError::kOutOfRange, "status");
+  out = m;
+  return r;
+}
+
+size_t encode_device_info(const DeviceInfo& d, uint8_t* buf, size_t cap) {
+  if (buf == nullptr || cap < kDeviceInfoSize) return 0;
+  for (size_t i = 0; i < kDeviceInfoSize; ++i) buf[i] = 0;
+  put_u8(buf, 0, kReportDeviceInfo);
+  put_u8(buf, 1, kProtocolVersion);
+  put_u8(buf, 2, d.fw_major);
+  put_u8(buf, 3, d.fw_minor);
+  put_u8(buf, 4, d.fw_patch);
+  for (size_t i = 0; i < kBoardNameSize && d.board[i] != '\0'; ++i) {
+    buf[5 + i] = static_cast<uint8_t>(d.board[i]);
+  }
+  put_u16(buf, 21, d.width);
+  put_u16(buf, 23, d.height);
+  put_u16(buf, 25, d.max_columns);
+  put_u16(buf, 27, d.max_rows);
+  put_u8(buf, 29, d.max_kernels);
+  put_u8(buf, 30, d.config_status);
+  put_u8(buf, 31, d.config_source);
+  seal(buf, kDeviceInfoSize);
+  return kDeviceInfoSize;
+}
+
+DecodeResult decode_device_info(const uint8_t* buf, size_t len, DeviceInfo& out) {
+  const DecodeResult r = check_frame(buf, len, kReportDeviceInfo, kDeviceInfoSize, true);
+  if (!r.ok()) return r;
+  DeviceInfo d{};
+  d.fw_major = buf[2];
+  d.fw_minor = buf[3];
+  d.fw_patch = buf[4];
+  bool ended = false;
+  for (size_t i = 0; i < kBoardNameSize; ++i) {
+    const uint8_t c = buf[5 + i];
+    if (c == 0) {
+      ended = true;
+    } else if (ended || c < 0x20 || c > 0x7E) {
+      return fail(ReportError::kOutOfRange, "board");
+    }
+    d.board[i] = static_cast<char>(c);
+  }
+  d.board[kBoardNameSize] = '\0';
+  d.width = get_u16(buf, 21);
+  d.height = get_u16(buf, 23);
+  d.max_columns = get_u16(buf, 25);
+  d.max_rows = get_u16(buf, 27);
+  d.max_kernels = buf[29];
+  d.config_status = buf[30];
+  d.config_source = buf[31];
+  if (d.max_columns == 0 || d.width > d.max_columns) return fail(ReportError::kOutOfRange, "width");
+  if (d.max_rows == 0 || d.height > d.max_rows) return fail(ReportError::kOutOfRange, "height");
+  if (d.max_kernels == 0) return fail(ReportError::kOutOfRange, "max_kernels");
+  if (d.config_status > kMaxConfigStatus) return fail(ReportError::kOutOfRange, "config_status");
+  if (d.config_source > kConfigSetByHost) return fail(ReportError::kOutOfRange, "config_source");
+  if (get_u16(buf, 32) != 0) return fail(ReportError::kOutOfRange, "reserved");
+  out = d;
+  return r;
+}
+
+size_t encode_mailbox_request(uint8_t report_id, uint8_t* buf, size_t cap) {
+  if (buf == nullptr || cap < kMailboxSize) return 0;
+  buf[0] = kReportMailbox;
+  buf[1] = kProtocolVersion;
+  buf[2] = report_id;
+  buf[3] = 0;
+  return kMailboxSize;
+}
+
+DecodeResult decode_mailbox_request(const uint8_t* buf, size_t len, uint8_t& report_id) {
+  const DecodeResult r = check_frame(buf, len, kReportMailbox, kMailboxSize, false);
+  if (!r.ok()) return r;
+  if (buf[2] != kReportDeviceInfo && buf[2] != kReportConfig) return fail(ReportError::kOutOfRange, "report_id");
+  if (buf[3] != 0) return fail(ReportError::kOutOfRange, "reserved");
+  report_id = buf[2];
+  return r;
+}
+
+size_t encode_feature_chunk(const FeatureChunk& c, uint8_t* buf, size_t cap) {
+  if (buf == nullptr || cap < kFeatureChunkSize) return 0;
+  if (c.length == 0 || c.length > kFeatureChunkData) return 0;
+  buf[0] = kReportFeatureChunk;
+  buf[1] = kProtocolVersion;
+  buf[2] = c.report_id;
+  buf[3] = c.offset;
+  buf[4] = c.length;
+  buf[5] = c.total;
+  for (size_t i = 0; i < kFeatureChunkData; ++i) buf[6 + i] = i < c.length ? c.data[i] : 0;
+  return kFeatureChunkSize;
+}
+
+DecodeResult decode_feature_chunk(const uint8_t* buf, size_t len, FeatureChunk& out) {
+  const DecodeResult r = check_frame(buf, len, kReportFeatureChunk, kFeatureChunkSize, false);
+  if (!r.ok()) return r;
+  FeatureChunk c{};
+  c.report_id = buf[2];
+  c.offset = buf[3];
+  c.length = buf[4];
+  c.total = buf[5];
+  if (c.report_id != kReportDeviceInfo && c.report_id != kReportConfig) {
+    return fail(ReportError::kOutOfRange, "report_id");
+  }
+  if (c.total == 0 || c.total > kMaxReportSize) return fail(ReportError::kOutOfRange, "total");
+  if (c.length == 0 || c.length > kFeatureChunkData) return fail(ReportError::kOutOfRange, "length");
+  if (size_t{c.offset} + c.length > c.total) return fail(ReportError::kOutOfRange, "offset");
+  for (size_t i = 0; i < kFeatureChunkData; ++i) c.data[i] = i < c.length ? buf[6 + i] : 0;
+  out = c;
+  return r;
+}
+
+}  // namespace lumavel::protocol

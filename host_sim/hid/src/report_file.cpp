@@ -1,0 +1,71 @@
+#include "lumavel/host/report_file.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <stdexcept>
+
+namespace lumavel::host {
+
+namespace {
+constexpr size_t kMagicSize = sizeof(kReportFileMagic) - 1;
+std::string why() { return std::strerror(errno); }
+}  // namespace
+
+ReportFileWriter::ReportFileWriter(const std::string& path) : f_(nullptr), path_(path) {
+  f_ = std::fopen(path.c_str(), "wb");
+  if (f_ == nullptr) throw std::runtime_error(path + ": cannot create report file: " + why());
+  if (std::fwrite(kReportFileMagic, 1, kMagicSize, f_) != kMagicSize) {
+    std::fclose(f_);
+    throw std::runtime_error(path + ": cannot write report file: " + why());
+  }
+}
+
+ReportFileWriter::~ReportFileWriter() {
+  if (f_ != nullptr) std::fclose(f_);
+}
+
+bool ReportFileWriter::write(const uint8_t* report, size_t len) {
+  if (len == 0 || len > 255) return false;
+  const uint8_t n = static_cast<uint8_t>(len);
+  return std::fwrite(&n, 1, 1, f_) == 1 && std::fwrite(report, 1, len, f_) == len;
+}
+
+bool ReportFileWriter::flush() { return std::fflush(f_) == 0; }
+
+ReportFileReader::ReportFileReader(const std::string& path) : f_(nullptr), path_(path) {
+  f_ = std::fopen(path.c_str(), "rb");
+  if (f_ == nullptr) throw std::runtime_error(path + ": cannot open report file: " + why());
+  char magic[kMagicSize];
+  if (std::fread(magic, 1, kMagicSize, f_) != kMagicSize ||
+      std::memcmp(magic, kReportFileMagic, kMagicSize) != 0) {
+    std::fclose(f_);
+    throw std::runtime_error(path + ": not a lumavel report file (no \"LMVHID1\" header)");
+  }
+}
+
+ReportFileReader::~ReportFileReader() {
+  if (f_ != nullptr) std::fclose(f_);
+}
+
+bool ReportFileReader::next(std::vector<uint8_t>& out) {
+  const long at = std::ftell(f_);
+  const int n = std::fgetc(f_);
+  if (n == EOF) {
+    if (std::ferror(f_)) throw std::runtime_error(path_ + ": read error: " + why());
+    return false;
+  }
+  ++index_;
+  offset_ = at;
+  const std::string where = path_ + ": record " + std::to_string(index_) + " at byte " +
+                            std::to_string(at);
+  if (n == 0) throw std::runtime_error(where + ": zero-length record");
+  out.resize(static_cast<size_t>(n));
+  const size_t got = std::fread(out.data(), 1, out.size(), f_);
+  if (got != out.size()) {
+    throw std::runtime_error(where + ": truncated (" + std::to_string(got) + " of " +
+                             std::to_string(n) + " bytes)");
+  }
+  return true;
+}
+
+}  // namespace lumavel::host

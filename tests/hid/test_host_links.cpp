@@ -1,0 +1,135 @@
+#include <CppUTest/TestHarness.h>
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "lumavel/host/file_config_store.hpp"
+#include "lumavel/host/hid_link.hpp"
+#include "lumavel/host/report_file.hpp"
+#include "lumavel/protocol/reports.hpp"
+
+using namespace lumavel;
+
+namespace {
+
+std::string temp_path(const char* name) {
+  return std::string("/tmp/lumavel_hid_test_") + std::to_string(::getpid()) + "_" + name;
+}
+
+bool contains(const std::string& s, const char* part) { return s.find(part) != std::string::npos; }
+
+std::string open_error(const std::string& spec) {
+  try {
+    host::open_host_link(spec);
+  } catch (const host::HidLinkError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST_GROUP(HostLinks){};
+
+TEST(HostLinks, FileLinkWritesWhatReplayReads) {
+  const std::string path = temp_path("stream.hidrep");
+  std::vector<std::vector<uint8_t>> sent;
+  {
+    auto link = host::open_host_link("file:" + path);
+    for (uint16_t i = 0; i < 5; ++i) {
+      protocol::Measurement m{};
+      m.seq = i;
+      m.t_ns = 1000u * i;
+      m.v = 65536 * i;
+      std::vector<uint8_t> r(protocol::kMeasurementSize);
+      protocol::encode_measurement(m, r.data(), r.size());
+      CHECK_TRUE(link->send_input(r.data(), r.size()));
+      sent.push_back(r);
+    }
+    link->poll_features([](void*, uint8_t, bool, uint8_t*, size_t, size_t) -> size_t { return 0; },
+                        nullptr);
+  }
+  host::ReportFileReader in(path);
+  std::vector<uint8_t> r;
+  size_t n = 0;
+  while (in.next(r)) {
+    CHECK_TRUE(n < sent.size());
+    CHECK_TRUE(r == sent[n]);
+    ++n;
+  }
+  CHECK_EQUAL(sent.size(), n);
+  std::remove(path.c_str());
+}
+
+TEST(HostLinks, TruncatedReportFileNamesRecordAndOffset) {
+  const std::string path = temp_path("cut.hidrep");
+  {
+    host::ReportFileWriter w(path);
+    const uint8_t a[3] = {1, 2, 3};
+    w.write(a, 3);
+  }
+  {
+    std::FILE* f = std::fopen(path.c_str(), "ab");
+    const uint8_t partial[3] = {10, 1, 2};  // says 10 bytes, has 2
+    std::fwrite(partial, 1, 3, f);
+    std::fclose(f);
+  }
+  host::ReportFileReader in(path);
+  std::vector<uint8_t> r;
+  CHECK_TRUE(in.next(r));
+  try {
+    in.next(r);
+    FAIL("truncated record accepted");
+  } catch (const std::runtime_error& e) {
+    const std::string m = e.what();
+    CHECK_TRUE(contains(m, "record 2"));
+    CHECK_TRUE(contains(m, "byte 12"));
+    CHECK_TRUE(contains(m, "truncated"));
+  }
+  std::remove(path.c_str());
+}
+
+TEST(HostLinks, NotAReportFile) {
+  const std::string path = temp_path("junk");
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  std::fputs("timestamp_ns,v\n", f);
+  std::fclose(f);
+  try {
+    host::ReportFileReader in(path);
+    FAIL("accepted");
+  } catch (const std::runtime_error& e) {
+    CHECK_TRUE(contains(e.what(), "not a lumavel report file"));
+  }
+  std::remove(path.c_str());
+}
+
+TEST(HostLinks, ErrorsNameTheDeviceAndSayWhatToDo) {
+  const std::string unknown = open_error("usb:foo");
+  CHECK_TRUE(contains(unknown, "usb:foo"));
+  CHECK_TRUE(contains(unknown, "hidg"));
+  const std::string uhid = open_error("uhid:/nonexistent/uhid");
+  CHECK_TRUE(contains(uhid, "/nonexistent/uhid"));
+  CHECK_TRUE(contains(uhid, "modprobe uhid"));
+  const std::string hidg = open_error("hidg:/nonexistent/hidg7");
+  CHECK_TRUE(contains(hidg, "/nonexistent/hidg7"));
+  CHECK_TRUE(contains(hidg, "configfs"));
+  const std::string file = open_error("file:/nonexistent/dir/x.hidrep");
+  CHECK_TRUE(contains(file, "/nonexistent/dir/x.hidrep"));
+  CHECK_TRUE(contains(open_error("file:"), "needs a path"));
+}
+
+TEST(HostLinks, FileConfigStoreRoundTrips) {
+  const std::string path = temp_path("store.bin");
+  host::FileConfigStore s(path);
+  uint8_t buf[8];
+  CHECK_EQUAL(0u, s.load(buf, sizeof buf));  // nothing stored yet
+  const uint8_t blob[5] = {9, 8, 7, 6, 5};
+  CHECK_TRUE(s.save(blob, sizeof blob));
+  CHECK_EQUAL(5u, s.load(buf, sizeof buf));
+  MEMCMP_EQUAL(blob, buf, 5);
+  CHECK_EQUAL(0u, s.load(buf, 4));  // larger than the caller's buffer: not ours
+  std::remove(path.c_str());
+}

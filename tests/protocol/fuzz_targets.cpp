@@ -1,0 +1,89 @@
+// libFuzzer targets for the report and configuration parsers. Built twice
+// (LUMAVEL_FUZZ_CONFIG selects the target). Besides "never crash", each
+// checks a property: whatever decodes re-encodes to the same bytes. The input
+// is also tried with its CRC repaired, so that the range checks behind the
+// CRC get fuzzed too.
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+
+#include "lumavel/protocol/crc.hpp"
+#include "lumavel/protocol/device_config.hpp"
+#include "lumavel/protocol/reports.hpp"
+
+using namespace lumavel::protocol;
+
+namespace {
+
+void require(bool ok) {
+  if (!ok) std::abort();
+}
+
+// Copies at most `size` bytes and rewrites the trailing CRC when it fits.
+size_t resealed(const uint8_t* in, size_t len, size_t size, uint8_t* out) {
+  const size_t n = len < size ? len : size;
+  std::memcpy(out, in, n);
+  if (n == size) {
+    const uint16_t c = crc16(out, size - 2);
+    out[size - 2] = static_cast<uint8_t>(c);
+    out[size - 1] = static_cast<uint8_t>(c >> 8);
+  }
+  return n;
+}
+
+#ifdef LUMAVEL_FUZZ_CONFIG
+void one(const uint8_t* data, size_t len) {
+  DeviceConfig c{};
+  if (decode_config(data, len, c).ok()) {
+    require(validate(c) == ConfigField::kOk);
+    uint8_t again[kConfigSize];
+    require(encode_config(c, again, sizeof again) == kConfigSize);
+    require(std::memcmp(again, data, kConfigSize) == 0);
+    lumavel::EstimatorConfig e{};
+    require(to_estimator_config(c, e));
+  }
+}
+void fuzz(const uint8_t* data, size_t len) {
+  one(data, len);
+  uint8_t buf[kConfigSize];
+  one(buf, resealed(data, len, kConfigSize, buf));
+}
+#else
+void one(const uint8_t* data, size_t len) {
+  uint8_t again[kMaxReportSize];
+  Measurement m{};
+  if (decode_measurement(data, len, m).ok()) {
+    require(encode_measurement(m, again, sizeof again) == kMeasurementSize);
+    require(std::memcmp(again, data, kMeasurementSize) == 0);
+  }
+  DeviceInfo d{};
+  if (decode_device_info(data, len, d).ok()) {
+    require(encode_device_info(d, again, sizeof again) == kDeviceInfoSize);
+    require(std::memcmp(again, data, kDeviceInfoSize) == 0);
+  }
+  FeatureChunk c{};
+  if (decode_feature_chunk(data, len, c).ok()) {
+    require(encode_feature_chunk(c, again, sizeof again) == kFeatureChunkSize);
+    require(std::memcmp(again, data, 6 + c.length) == 0);
+  }
+  uint8_t id = 0;
+  if (decode_mailbox_request(data, len, id).ok()) {
+    require(encode_mailbox_request(id, again, sizeof again) == kMailboxSize);
+    require(std::memcmp(again, data, kMailboxSize) == 0);
+  }
+}
+void fuzz(const uint8_t* data, size_t len) {
+  one(data, len);
+  uint8_t buf[kMaxReportSize];
+  one(buf, resealed(data, len, kMeasurementSize, buf));
+  one(buf, resealed(data, len, kDeviceInfoSize, buf));
+}
+#endif
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t len) {
+  fuzz(data, len);
+  return 0;
+}

@@ -1,0 +1,165 @@
+#include <CppUTest/TestHarness.h>
+
+#include <cstring>
+
+#include "lumavel/protocol/crc.hpp"
+#include "lumavel/protocol/device_config.hpp"
+
+using namespace lumavel::protocol;
+using lumavel::EstimatorConfig;
+
+namespace {
+
+DeviceConfig sample() {
+  DeviceConfig c = default_device_config();
+  c.width = 64;
+  c.height = 1;
+  c.baseline = -2000000;  // cam1 behind cam0
+  c.misalignment = -4000000;
+  c.fu[1] = c.fu[0] + 12345;
+  c.cu[1] = c.cu[0] - 777;
+  c.orientation = kLooksRight | kCam1UpsideDown;
+  c.kernel_count = 3;
+  c.kernels[2] = KernelSetting{3, 30000000};
+  c.tau_us = 250000;
+  c.saturated_permille = 1000;
+  return c;
+}
+
+struct Case {
+  const char* name;
+  void (*mutate)(DeviceConfig&);
+  ConfigField expected;
+};
+
+const Case kCases[] = {
+    {"width low", [](DeviceConfig& c) { c.width = lumavel::kMinColumns - 1; }, ConfigField::kWidth},
+    {"width high", [](DeviceConfig& c) { c.width = lumavel::kMaxColumns + 1; }, ConfigField::kWidth},
+    {"height 0", [](DeviceConfig& c) { c.height = 0; }, ConfigField::kHeight},
+    {"height high", [](DeviceConfig& c) { c.height = lumavel::kMaxRows + 1; }, ConfigField::kHeight},
+    {"baseline 0", [](DeviceConfig& c) { c.baseline = 0; }, ConfigField::kBaseline},
+    {"baseline tiny", [](DeviceConfig& c) { c.baseline = -16776; }, ConfigField::kBaseline},
+    {"baseline huge", [](DeviceConfig& c) { c.baseline = 16777217; }, ConfigField::kBaseline},
+    {"misalignment", [](DeviceConfig& c) { c.misalignment = -93952411; }, ConfigField::kMisalignment},
+    {"fu 0", [](DeviceConfig& c) { c.fu[1] = 0; }, ConfigField::kFocalLength},
+    {"fu huge", [](DeviceConfig& c) { c.fu[0] = 8 * 65536 * 64 + 1; }, ConfigField::kFocalLength},
+    {"cu negative", [](DeviceConfig& c) { c.cu[0] = -1; }, ConfigField::kPrincipalPoint},
+    {"cu past width", [](DeviceConfig& c) { c.cu[1] = 63 * 65536 + 1; }, ConfigField::kPrincipalPoint},
+    {"orientation", [](DeviceConfig& c) { c.orientation = 0x08; }, ConfigField::kOrientation},
+    {"normaliser", [](DeviceConfig& c) { c.normaliser_sigma = 0; }, ConfigField::kNormaliserSigma},
+    {"kernel count 0", [](DeviceConfig& c) { c.kernel_count = 0; }, ConfigField::kKernelCount},
+    {"kernel count 7", [](DeviceConfig& c) { c.kernel_count = 7; }, ConfigField::kKernelCount},
+    {"kernel order", [](DeviceConfig& c) { c.kernels[1].order = 4; }, ConfigField::kKernelOrder},
+    {"kernel sigma", [](DeviceConfig& c) { c.kernels[0].sigma = 536870913; }, ConfigField::kKernelSigma},
+    {"unused slot order", [](DeviceConfig& c) { c.kernels[5].order = 1; }, ConfigField::kKernelOrder},
+    {"unused slot sigma", [](DeviceConfig& c) { c.kernels[3].sigma = 5; }, ConfigField::kKernelSigma},
+    {"tau", [](DeviceConfig& c) { c.tau_us = 999; }, ConfigField::kTau},
+    {"frame period", [](DeviceConfig& c) { c.frame_period_us = 1000001; }, ConfigField::kFramePeriod},
+    {"max gap < period", [](DeviceConfig& c) { c.max_gap_us = c.frame_period_us - 1; }, ConfigField::kMaxGap},
+    {"gyro gap", [](DeviceConfig& c) { c.gyro_gap_us = 99; }, ConfigField::kGyroGap},
+    {"low texture", [](DeviceConfig& c) { c.low_texture = -1; }, ConfigField::kLowTexture},
+    {"saturated", [](DeviceConfig& c) { c.saturated_permille = 1001; }, ConfigField::kSaturatedPermille},
+};
+
+}  // namespace
+
+TEST_GROUP(DeviceConfig){};
+
+TEST(DeviceConfig, DefaultsAndSampleAreValid) {
+  CHECK_TRUE(ConfigField::kOk == validate(default_device_config()));
+  CHECK_TRUE(ConfigField::kOk == validate(sample()));
+}
+
+TEST(DeviceConfig, RoundTripsByteExactly) {
+  uint8_t a[kConfigSize], b[kConfigSize];
+  CHECK_EQUAL(kConfigSize, encode_config(sample(), a, sizeof a));
+  DeviceConfig d{};
+  CHECK_TRUE(decode_config(a, sizeof a, d).ok());
+  CHECK_EQUAL(kConfigSize, encode_config(d, b, sizeof b));
+  MEMCMP_EQUAL(a, b, kConfigSize);
+  CHECK_EQUAL(-2000000, d.baseline);
+  CHECK_EQUAL(3, d.kernels[2].order);
+  CHECK_EQUAL(30000000, d.kernels[2].sigma);
+}
+
+TEST(DeviceConfig, EachOutOfRangeFieldIsNamedByValidateAndDecode) {
+  for (const Case& k : kCases) {
+    DeviceConfig c = sample();
+    k.mutate(c);
+    const ConfigField f = validate(c);
+    if (f != k.expected) FAIL(k.name);
+    uint8_t buf[kConfigSize];
+    encode_config(c, buf, sizeof buf);
+    DeviceConfig out = sample();
+    out.tau_us = 4242;
+    const DecodeResult r = decode_config(buf, sizeof buf, out);
+    CHECK_TRUE(ReportError::kOutOfRange == r.error);
+    STRCMP_EQUAL(to_string(k.expected), r.field);
+    CHECK_EQUAL(4242u, out.tau_us);  // untouched on refusal
+    EstimatorConfig e{};
+    e.tau_us = 17;
+    CHECK_FALSE(to_estimator_config(c, e));
+    CHECK_EQUAL(17u, e.tau_us);
+  }
+}
+
+TEST(DeviceConfig, MalformedReportsRejected) {
+  uint8_t good[kConfigSize];
+  encode_config(sample(), good, sizeof good);
+  DeviceConfig d{};
+  for (size_t n = 0; n < kConfigSize; ++n) {
+    CHECK_TRUE(ReportError::kShort == decode_config(good, n, d).error);
+  }
+  uint8_t buf[kConfigSize];
+  std::memcpy(buf, good, sizeof buf);
+  buf[0] = kReportDeviceInfo;
+  CHECK_TRUE(ReportError::kWrongId == decode_config(buf, sizeof buf, d).error);
+  std::memcpy(buf, good, sizeof buf);
+  buf[1] = kConfigVersion + 1;
+  CHECK_TRUE(ReportError::kBadVersion == decode_config(buf, sizeof buf, d).error);
+  for (size_t bit = 16; bit < 8 * kConfigSize; ++bit) {
+    std::memcpy(buf, good, sizeof buf);
+    buf[bit / 8] = static_cast<uint8_t>(buf[bit / 8] ^ (1u << (bit % 8)));
+    CHECK_TRUE(ReportError::kBadCrc == decode_config(buf, sizeof buf, d).error);
+  }
+}
+
+TEST(DeviceConfig, MapsToEstimatorConfig) {
+  const DeviceConfig c = sample();
+  EstimatorConfig e{};
+  CHECK_TRUE(to_estimator_config(c, e));
+  CHECK_EQUAL(64, e.width);
+  CHECK_EQUAL(1, e.height);
+  CHECK_EQUAL(c.baseline, e.baseline);
+  // Looking right: cam0's axis at -pi/2, cam1's rotated by the misalignment.
+  CHECK_EQUAL(-421657428, e.cam[0].axis_yaw);
+  CHECK_EQUAL(-421657428 + c.misalignment, e.cam[1].axis_yaw);
+  CHECK_EQUAL(-1, e.cam[0].u_sign);  // upright
+  CHECK_EQUAL(1, e.cam[1].u_sign);   // upside down
+  CHECK_EQUAL(c.fu[1], e.cam[1].fu);
+  CHECK_EQUAL(c.cu[1], e.cam[1].cu);
+  CHECK_EQUAL(0, e.normaliser.order);
+  CHECK_EQUAL(c.normaliser_sigma, e.normaliser.sigma);
+  CHECK_EQUAL(3, e.kernel_count);
+  CHECK_EQUAL(3, e.kernels[2].order);
+  CHECK_EQUAL(c.kernels[2].sigma, e.kernels[2].sigma);
+  CHECK_EQUAL(c.tau_us, e.tau_us);
+  CHECK_EQUAL(c.frame_period_us, e.frame_period_us);
+  CHECK_EQUAL(c.max_gap_us, e.max_gap_us);
+  CHECK_EQUAL(c.gyro_gap_us, e.gyro_gap_us);
+  CHECK_EQUAL(c.low_texture, e.low_texture);
+  CHECK_EQUAL(c.saturated_permille, e.saturated_permille);
+}
+
+TEST(DeviceConfig, LooksLeftByDefault) {
+  EstimatorConfig e{};
+  CHECK_TRUE(to_estimator_config(default_device_config(), e));
+  CHECK_EQUAL(421657428, e.cam[0].axis_yaw);
+  CHECK_EQUAL(421657428, e.cam[1].axis_yaw);
+  CHECK_EQUAL(-1, e.cam[1].u_sign);
+}
+
+TEST(DeviceConfig, FieldsHaveNames) {
+  STRCMP_EQUAL("baseline", to_string(ConfigField::kBaseline));
+  CHECK_EQUAL(static_cast<int>(kMaxConfigStatus), static_cast<int>(ConfigField::kStore));
+}

@@ -1,0 +1,70 @@
+// `list` and `info`.
+#include <cstdio>
+#include <cstring>
+
+#include "commands.hpp"
+#include "device.hpp"
+#include "lumavel/protocol/device_config.hpp"
+#include "lumavel/protocol/reports.hpp"
+
+namespace lumavel::read {
+
+namespace proto = lumavel::protocol;
+
+bool wants_help(const std::vector<std::string>& args) {
+  for (const std::string& a : args) {
+    if (a == "-h" || a == "--help") return true;
+  }
+  return false;
+}
+
+int cmd_list(const Common& c, const std::vector<std::string>& args) {
+  if (wants_help(args)) {
+    std::printf("usage: lumavel-read [--backend hidraw|libusb] list\n"
+                "Lists lumavel devices (USB 1209:0001, vendor usage page 0xFF00), one per line:\n"
+                "PATH  VID:PID  interface  manufacturer / product / serial.\n");
+    return kExitOk;
+  }
+  if (!args.empty()) {
+    std::fprintf(stderr, "lumavel-read list: unexpected argument \"%s\"\n", args[0].c_str());
+    return kExitUsage;
+  }
+  const HidApi& api = load_hidapi(c.backend);
+  const auto found = list_devices(api);
+  for (const DeviceEntry& e : found) {
+    std::printf("%s  %04x:%04x  if %d  %s / %s / %s\n", e.path.c_str(), e.vid, e.pid,
+                e.interface_number, e.manufacturer.empty() ? "-" : e.manufacturer.c_str(),
+                e.product.empty() ? "-" : e.product.c_str(), e.serial.empty() ? "-" : e.serial.c_str());
+  }
+  if (found.empty()) {
+    std::fprintf(stderr, "no lumavel device (1209:0001) found with the %s backend\n",
+                 backend_name(c.backend));
+    return kExitNoDevice;
+  }
+  return kExitOk;
+}
+
+int cmd_info(const Common& c, const std::vector<std::string>& args) {
+  if (wants_help(args)) {
+    std::printf("usage: lumavel-read [--backend B] [--device PATH] info\n"
+                "Prints the device information report: firmware version, board, working\n"
+                "resolution, build capacities, and the outcome of the last configuration set.\n");
+    return kExitOk;
+  }
+  Device dev(load_hidapi(c.backend), c.device);
+  const auto raw = dev.get_feature(proto::kReportDeviceInfo, [](const uint8_t* b, size_t n) {
+    proto::DeviceInfo d{};
+    return proto::decode_device_info(b, n, d);
+  });
+  proto::DeviceInfo d{};
+  proto::decode_device_info(raw.data(), raw.size(), d);
+  static const char* kSource[] = {"defaults", "stored", "set by host"};
+  std::printf("device=%s\nfirmware=%u.%u.%u\nboard=%s\nresolution=%ux%u\n"
+              "max_resolution=%ux%u\nmax_kernels=%u\nconfig_source=%s\nlast_config_set=%s\n",
+              dev.path().c_str(), d.fw_major, d.fw_minor, d.fw_patch, d.board, d.width, d.height,
+              d.max_columns, d.max_rows, d.max_kernels, kSource[d.config_source],
+              proto::to_string(static_cast<proto::ConfigField>(d.config_status)));
+  return kExitOk;
+}
+
+}  // namespace lumavel::read

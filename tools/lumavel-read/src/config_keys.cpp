@@ -1,0 +1,169 @@
+#include "config_keys.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <stdexcept>
+
+namespace lumavel::read {
+
+namespace proto = lumavel::protocol;
+
+namespace {
+
+std::string num(double v) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.10g", v);
+  return b;
+}
+
+double parse_double(const std::string& key, const std::string& v) {
+  char* end = nullptr;
+  const double d = std::strtod(v.c_str(), &end);
+  if (v.empty() || *end != '\0' || !std::isfinite(d)) {
+    throw std::runtime_error(key + ": \"" + v + "\" is not a number");
+  }
+  return d;
+}
+
+long long parse_int(const std::string& key, const std::string& v, long long lo, long long hi) {
+  char* end = nullptr;
+  const long long n = std::strtoll(v.c_str(), &end, 10);
+  if (v.empty() || *end != '\0' || n < lo || n > hi) {
+    throw std::runtime_error(key + ": \"" + v + "\" is not an integer in [" + std::to_string(lo) +
+                             ", " + std::to_string(hi) + "]");
+  }
+  return n;
+}
+
+// Physical value to a signed 32-bit fixed-point number with `frac` bits.
+int32_t to_q(const std::string& key, const std::string& v, int frac) {
+  const double q = std::round(parse_double(key, v) * std::ldexp(1.0, frac));
+  if (q < -2147483648.0 || q > 2147483647.0) throw std::runtime_error(key + ": " + v + " out of range");
+  return static_cast<int32_t>(q);
+}
+
+double from_q(int32_t q, int frac) { return std::ldexp(static_cast<double>(q), -frac); }
+
+// The shortest decimal that reads back to the same fixed-point value, so that
+// `config get` prints 0.07, not 0.0700000003, and get -> set is lossless.
+std::string num_q(int32_t q, int frac) {
+  const double v = from_q(q, frac);
+  for (int digits = 1; digits < 17; ++digits) {
+    char b[64];
+    std::snprintf(b, sizeof b, "%.*g", digits, v);
+    if (std::llround(std::ldexp(std::strtod(b, nullptr), frac)) == q) return b;
+  }
+  return num(v);
+}
+
+std::string format_kernels(const proto::DeviceConfig& c) {
+  std::string s;
+  for (int i = 0; i < c.kernel_count && i < proto::kWireKernels; ++i) {
+    s += (i ? "," : "") + std::to_string(c.kernels[i].order) + ":" + num_q(c.kernels[i].sigma, 28);
+  }
+  return s;
+}
+
+void parse_kernels(proto::DeviceConfig& c, const std::string& v) {
+  proto::DeviceConfig n = c;
+  for (auto& k : n.kernels) k = proto::KernelSetting{0, 0};
+  n.kernel_count = 0;
+  size_t start = 0;
+  while (start <= v.size()) {
+    const size_t comma = v.find(',', start);
+    const std::string item = v.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    const size_t colon = item.find(':');
+    if (colon == std::string::npos || n.kernel_count >= proto::kWireKernels) {
+      throw std::runtime_error("kernels: \"" + v + "\" is not ORDER:SIGMA_RAD[,...] with at most " +
+                               std::to_string(proto::kWireKernels) + " kernels");
+    }
+    proto::KernelSetting& k = n.kernels[n.kernel_count++];
+    k.order = static_cast<uint8_t>(parse_int("kernels order", item.substr(0, colon), 0, 255));
+    k.sigma = to_q("kernels sigma", item.substr(colon + 1), 28);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  c = n;
+}
+
+}  // namespace
+
+const char* config_keys_help() {
+  return "  width, height            working resolution (columns, rows)\n"
+         "  baseline_m               h: x of cam1's optical centre minus cam0's, m (signed)\n"
+         "  misalignment_rad         yaw from cam0 to cam1, rad\n"
+         "  fu0_px cu0_px fu1_px cu1_px  intrinsics at the working resolution, px\n"
+         "  look                     left | right (side the cameras look to)\n"
+         "  cam0_upside_down, cam1_upside_down   0 | 1\n"
+         "  normaliser_sigma_rad     order-0 window, rad\n"
+         "  kernels                  ORDER:SIGMA_RAD[,ORDER:SIGMA_RAD...], e.g. 1:0.07,1:0.14\n"
+         "  tau_us                   observer time constant (gain 1/tau), us\n"
+         "  frame_period_us, max_gap_us, gyro_gap_us   timing, us\n"
+         "  low_texture              rms of F1-F0 below which V is held\n"
+         "  saturated_permille       clipped pixels that raise SATURATED, per mille\n";
+}
+
+std::string format_config(const proto::DeviceConfig& c) {
+  std::string s;
+  auto line = [&s](const char* k, const std::string& v) { s += std::string(k) + "=" + v + "\n"; };
+  line("width", std::to_string(c.width));
+  line("height", std::to_string(c.height));
+  line("baseline_m", num_q(c.baseline, 24));
+  line("misalignment_rad", num_q(c.misalignment, 28));
+  line("fu0_px", num_q(c.fu[0], 16));
+  line("cu0_px", num_q(c.cu[0], 16));
+  line("fu1_px", num_q(c.fu[1], 16));
+  line("cu1_px", num_q(c.cu[1], 16));
+  line("look", (c.orientation & proto::kLooksRight) ? "right" : "left");
+  line("cam0_upside_down", (c.orientation & proto::kCam0UpsideDown) ? "1" : "0");
+  line("cam1_upside_down", (c.orientation & proto::kCam1UpsideDown) ? "1" : "0");
+  line("normaliser_sigma_rad", num_q(c.normaliser_sigma, 28));
+  line("kernels", format_kernels(c));
+  line("tau_us", std::to_string(c.tau_us));
+  line("frame_period_us", std::to_string(c.frame_period_us));
+  line("max_gap_us", std::to_string(c.max_gap_us));
+  line("gyro_gap_us", std::to_string(c.gyro_gap_us));
+  line("low_texture", num_q(c.low_texture, 28));
+  line("saturated_permille", std::to_string(c.saturated_permille));
+  return s;
+}
+
+void apply_setting(proto::DeviceConfig& c, const std::string& kv) {
+  const size_t eq = kv.find('=');
+  if (eq == std::string::npos || eq == 0) {
+    throw std::runtime_error("\"" + kv + "\" is not KEY=VALUE (keys: `lumavel-read config --help`)");
+  }
+  const std::string k = kv.substr(0, eq), v = kv.substr(eq + 1);
+  const long long u32 = 4294967295LL;
+  auto bit = [&](uint8_t b) {
+    const bool on = parse_int(k, v, 0, 1) != 0;
+    c.orientation = static_cast<uint8_t>(on ? (c.orientation | b) : (c.orientation & ~b));
+  };
+  if (k == "width") c.width = static_cast<uint16_t>(parse_int(k, v, 0, 65535));
+  else if (k == "height") c.height = static_cast<uint16_t>(parse_int(k, v, 0, 65535));
+  else if (k == "baseline_m") c.baseline = to_q(k, v, 24);
+  else if (k == "misalignment_rad") c.misalignment = to_q(k, v, 28);
+  else if (k == "fu0_px") c.fu[0] = to_q(k, v, 16);
+  else if (k == "cu0_px") c.cu[0] = to_q(k, v, 16);
+  else if (k == "fu1_px") c.fu[1] = to_q(k, v, 16);
+  else if (k == "cu1_px") c.cu[1] = to_q(k, v, 16);
+  else if (k == "look") {
+    if (v != "left" && v != "right") throw std::runtime_error("look: use left or right, not \"" + v + "\"");
+    c.orientation = static_cast<uint8_t>(v == "right" ? (c.orientation | proto::kLooksRight)
+                                                      : (c.orientation & ~proto::kLooksRight));
+  } else if (k == "cam0_upside_down") bit(proto::kCam0UpsideDown);
+  else if (k == "cam1_upside_down") bit(proto::kCam1UpsideDown);
+  else if (k == "normaliser_sigma_rad") c.normaliser_sigma = to_q(k, v, 28);
+  else if (k == "kernels") parse_kernels(c, v);
+  else if (k == "tau_us") c.tau_us = static_cast<uint32_t>(parse_int(k, v, 0, u32));
+  else if (k == "frame_period_us") c.frame_period_us = static_cast<uint32_t>(parse_int(k, v, 0, u32));
+  else if (k == "max_gap_us") c.max_gap_us = static_cast<uint32_t>(parse_int(k, v, 0, u32));
+  else if (k == "gyro_gap_us") c.gyro_gap_us = static_cast<uint32_t>(parse_int(k, v, 0, u32));
+  else if (k == "low_texture") c.low_texture = to_q(k, v, 28);
+  else if (k == "saturated_permille") c.saturated_permille = static_cast<uint16_t>(parse_int(k, v, 0, 65535));
+  else throw std::runtime_error("unknown configuration key \"" + k + "\"; keys:\n" + config_keys_help());
+}
+
+}  // namespace lumavel::read

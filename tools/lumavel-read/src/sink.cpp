@@ -1,0 +1,63 @@
+#include "sink.hpp"
+
+#include "csv.hpp"
+
+namespace lumavel::read {
+
+namespace proto = lumavel::protocol;
+using Clock = std::chrono::steady_clock;
+
+Sink::Sink(std::FILE* csv, bool live) : csv_(csv), live_(live) {
+  if (csv_ != nullptr) std::fprintf(csv_, "%s\n", csv_header().c_str());
+}
+
+Sink::~Sink() { finish(); }
+
+void Sink::finish() {
+  if (csv_ != nullptr) std::fflush(csv_);
+  if (live_) {
+    std::fputc('\n', stdout);
+    live_ = false;
+  }
+}
+
+bool Sink::take(const uint8_t* buf, size_t len, const std::string& where) {
+  if (len == 0) return false;
+  if (buf[0] == proto::kReportFeatureChunk) return false;  // a late mailbox reply: not data
+  proto::Measurement m{};
+  const proto::DecodeResult r = proto::decode_measurement(buf, len, m);
+  if (!r.ok()) {
+    ++malformed_;
+    std::fprintf(stderr, "%smalformed report %s (id 0x%02x, %zu bytes): %s%s%s\n",
+                 live_ ? "\n" : "", where.c_str(), buf[0], len, proto::to_string(r.error),
+                 *r.field ? ": " : "", r.field);
+    return false;
+  }
+  if (have_seq_ && m.seq != next_seq_) {
+    const unsigned gap = static_cast<uint16_t>(m.seq - next_seq_);
+    lost_ += gap;
+    std::fprintf(stderr, "%slost %u report(s) before seq %u (host too slow, or reconnect)\n",
+                 live_ ? "\n" : "", gap, unsigned{m.seq});
+  }
+  have_seq_ = true;
+  next_seq_ = static_cast<uint16_t>(m.seq + 1);
+  ++count_;
+  if (csv_ != nullptr) std::fprintf(csv_, "%s\n", csv_row(m).c_str());
+  if (live_) draw(m);
+  return true;
+}
+
+void Sink::draw(const proto::Measurement& m) {
+  const auto now = Clock::now();
+  window_.push_back(now);
+  while (!window_.empty() && now - window_.front() > std::chrono::seconds(1)) window_.pop_front();
+  if (now - last_draw_ < std::chrono::milliseconds(100)) return;
+  last_draw_ = now;
+  std::fprintf(stdout, "\r%7.1f Hz  V %+9.4f m/s  s %11.4f m  heading %+7.4f rad  %-12s  lost %llu  bad %llu\x1b[K",
+               static_cast<double>(window_.size()), v_mps(m), distance_m(m), heading_rad(m),
+               status_names(m.status).c_str(), static_cast<unsigned long long>(lost_),
+               static_cast<unsigned long long>(malformed_));
+  std::fflush(stdout);
+}
+
+}  // namespace lumavel::read

@@ -1,0 +1,39 @@
+// Where decoded input reports go: CSV (stdout or file), the live terminal
+// line, and the bookkeeping of lost (sequence gaps) and malformed reports.
+#pragma once
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <deque>
+#include <string>
+
+#include "lumavel/protocol/reports.hpp"
+
+namespace lumavel::read {
+
+class Sink {
+ public:
+  // csv may be null (live view only); live draws on stderr... on the terminal.
+  Sink(std::FILE* csv, bool live);
+  ~Sink();
+  // Decodes one input report; `where` names it in messages. True if it was a measurement.
+  bool take(const uint8_t* buf, size_t len, const std::string& where);
+  void restart_sequence() { have_seq_ = false; }
+  void finish();
+  uint64_t measurements() const { return count_; }
+  uint64_t malformed() const { return malformed_; }
+  uint64_t lost() const { return lost_; }
+
+ private:
+  void draw(const protocol::Measurement& m);
+
+  std::FILE* csv_;
+  bool live_;
+  bool have_seq_ = false;
+  uint16_t next_seq_ = 0;
+  uint64_t count_ = 0, malformed_ = 0, lost_ = 0;
+  std::deque<std::chrono::steady_clock::time_point> window_;
+  std::chrono::steady_clock::time_point last_draw_{};
+};
+
+}  // namespace lumavel::read
