@@ -1,0 +1,60 @@
+// hal::StereoCamera over a recording: delivers the frame pairs in order,
+// binned to the working resolution with lumavel::bin_area, like a board driver
+// bins its sensor. Frames are decoded ahead on a small thread pool so a run is
+// limited by the estimator, not by PNG decoding.
+#pragma once
+#include <condition_variable>
+#include <cstdint>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "lumavel/hal/camera.hpp"
+#include "lumavel/host/recording.hpp"
+
+namespace lumavel::host {
+
+class FileStereoCamera : public hal::StereoCamera {
+ public:
+  // `rec` must outlive the camera. Throws RecordingError when the recording's
+  // frames cannot be binned to width x height.
+  FileStereoCamera(const Recording& rec, int width, int height, int threads = 2, int lookahead = 16);
+  ~FileStereoCamera() override;
+  FileStereoCamera(const FileStereoCamera&) = delete;
+  FileStereoCamera& operator=(const FileStereoCamera&) = delete;
+
+  uint16_t width() const override { return width_; }
+  uint16_t height() const override { return height_; }
+  // kOk with the next pair; kEnd after the last; kError for a bad frame
+  // (wrong size or depth, truncated, corrupt): error() names file and frame.
+  hal::CaptureStatus capture(hal::StereoImage& out) override;
+
+  const std::string& error() const { return error_; }
+  size_t frames_delivered() const { return next_out_; }
+  size_t frame_count() const { return rec_.frames.size(); }
+
+ private:
+  struct Slot {
+    std::vector<uint8_t> px[2];
+    size_t index = 0;
+    bool ready = false;
+    std::string error;
+  };
+  void worker();
+  void decode_into(size_t index, Slot& slot) const;
+
+  const Recording& rec_;
+  uint16_t width_, height_;
+  std::vector<Slot> slots_;
+  std::vector<std::thread> threads_;
+  std::mutex mu_;
+  std::condition_variable slot_ready_;  // a worker filled a slot
+  std::condition_variable slot_free_;   // the consumer released a slot
+  size_t next_job_ = 0;                 // next frame index a worker takes
+  size_t next_out_ = 0;                 // next frame index capture() returns
+  bool stop_ = false;
+  std::string error_;
+};
+
+}  // namespace lumavel::host

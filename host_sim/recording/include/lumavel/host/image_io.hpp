@@ -1,0 +1,34 @@
+// Grayscale image files of a recording: 8-bit grayscale PNG (libpng) and
+// binary PGM (P5, maxval 255). Anything else is refused with a RecordingError
+// naming the file, so a recording never yields a silently wrong frame.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "lumavel/host/recording_error.hpp"
+
+namespace lumavel::host {
+
+struct GrayImage {
+  int width = 0;
+  int height = 0;
+  std::vector<uint8_t> px;  // width * height bytes, row-major, no padding
+};
+
+// Reads an 8-bit grayscale PNG or a binary PGM (P5, maxval 255), chosen by the
+// file's signature, not its name. Colour, alpha, palette, 16-bit or sub-byte
+// depth, truncated or corrupt files throw RecordingError naming `path`.
+GrayImage read_gray_image(const std::string& path);
+
+// Same, from bytes already in memory; `name` is used in error messages.
+GrayImage decode_gray_image(const uint8_t* data, size_t size, const std::string& name);
+
+// Writes an 8-bit grayscale PNG. Favours speed (zlib level 1): the renderer
+// writes thousands of frames. Throws RecordingError naming `path` on failure.
+void write_png_gray(const std::string& path, const uint8_t* px, int w, int h);
+
+// Writes a binary PGM (P5, maxval 255). Throws RecordingError on failure.
+void write_pgm(const std::string& path, const uint8_t* px, int w, int h);
+
+}  // namespace lumavel::host

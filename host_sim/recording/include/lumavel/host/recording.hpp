@@ -1,0 +1,62 @@
+// A recording in the EuRoC/ASL layout (the recording-format contract),
+// loaded and validated in one go: everything that can be checked without
+// decoding every frame is checked here; frames are checked as they are decoded.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "lumavel/host/recording_error.hpp"
+#include "lumavel/host/sensor_yaml.hpp"
+
+namespace lumavel::host {
+
+struct FramePairEntry {
+  uint64_t t_ns = 0;
+  std::string path[2];  // image files of cam0, cam1
+};
+
+struct ImuSample {
+  uint64_t t_ns = 0;
+  double w[3] = {0, 0, 0};  // w_RS_S, rad/s, sensor frame
+  double a[3] = {0, 0, 0};  // a_RS_S, m/s^2, sensor frame
+};
+
+struct GroundTruthSample {
+  uint64_t t_ns = 0;
+  double p[3] = {0, 0, 0};     // p_RS_R, m
+  double q[4] = {1, 0, 0, 0};  // q_RS (w, x, y, z), body to world
+  double v[3] = {0, 0, 0};     // v_RS_R, m/s, world frame
+  double bw[3] = {0, 0, 0};    // gyro bias
+  double ba[3] = {0, 0, 0};    // accelerometer bias
+};
+
+// Gaps are not errors: they are counted here and reported by the tools.
+struct GapReport {
+  int frame_gaps = 0;          // intervals longer than 1.5 frame periods
+  long frames_missing = 0;     // estimated dropped pairs in those intervals
+  double longest_frame_gap_s = 0;
+  int gyro_holes = 0;          // gyro intervals longer than 2.5 nominal periods
+  double longest_gyro_hole_s = 0;
+};
+
+struct Recording {
+  std::string root;            // the folder holding cam0/, cam1/, imu0/
+  CameraSensor cam[2];
+  ImuSensor imu;
+  std::vector<FramePairEntry> frames;
+  std::vector<ImuSample> imu_samples;
+  std::vector<GroundTruthSample> groundtruth;  // empty when absent
+  double frame_period_s = 0;   // median cam0 interval (1 / rate_hz for one frame)
+  double imu_period_s = 0;     // median imu interval
+  GapReport gaps;
+};
+
+// `dir` is REC or REC/mav0. Throws RecordingError naming the file and the
+// line or frame of the first problem.
+Recording load_recording(const std::string& dir);
+
+// Yaw rate about body z of one imu sample: (R_BS_imu * w_S).z, rad/s.
+double body_yaw_rate(const ImuSensor& imu, const ImuSample& s);
+
+}  // namespace lumavel::host

@@ -1,0 +1,34 @@
+// File names and data.csv column names of the EuRoC/ASL layout, shared by the
+// reader and the writer so the two cannot drift apart.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace lumavel::host::layout {
+
+inline const char* const kCamDir[2] = {"cam0", "cam1"};
+inline const char* const kImuDir = "imu0";
+inline const char* const kGroundTruthDir = "state_groundtruth_estimate0";
+
+// Header columns after "#timestamp [ns]". Functions, not globals, so that
+// code running during static initialisation sees them filled.
+inline const std::vector<std::string>& cam_columns() {
+  static const std::vector<std::string> v = {"filename"};
+  return v;
+}
+inline const std::vector<std::string>& imu_columns() {
+  static const std::vector<std::string> v = {
+    "w_RS_S_x [rad s^-1]", "w_RS_S_y [rad s^-1]", "w_RS_S_z [rad s^-1]",
+    "a_RS_S_x [m s^-2]",   "a_RS_S_y [m s^-2]",   "a_RS_S_z [m s^-2]"};
+  return v;
+}
+inline const std::vector<std::string>& groundtruth_columns() {
+  static const std::vector<std::string> v = {
+    "p_RS_R_x [m]",          "p_RS_R_y [m]",          "p_RS_R_z [m]",          "q_RS_w []",
+    "q_RS_x []",             "q_RS_y []",             "q_RS_z []",             "v_RS_R_x [m s^-1]",
+    "v_RS_R_y [m s^-1]",     "v_RS_R_z [m s^-1]",     "b_w_RS_S_x [rad s^-1]", "b_w_RS_S_y [rad s^-1]",
+    "b_w_RS_S_z [rad s^-1]", "b_a_RS_S_x [m s^-2]",   "b_a_RS_S_y [m s^-2]",   "b_a_RS_S_z [m s^-2]"};
+  return v;
+}
+
+}  // namespace lumavel::host::layout

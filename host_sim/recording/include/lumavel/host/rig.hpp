@@ -1,0 +1,27 @@
+// Rig geometry from the two camera sensor.yaml files: the estimator settings
+// for a working resolution (intrinsics scaled, optical-axis yaw, image
+// orientation, baseline, frame period, gyro gap).
+#pragma once
+#include "lumavel/core/limits.hpp"
+#include "lumavel/host/recording.hpp"
+#include "lumavel/host/settings.hpp"
+
+namespace lumavel::host {
+
+struct WorkingSize {
+  int width = 40;
+  int height = 30;  // forced to 1 for line-scan input (sensor height 1)
+};
+
+// Working resolution limits: those of the firmware core (limits.hpp).
+constexpr int kMinWorkWidth = kMinColumns, kMaxWorkWidth = kMaxColumns, kMaxWorkHeight = kMaxRows;
+
+// Camera model of one camera at the working width. Throws RecordingError
+// naming the sensor.yaml when the optical axis is not horizontal.
+CameraModel derive_camera(const CameraSensor& c, int work_width, const std::string& yaml_path);
+
+// Full settings; throws RecordingError for a working size the sensors cannot
+// be binned to, or for cameras that do not share one resolution.
+EstimatorSettings derive_settings(const Recording& rec, WorkingSize size);
+
+}  // namespace lumavel::host

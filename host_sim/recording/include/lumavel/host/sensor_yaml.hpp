@@ -1,0 +1,40 @@
+// EuRoC/ASL sensor.yaml files (camera and imu), read with yaml-cpp and written
+// with the exact EuRoC keys. Errors name the file and the line.
+#pragma once
+#include <array>
+#include <string>
+#include <vector>
+
+namespace lumavel::host {
+
+// 4x4 row-major pose of a sensor in the body frame: p_B = T_BS * p_S.
+using Pose = std::array<double, 16>;
+Pose identity_pose();
+
+struct CameraSensor {
+  double rate_hz = 0;
+  int width = 0, height = 0;           // resolution: [width, height]
+  double fu = 0, fv = 0, cu = 0, cv = 0;  // intrinsics, pixels, pixel 0 centre = 0
+  std::string distortion_model = "radial-tangential";
+  std::vector<double> distortion;      // [k1, k2, p1, p2], kept for lens models
+  Pose T_BS = identity_pose();
+  double exposure_s = -1;              // optional; < 0 when absent
+  std::string comment;                 // optional
+};
+
+struct ImuSensor {
+  double rate_hz = 0;
+  Pose T_BS = identity_pose();
+  double gyroscope_noise_density = -1;  // optional; < 0 when absent
+  double gyroscope_random_walk = -1;    // optional; < 0 when absent
+  std::string comment;
+};
+
+// Throw RecordingError naming `path` (and the line when the problem has one).
+CameraSensor read_camera_yaml(const std::string& path);
+ImuSensor read_imu_yaml(const std::string& path);
+
+void write_camera_yaml(const std::string& path, const CameraSensor& c);
+void write_imu_yaml(const std::string& path, const ImuSensor& s);
+
+}  // namespace lumavel::host

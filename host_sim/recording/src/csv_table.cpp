@@ -1,0 +1,122 @@
+#include "lumavel/host/csv_table.hpp"
+
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+
+#include "lumavel/host/recording_error.hpp"
+
+namespace lumavel::host {
+namespace {
+
+std::string trim(const std::string& s) {
+  size_t b = 0, e = s.size();
+  while (b < e && (s[b] == ' ' || s[b] == '\t' || s[b] == '\r')) ++b;
+  while (e > b && (s[e - 1] == ' ' || s[e - 1] == '\t' || s[e - 1] == '\r')) --e;
+  return s.substr(b, e - b);
+}
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> out;
+  size_t start = 0;
+  for (;;) {
+    const size_t comma = line.find(',', start);
+    out.push_back(trim(line.substr(start, comma == std::string::npos ? std::string::npos : comma - start)));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return out;
+}
+
+std::string join(const std::vector<std::string>& v) {
+  std::string s;
+  for (size_t i = 0; i < v.size(); ++i) s += (i ? "," : "") + v[i];
+  return s;
+}
+
+}  // namespace
+
+double parse_finite(const std::string& text, const std::string& path, long line, const std::string& column) {
+  if (text.empty()) throw recording_error_at(path, line, "column '" + column + "' is empty");
+  char* end = nullptr;
+  errno = 0;
+  const double v = std::strtod(text.c_str(), &end);
+  if (end == text.c_str() || *end != '\0')
+    throw recording_error_at(path, line, "column '" + column + "': '" + text + "' is not a number");
+  if (!std::isfinite(v))
+    throw recording_error_at(path, line, "column '" + column + "': value '" + text + "' is not finite");
+  return v;
+}
+
+std::string format_double(double v) {
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general);
+  return std::string(buf, r.ptr);
+}
+
+void for_each_csv_row(const std::string& path, const std::vector<std::string>& columns,
+                      const std::function<void(const CsvRow&)>& on_row) {
+  std::ifstream in(path);
+  if (!in) throw recording_error_in(path, std::string("cannot open: ") + std::strerror(errno));
+  std::string text;
+  if (!std::getline(in, text)) throw recording_error_at(path, 1, "empty file: missing header line");
+  if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);  // UTF-8 byte order mark
+  const std::vector<std::string> header = split(trim(text));
+  if (header.empty() || header[0].empty() || header[0][0] != '#')
+    throw recording_error_at(path, 1,
+                             "missing header line: expected '#timestamp [ns]," + join(columns) + "'");
+  if (header[0] != "#timestamp [ns]" && header[0] != "#timestamp")
+    throw recording_error_at(path, 1, "first column is '" + header[0] + "', expected '#timestamp [ns]'");
+  for (size_t i = 0; i < columns.size(); ++i) {
+    if (i + 1 >= header.size())
+      throw recording_error_at(path, 1, "missing column '" + columns[i] + "' in the header");
+    if (header[i + 1] != columns[i])
+      throw recording_error_at(path, 1,
+                               "header column " + std::to_string(i + 1) + " is '" + header[i + 1] +
+                                   "', expected '" + columns[i] + "'");
+  }
+  if (header.size() > columns.size() + 1)
+    throw recording_error_at(path, 1, "unexpected extra column '" + header[columns.size() + 1] + "' in the header");
+
+  CsvRow row;
+  bool any = false;
+  uint64_t prev_t = 0;
+  long prev_line = 0;
+  long line = 1;
+  while (std::getline(in, text)) {
+    ++line;
+    const std::string t = trim(text);
+    if (t.empty()) continue;  // blank lines (a trailing newline) carry nothing
+    row.line = line;
+    row.fields = split(t);
+    if (row.fields.size() != columns.size() + 1)
+      throw recording_error_at(path, line,
+                               "expected " + std::to_string(columns.size() + 1) + " columns, found " +
+                                   std::to_string(row.fields.size()));
+    const std::string& ts = row.fields[0];
+    const auto r = std::from_chars(ts.data(), ts.data() + ts.size(), row.t_ns);
+    if (ts.empty() || r.ec != std::errc() || r.ptr != ts.data() + ts.size())
+      throw recording_error_at(path, line, "timestamp '" + ts + "' is not an integer number of nanoseconds");
+    if (any && row.t_ns <= prev_t)
+      throw recording_error_at(path, line,
+                               "timestamp " + ts + " is not after the previous one (" + std::to_string(prev_t) +
+                                   ", line " + std::to_string(prev_line) + ")");
+    any = true;
+    prev_t = row.t_ns;
+    prev_line = line;
+    row.fields.erase(row.fields.begin());
+    on_row(row);
+  }
+  if (in.bad()) throw recording_error_in(path, "read error");
+}
+
+std::vector<CsvRow> read_csv_table(const std::string& path, const std::vector<std::string>& columns) {
+  std::vector<CsvRow> rows;
+  for_each_csv_row(path, columns, [&](const CsvRow& r) { rows.push_back(r); });
+  return rows;
+}
+
+}  // namespace lumavel::host

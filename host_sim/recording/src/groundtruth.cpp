@@ -1,0 +1,38 @@
+#include "lumavel/host/groundtruth.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace lumavel::host {
+
+double body_forward_velocity(const GroundTruthSample& g) {
+  const double n = std::sqrt(g.q[0] * g.q[0] + g.q[1] * g.q[1] + g.q[2] * g.q[2] + g.q[3] * g.q[3]);
+  const double w = g.q[0] / n, x = g.q[1] / n, y = g.q[2] / n, z = g.q[3] / n;
+  // x of R(q)^T v: the first column of R(q) dotted with v (body x axis in world).
+  const double bx[3] = {1 - 2 * (y * y + z * z), 2 * (x * y + w * z), 2 * (x * z - w * y)};
+  return bx[0] * g.v[0] + bx[1] * g.v[1] + bx[2] * g.v[2];
+}
+
+std::vector<double> true_forward_velocity(const std::vector<GroundTruthSample>& gt,
+                                          const std::vector<uint64_t>& t_ns) {
+  std::vector<double> out(t_ns.size(), std::numeric_limits<double>::quiet_NaN());
+  if (gt.empty()) return out;
+  size_t j = 0;
+  for (size_t i = 0; i < t_ns.size(); ++i) {
+    const uint64_t t = t_ns[i];
+    if (t < gt.front().t_ns || t > gt.back().t_ns) continue;
+    while (j + 1 < gt.size() && gt[j + 1].t_ns < t) ++j;
+    if (gt[j].t_ns == t || j + 1 == gt.size()) {
+      out[i] = body_forward_velocity(gt[j]);
+      continue;
+    }
+    const GroundTruthSample& a = gt[j];
+    const GroundTruthSample& b = gt[j + 1];
+    const double f = static_cast<double>(t - a.t_ns) / static_cast<double>(b.t_ns - a.t_ns);
+    out[i] = (1 - f) * body_forward_velocity(a) + f * body_forward_velocity(b);
+  }
+  return out;
+}
+
+}  // namespace lumavel::host

@@ -1,0 +1,248 @@
+// PNG through libpng (classic API, so that colour/16-bit files are refused
+// rather than converted); PGM through a small strict parser.
+#include "lumavel/host/image_io.hpp"
+
+#include <png.h>
+
+#include <cerrno>
+#include <csetjmp>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+
+namespace lumavel::host {
+namespace {
+
+constexpr int kMaxSide = 16384;  // refuses absurd headers before allocating
+
+struct FileCloser {
+  void operator()(std::FILE* f) const { std::fclose(f); }
+};
+using FilePtr = std::unique_ptr<std::FILE, FileCloser>;
+
+std::vector<uint8_t> read_whole_file(const std::string& path) {
+  FilePtr f(std::fopen(path.c_str(), "rb"));
+  if (!f) throw recording_error_in(path, std::string("cannot open image: ") + std::strerror(errno));
+  std::vector<uint8_t> bytes;
+  if (std::fseek(f.get(), 0, SEEK_END) == 0) {
+    const long n = std::ftell(f.get());
+    if (n > 0) bytes.reserve(static_cast<size_t>(n));
+    std::fseek(f.get(), 0, SEEK_SET);
+  }
+  uint8_t buf[65536];
+  size_t got;
+  while ((got = std::fread(buf, 1, sizeof buf, f.get())) > 0) bytes.insert(bytes.end(), buf, buf + got);
+  if (std::ferror(f.get())) throw recording_error_in(path, "read error");
+  return bytes;
+}
+
+// ---- PNG decode ------------------------------------------------------------
+
+struct PngSource {
+  const uint8_t* data;
+  size_t size;
+  size_t pos;
+  char message[256];
+  std::vector<png_bytep> rows;  // lives here (address escapes) so it survives longjmp
+};
+
+void png_fail(png_structp png, png_const_charp msg) {
+  auto* src = static_cast<PngSource*>(png_get_error_ptr(png));
+  std::snprintf(src->message, sizeof src->message, "%s", msg);
+  png_longjmp(png, 1);
+}
+
+void png_quiet_warning(png_structp, png_const_charp) {}
+
+void png_read_mem(png_structp png, png_bytep out, png_size_t n) {
+  auto* src = static_cast<PngSource*>(png_get_io_ptr(png));
+  if (n > src->size - src->pos) png_error(png, "truncated file (unexpected end of data)");
+  std::memcpy(out, src->data + src->pos, n);
+  src->pos += n;
+}
+
+// Returns an empty string on success, the problem otherwise. Only plain data
+// lives in this frame across setjmp, as longjmp requires.
+std::string decode_png(const uint8_t* data, size_t size, GrayImage& img) {
+  PngSource src{data, size, 0, {0}, {}};
+  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &src, png_fail, png_quiet_warning);
+  if (!png) return "out of memory";
+  png_infop info = png_create_info_struct(png);
+  if (!info) {
+    png_destroy_read_struct(&png, nullptr, nullptr);
+    return "out of memory";
+  }
+  if (setjmp(png_jmpbuf(png))) {
+    png_destroy_read_struct(&png, &info, nullptr);
+    return std::string("corrupt PNG: ") + src.message;
+  }
+  png_set_user_limits(png, kMaxSide, kMaxSide);
+#ifdef PNG_IGNORE_ADLER32
+  // Every chunk's CRC32 already covers the compressed data; zlib's Adler-32 on
+  // top of it cost ~6% of a 640x480 run.
+  png_set_option(png, PNG_IGNORE_ADLER32, PNG_OPTION_ON);
+#endif
+  png_set_read_fn(png, &src, png_read_mem);
+  png_read_info(png, info);
+  const png_uint_32 w = png_get_image_width(png, info);
+  const png_uint_32 h = png_get_image_height(png, info);
+  const int depth = png_get_bit_depth(png, info);
+  const int type = png_get_color_type(png, info);
+  char problem[256] = {0};
+  if (type != PNG_COLOR_TYPE_GRAY) {
+    std::snprintf(problem, sizeof problem, "not a grayscale image (PNG colour type %d%s)", type,
+                  type == PNG_COLOR_TYPE_PALETTE ? ", palette"
+                  : (type & PNG_COLOR_MASK_COLOR) ? ", colour"
+                                                   : ", with alpha");
+  } else if (depth != 8) {
+    std::snprintf(problem, sizeof problem, "wrong depth: %d-bit grayscale, need 8-bit", depth);
+  }
+  if (problem[0]) {
+    png_destroy_read_struct(&png, &info, nullptr);
+    return problem;
+  }
+  png_set_interlace_handling(png);
+  png_read_update_info(png, info);
+  img.width = static_cast<int>(w);
+  img.height = static_cast<int>(h);
+  img.px.resize(static_cast<size_t>(w) * h);
+  src.rows.resize(h);
+  for (png_uint_32 y = 0; y < h; ++y) src.rows[y] = img.px.data() + static_cast<size_t>(y) * w;
+  png_read_image(png, src.rows.data());
+  png_read_end(png, nullptr);  // checks the trailing chunks: catches truncation after IDAT
+  png_destroy_read_struct(&png, &info, nullptr);
+  return {};
+}
+
+// ---- PGM decode ------------------------------------------------------------
+
+// Reads one header integer, skipping whitespace and '#' comments.
+bool pgm_int(const uint8_t* d, size_t n, size_t& pos, long& value) {
+  for (;;) {
+    while (pos < n && (d[pos] == ' ' || d[pos] == '\t' || d[pos] == '\r' || d[pos] == '\n')) ++pos;
+    if (pos < n && d[pos] == '#') {
+      while (pos < n && d[pos] != '\n') ++pos;
+      continue;
+    }
+    break;
+  }
+  if (pos >= n || d[pos] < '0' || d[pos] > '9') return false;
+  value = 0;
+  while (pos < n && d[pos] >= '0' && d[pos] <= '9') {
+    value = value * 10 + (d[pos] - '0');
+    if (value > 1000000) return false;
+    ++pos;
+  }
+  return true;
+}
+
+std::string decode_pgm(const uint8_t* d, size_t n, GrayImage& img) {
+  size_t pos = 2;
+  long w = 0, h = 0, maxval = 0;
+  if (!pgm_int(d, n, pos, w) || !pgm_int(d, n, pos, h) || !pgm_int(d, n, pos, maxval))
+    return "corrupt PGM header";
+  if (pos >= n || !(d[pos] == ' ' || d[pos] == '\t' || d[pos] == '\r' || d[pos] == '\n'))
+    return "corrupt PGM header";
+  ++pos;  // exactly one whitespace byte before the raster
+  if (w <= 0 || h <= 0 || w > kMaxSide || h > kMaxSide) return "PGM size out of range";
+  if (maxval != 255) return "wrong depth: PGM maxval " + std::to_string(maxval) + ", need 255 (8-bit)";
+  const size_t need = static_cast<size_t>(w) * static_cast<size_t>(h);
+  if (n - pos < need)
+    return "truncated PGM: " + std::to_string(n - pos) + " of " + std::to_string(need) + " pixel bytes";
+  if (n - pos > need) return "PGM has " + std::to_string(n - pos - need) + " bytes after the raster";
+  img.width = static_cast<int>(w);
+  img.height = static_cast<int>(h);
+  img.px.assign(d + pos, d + pos + need);
+  return {};
+}
+
+// ---- writers ----------------------------------------------------------------
+
+struct PngSink {
+  char message[256];
+};
+
+void png_sink_fail(png_structp png, png_const_charp msg) {
+  auto* s = static_cast<PngSink*>(png_get_error_ptr(png));
+  std::snprintf(s->message, sizeof s->message, "%s", msg);
+  png_longjmp(png, 1);
+}
+
+std::string encode_png(std::FILE* f, const uint8_t* px, int w, int h) {
+  PngSink sink{{0}};
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &sink, png_sink_fail, png_quiet_warning);
+  if (!png) return "out of memory";
+  png_infop info = png_create_info_struct(png);
+  if (!info) {
+    png_destroy_write_struct(&png, nullptr);
+    return "out of memory";
+  }
+  if (setjmp(png_jmpbuf(png))) {
+    png_destroy_write_struct(&png, &info);
+    return std::string("PNG encoder: ") + sink.message;
+  }
+  png_init_io(png, f);
+  png_set_compression_level(png, 1);
+  // "Up" suits sideways views (texture varies along u, little along v): smaller
+  // files, and no slower to decode than "Sub" or no filter (measured on renders).
+  png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_UP);
+  png_set_IHDR(png, info, static_cast<png_uint_32>(w), static_cast<png_uint_32>(h), 8, PNG_COLOR_TYPE_GRAY,
+               PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_BASE, PNG_FILTER_TYPE_BASE);
+  png_write_info(png, info);
+  for (int y = 0; y < h; ++y) png_write_row(png, px + static_cast<size_t>(y) * static_cast<size_t>(w));
+  png_write_end(png, nullptr);
+  png_destroy_write_struct(&png, &info);
+  return {};
+}
+
+void check_size(const std::string& path, int w, int h) {
+  if (w <= 0 || h <= 0 || w > kMaxSide || h > kMaxSide)
+    throw recording_error_in(path, "cannot write a " + std::to_string(w) + "x" + std::to_string(h) + " image");
+}
+
+}  // namespace
+
+GrayImage decode_gray_image(const uint8_t* data, size_t size, const std::string& name) {
+  GrayImage img;
+  std::string problem;
+  static const uint8_t kPngSig[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  if (size >= 8 && std::memcmp(data, kPngSig, 8) == 0) {
+    problem = decode_png(data, size, img);
+  } else if (size >= 2 && data[0] == 'P' && data[1] == '5') {
+    problem = decode_pgm(data, size, img);
+  } else if (size >= 2 && data[0] == 'P' && data[1] >= '1' && data[1] <= '7') {
+    problem = std::string("unsupported netpbm type P") + static_cast<char>(data[1]) +
+              " (need binary PGM, P5)";
+  } else if (size == 0) {
+    problem = "empty file";
+  } else {
+    problem = "not a PNG or binary PGM file";
+  }
+  if (!problem.empty()) throw recording_error_in(name, problem);
+  return img;
+}
+
+GrayImage read_gray_image(const std::string& path) {
+  const std::vector<uint8_t> bytes = read_whole_file(path);
+  return decode_gray_image(bytes.data(), bytes.size(), path);
+}
+
+void write_png_gray(const std::string& path, const uint8_t* px, int w, int h) {
+  check_size(path, w, h);
+  FilePtr f(std::fopen(path.c_str(), "wb"));
+  if (!f) throw recording_error_in(path, std::string("cannot create: ") + std::strerror(errno));
+  const std::string problem = encode_png(f.get(), px, w, h);
+  if (!problem.empty()) throw recording_error_in(path, problem);
+  if (std::fclose(f.release()) != 0) throw recording_error_in(path, "write error on close");
+}
+
+void write_pgm(const std::string& path, const uint8_t* px, int w, int h) {
+  check_size(path, w, h);
+  FilePtr f(std::fopen(path.c_str(), "wb"));
+  if (!f) throw recording_error_in(path, std::string("cannot create: ") + std::strerror(errno));
+  const size_t n = static_cast<size_t>(w) * static_cast<size_t>(h);
+  const bool ok = std::fprintf(f.get(), "P5\n%d %d\n255\n", w, h) > 0 && std::fwrite(px, 1, n, f.get()) == n;
+  if (!ok || std::fclose(f.release()) != 0) throw recording_error_in(path, "write error");
+}
+
+}  // namespace lumavel::host

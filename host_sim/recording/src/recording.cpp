@@ -1,0 +1,195 @@
+#include "lumavel/host/recording.hpp"
+
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "lumavel/host/csv_table.hpp"
+#include "lumavel/host/image_io.hpp"
+#include "lumavel/host/recording_layout.hpp"
+
+namespace lumavel::host {
+namespace {
+
+bool is_dir(const std::string& p) {
+  struct stat st {};
+  return ::stat(p.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
+}
+
+bool is_file(const std::string& p) {
+  struct stat st {};
+  return ::stat(p.c_str(), &st) == 0 && S_ISREG(st.st_mode);
+}
+
+double median_interval_s(const std::vector<uint64_t>& t) {
+  if (t.size() < 2) return 0;
+  std::vector<uint64_t> d;
+  d.reserve(t.size() - 1);
+  for (size_t i = 1; i < t.size(); ++i) d.push_back(t[i] - t[i - 1]);
+  std::nth_element(d.begin(), d.begin() + static_cast<long>(d.size() / 2), d.end());
+  return static_cast<double>(d[d.size() / 2]) * 1e-9;
+}
+
+struct CamRows {
+  std::string csv;
+  std::vector<CsvRow> rows;
+};
+
+CamRows read_cam_rows(const std::string& root, int cam) {
+  CamRows c;
+  const std::string dir = root + "/" + layout::kCamDir[cam];
+  c.csv = dir + "/data.csv";
+  c.rows = read_csv_table(c.csv, layout::cam_columns());
+  for (CsvRow& r : c.rows) {
+    std::string& name = r.fields[0];
+    if (name.empty()) throw recording_error_at(c.csv, r.line, "empty filename");
+    name = dir + "/data/" + name;
+    if (!is_file(name)) throw recording_error_at(c.csv, r.line, "image file " + name + " does not exist");
+  }
+  return c;
+}
+
+// cam0 and cam1 are triggered together: every row must have a partner with
+// the same timestamp in the other camera.
+std::vector<FramePairEntry> pair_frames(const CamRows& c0, const CamRows& c1) {
+  std::vector<FramePairEntry> out;
+  out.reserve(c0.rows.size());
+  size_t i = 0, j = 0;
+  while (i < c0.rows.size() || j < c1.rows.size()) {
+    const bool have0 = i < c0.rows.size(), have1 = j < c1.rows.size();
+    if (have0 && have1 && c0.rows[i].t_ns == c1.rows[j].t_ns) {
+      FramePairEntry e;
+      e.t_ns = c0.rows[i].t_ns;
+      e.path[0] = c0.rows[i].fields[0];
+      e.path[1] = c1.rows[j].fields[0];
+      out.push_back(std::move(e));
+      ++i;
+      ++j;
+    } else if (have0 && (!have1 || c0.rows[i].t_ns < c1.rows[j].t_ns)) {
+      throw recording_error_at(c0.csv, c0.rows[i].line,
+                               "unpaired frame: timestamp " + std::to_string(c0.rows[i].t_ns) + " has no row in " +
+                                   c1.csv);
+    } else {
+      throw recording_error_at(c1.csv, c1.rows[j].line,
+                               "unpaired frame: timestamp " + std::to_string(c1.rows[j].t_ns) + " has no row in " +
+                                   c0.csv);
+    }
+  }
+  return out;
+}
+
+std::vector<ImuSample> read_imu(const std::string& csv) {
+  std::vector<ImuSample> out;
+  for_each_csv_row(csv, layout::imu_columns(), [&](const CsvRow& r) {
+    ImuSample s;
+    s.t_ns = r.t_ns;
+    for (int k = 0; k < 3; ++k) {
+      s.w[k] = parse_finite(r.fields[static_cast<size_t>(k)], csv, r.line, layout::imu_columns()[static_cast<size_t>(k)]);
+      s.a[k] = parse_finite(r.fields[static_cast<size_t>(k + 3)], csv, r.line,
+                            layout::imu_columns()[static_cast<size_t>(k + 3)]);
+    }
+    out.push_back(s);
+  });
+  return out;
+}
+
+std::vector<GroundTruthSample> read_groundtruth(const std::string& csv) {
+  std::vector<GroundTruthSample> out;
+  for_each_csv_row(csv, layout::groundtruth_columns(), [&](const CsvRow& r) {
+    double v[16];
+    for (size_t k = 0; k < 16; ++k) v[k] = parse_finite(r.fields[k], csv, r.line, layout::groundtruth_columns()[k]);
+    GroundTruthSample g;
+    g.t_ns = r.t_ns;
+    for (int k = 0; k < 3; ++k) {
+      g.p[k] = v[k];
+      g.v[k] = v[7 + k];
+      g.bw[k] = v[10 + k];
+      g.ba[k] = v[13 + k];
+    }
+    for (int k = 0; k < 4; ++k) g.q[k] = v[3 + k];
+    const double n = std::sqrt(g.q[0] * g.q[0] + g.q[1] * g.q[1] + g.q[2] * g.q[2] + g.q[3] * g.q[3]);
+    if (std::fabs(n - 1.0) > 0.01)
+      throw recording_error_at(csv, r.line, "q_RS is not a unit quaternion (norm " + format_double(n) + ")");
+    out.push_back(g);
+  });
+  return out;
+}
+
+// The first frame of each camera must match its sensor.yaml; later frames are
+// checked as they are decoded.
+void check_first_frame(const std::string& image, int cam, const CameraSensor& s, const std::string& yaml) {
+  const GrayImage img = read_gray_image(image);
+  if (img.width != s.width || img.height != s.height)
+    throw recording_error_in(image, "frame 0 of " + std::string(layout::kCamDir[cam]) + " is " +
+                                        std::to_string(img.width) + "x" + std::to_string(img.height) + ", but " +
+                                        yaml + " says resolution [" + std::to_string(s.width) + ", " +
+                                        std::to_string(s.height) + "]");
+}
+
+void count_gaps(Recording& rec) {
+  GapReport& g = rec.gaps;
+  for (size_t i = 1; i < rec.frames.size(); ++i) {
+    const double dt = static_cast<double>(rec.frames[i].t_ns - rec.frames[i - 1].t_ns) * 1e-9;
+    if (dt > 1.5 * rec.frame_period_s) {
+      ++g.frame_gaps;
+      g.frames_missing += std::max(1L, std::lround(dt / rec.frame_period_s) - 1);
+      g.longest_frame_gap_s = std::max(g.longest_frame_gap_s, dt);
+    }
+  }
+  for (size_t i = 1; i < rec.imu_samples.size(); ++i) {
+    const double dt = static_cast<double>(rec.imu_samples[i].t_ns - rec.imu_samples[i - 1].t_ns) * 1e-9;
+    if (dt > 2.5 * rec.imu_period_s) {
+      ++g.gyro_holes;
+      g.longest_gyro_hole_s = std::max(g.longest_gyro_hole_s, dt);
+    }
+  }
+}
+
+}  // namespace
+
+Recording load_recording(const std::string& dir_arg) {
+  Recording rec;
+  std::string dir = dir_arg;
+  while (dir.size() > 1 && dir.back() == '/') dir.pop_back();  // "rec/" -> "rec": clean paths in messages
+  if (!is_dir(dir)) throw recording_error_in(dir, "recording folder does not exist");
+  rec.root = is_dir(dir + "/mav0") ? dir + "/mav0" : dir;
+  const std::string& root = rec.root;
+  std::string yaml[2];
+  for (int c = 0; c < 2; ++c) {
+    yaml[c] = root + "/" + layout::kCamDir[c] + "/sensor.yaml";
+    rec.cam[c] = read_camera_yaml(yaml[c]);
+  }
+  rec.imu = read_imu_yaml(root + "/" + layout::kImuDir + "/sensor.yaml");
+
+  const CamRows c0 = read_cam_rows(root, 0);
+  const CamRows c1 = read_cam_rows(root, 1);
+  if (c0.rows.empty()) throw recording_error_at(c0.csv, 2, "no frames");
+  rec.frames = pair_frames(c0, c1);
+
+  const std::string imu_csv = root + "/" + layout::kImuDir + "/data.csv";
+  rec.imu_samples = read_imu(imu_csv);
+  if (rec.imu_samples.empty()) throw recording_error_at(imu_csv, 2, "no gyro samples");
+
+  const std::string gt_csv = root + "/" + layout::kGroundTruthDir + "/data.csv";
+  if (is_file(gt_csv)) rec.groundtruth = read_groundtruth(gt_csv);
+
+  for (int c = 0; c < 2; ++c) check_first_frame(rec.frames.front().path[c], c, rec.cam[c], yaml[c]);
+
+  std::vector<uint64_t> t;
+  t.reserve(rec.frames.size());
+  for (const FramePairEntry& f : rec.frames) t.push_back(f.t_ns);
+  rec.frame_period_s = rec.frames.size() >= 2 ? median_interval_s(t) : 1.0 / rec.cam[0].rate_hz;
+  t.clear();
+  for (const ImuSample& s : rec.imu_samples) t.push_back(s.t_ns);
+  rec.imu_period_s = rec.imu_samples.size() >= 2 ? median_interval_s(t) : 1.0 / rec.imu.rate_hz;
+  count_gaps(rec);
+  return rec;
+}
+
+double body_yaw_rate(const ImuSensor& imu, const ImuSample& s) {
+  // Third row of R_BS times w_S.
+  return imu.T_BS[8] * s.w[0] + imu.T_BS[9] * s.w[1] + imu.T_BS[10] * s.w[2];
+}
+
+}  // namespace lumavel::host

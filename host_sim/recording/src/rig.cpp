@@ -1,0 +1,72 @@
+#include "lumavel/host/rig.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "lumavel/host/recording_layout.hpp"
+
+namespace lumavel::host {
+namespace {
+
+// Column k of the rotation part of a row-major 4x4 pose: the sensor's axis k in the body frame.
+void axis(const Pose& T, int k, double out[3]) {
+  for (int r = 0; r < 3; ++r) out[r] = T[static_cast<size_t>(4 * r + k)];
+}
+
+}  // namespace
+
+CameraModel derive_camera(const CameraSensor& c, int work_width, const std::string& yaml_path) {
+  double ex[3], ez[3];
+  axis(c.T_BS, 0, ex);
+  axis(c.T_BS, 2, ez);
+  // The optical axis must look sideways, roughly in the body x-y plane.
+  if (std::hypot(ez[0], ez[1]) < 0.5)
+    throw recording_error_in(yaml_path, "T_BS: the optical axis is not horizontal (tilted more than 60 degrees)");
+  const double cross_z = ez[0] * ex[1] - ez[1] * ex[0];  // ((R e_z) x (R e_x)).z
+  if (std::fabs(cross_z) < 0.5)
+    throw recording_error_in(yaml_path, "T_BS: the image u axis is not horizontal (camera rolled more than 60 degrees)");
+  CameraModel m;
+  const double scale = static_cast<double>(work_width) / static_cast<double>(c.width);
+  m.fu = c.fu * scale;
+  m.cu = (c.cu + 0.5) * scale - 0.5;  // pixel-centre convention: centre of pixel 0 is 0
+  m.axis_yaw = std::atan2(ez[1], ez[0]);
+  m.u_sign = cross_z > 0 ? 1 : -1;
+  return m;
+}
+
+EstimatorSettings derive_settings(const Recording& rec, WorkingSize size) {
+  const std::string yaml0 = rec.root + "/" + layout::kCamDir[0] + "/sensor.yaml";
+  if (rec.cam[0].height == 1) size.height = 1;  // line-scan sensor
+  if (size.width < kMinWorkWidth || size.width > kMaxWorkWidth)
+    throw RecordingError("working width " + std::to_string(size.width) + " is outside " +
+                         std::to_string(kMinWorkWidth) + ".." + std::to_string(kMaxWorkWidth));
+  if (size.height < 1 || size.height > kMaxWorkHeight)
+    throw RecordingError("working height " + std::to_string(size.height) + " is outside 1.." +
+                         std::to_string(kMaxWorkHeight));
+  EstimatorSettings s;
+  s.width = size.width;
+  s.height = size.height;
+  for (int c = 0; c < 2; ++c) {
+    const CameraSensor& cam = rec.cam[c];
+    const std::string yaml = rec.root + "/" + layout::kCamDir[c] + "/sensor.yaml";
+    if (size.width > cam.width || size.height > cam.height)
+      throw recording_error_in(yaml, "cannot bin the " + std::to_string(cam.width) + "x" +
+                                         std::to_string(cam.height) + " sensor up to the working resolution " +
+                                         std::to_string(size.width) + "x" + std::to_string(size.height) +
+                                         " (choose a smaller --width/--height)");
+    s.cam[c] = derive_camera(cam, size.width, yaml);
+  }
+  // Baseline: x of the vector from cam0's optical centre to cam1's (body frame).
+  s.baseline = rec.cam[1].T_BS[3] - rec.cam[0].T_BS[3];
+  if (std::fabs(s.baseline) < 1e-4)
+    throw recording_error_in(yaml0, "T_BS: cam0 and cam1 are less than 0.1 mm apart along body x (no baseline)");
+  s.frame_period = rec.frame_period_s;
+  // A slow gyro must not look like a gyro gap at every frame: a hole is
+  // more than 2.5 nominal periods (as counted in GapReport).
+  s.gyro_gap = std::max(s.gyro_gap, 2.5 * rec.imu_period_s);
+  const double hfov = 2.0 * std::atan(0.5 * rec.cam[0].width / rec.cam[0].fu);
+  s.kernels = default_kernels(hfov);
+  return s;
+}
+
+}  // namespace lumavel::host

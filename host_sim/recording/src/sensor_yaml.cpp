@@ -1,0 +1,221 @@
+#include "lumavel/host/sensor_yaml.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "lumavel/host/csv_table.hpp"
+#include "lumavel/host/recording_error.hpp"
+
+namespace lumavel::host {
+namespace {
+
+long line_of(const YAML::Node& n) { return n.Mark().line + 1; }  // yaml-cpp lines are 0-based
+
+YAML::Node load_yaml(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw recording_error_in(path, "cannot open (missing sensor.yaml?)");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  std::string text = ss.str();
+  // OpenCV-style "%YAML:1.0" first lines are not YAML 1.2 directives; blank
+  // them (keeping line numbers) so such files still load.
+  if (text.rfind("%YAML:", 0) == 0) text[0] = '#';
+  try {
+    YAML::Node root = YAML::Load(text);
+    if (!root.IsMap()) throw recording_error_in(path, "not a YAML mapping of sensor keys");
+    return root;
+  } catch (const YAML::ParserException& e) {
+    throw recording_error_at(path, e.mark.line + 1, "YAML syntax error: " + e.msg);
+  }
+}
+
+YAML::Node require(const YAML::Node& root, const char* key, const std::string& path) {
+  YAML::Node n = root[key];
+  if (!n) throw recording_error_in(path, std::string("missing key '") + key + "'");
+  return n;
+}
+
+double number(const YAML::Node& n, const std::string& what, const std::string& path) {
+  double v = 0;
+  try {
+    if (!n.IsScalar()) throw YAML::Exception(n.Mark(), "");
+    v = n.as<double>();
+  } catch (const YAML::Exception&) {
+    throw recording_error_at(path, line_of(n), what + ": expected a number");
+  }
+  if (!std::isfinite(v)) throw recording_error_at(path, line_of(n), what + ": value is not finite");
+  return v;
+}
+
+std::vector<double> numbers(const YAML::Node& n, const std::string& what, size_t count, const std::string& path) {
+  if (!n.IsSequence()) throw recording_error_at(path, line_of(n), what + ": expected a list of numbers");
+  if (count != 0 && n.size() != count)
+    throw recording_error_at(path, line_of(n),
+                             what + ": expected " + std::to_string(count) + " numbers, found " +
+                                 std::to_string(n.size()));
+  std::vector<double> out;
+  for (size_t i = 0; i < n.size(); ++i) out.push_back(number(n[i], what + "[" + std::to_string(i) + "]", path));
+  return out;
+}
+
+std::string text_of(const YAML::Node& n, const std::string& what, const std::string& path) {
+  if (!n.IsScalar()) throw recording_error_at(path, line_of(n), what + ": expected text");
+  return n.Scalar();
+}
+
+void check_sensor_type(const YAML::Node& root, const char* want, const std::string& path) {
+  const YAML::Node n = require(root, "sensor_type", path);
+  const std::string got = text_of(n, "sensor_type", path);
+  if (got != want)
+    throw recording_error_at(path, line_of(n), "sensor_type is '" + got + "', expected '" + want + "'");
+}
+
+Pose read_pose(const YAML::Node& root, const std::string& path) {
+  const YAML::Node t = require(root, "T_BS", path);
+  if (!t.IsMap()) throw recording_error_at(path, line_of(t), "T_BS: expected {cols: 4, rows: 4, data: [16 numbers]}");
+  const double cols = number(require(t, "cols", path), "T_BS.cols", path);
+  const double rows = number(require(t, "rows", path), "T_BS.rows", path);
+  if (cols != 4.0 || rows != 4.0) throw recording_error_at(path, line_of(t), "T_BS must be 4x4");
+  const std::vector<double> d = numbers(require(t, "data", path), "T_BS.data", 16, path);
+  // A pose: orthonormal rotation, last row 0 0 0 1. Loose tolerance: files
+  // carry calibrations printed to a few digits.
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      double dot = 0;
+      for (int k = 0; k < 3; ++k) dot += d[static_cast<size_t>(4 * k + i)] * d[static_cast<size_t>(4 * k + j)];
+      if (std::fabs(dot - (i == j ? 1.0 : 0.0)) > 1e-3)
+        throw recording_error_at(path, line_of(t), "T_BS: rotation part is not orthonormal");
+    }
+  if (std::fabs(d[12]) + std::fabs(d[13]) + std::fabs(d[14]) > 1e-9 || std::fabs(d[15] - 1.0) > 1e-9)
+    throw recording_error_at(path, line_of(t), "T_BS: last row must be 0, 0, 0, 1");
+  Pose p;
+  for (size_t i = 0; i < 16; ++i) p[i] = d[i];
+  return p;
+}
+
+double optional_number(const YAML::Node& root, const char* key, const std::string& path) {
+  const YAML::Node n = root[key];
+  return n ? number(n, key, path) : -1.0;
+}
+
+std::string optional_text(const YAML::Node& root, const char* key) {
+  const YAML::Node n = root[key];
+  return (n && n.IsScalar()) ? n.Scalar() : std::string();
+}
+
+// Comments go out double-quoted: drop what would end the string or the line.
+std::string quoted(const std::string& text) {
+  std::string out = "\"";
+  for (char ch : text)
+    if (ch != '"' && ch != '\\' && ch != '\n' && ch != '\r') out += ch;
+  return out + "\"";
+}
+
+std::string list(const std::vector<double>& v) {
+  std::string s = "[";
+  for (size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + format_double(v[i]);
+  return s + "]";
+}
+
+std::string pose_text(const Pose& p) {
+  std::string s = "T_BS:\n  cols: 4\n  rows: 4\n  data: [";
+  for (size_t i = 0; i < 16; ++i) {
+    s += format_double(p[i]);
+    if (i == 15) break;
+    s += (i % 4 == 3) ? ",\n         " : ", ";
+  }
+  return s + "]\n";
+}
+
+void write_text(const std::string& path, const std::string& text) {
+  std::ofstream out(path);
+  out << text;
+  out.close();
+  if (!out) throw recording_error_in(path, "cannot write");
+}
+
+}  // namespace
+
+Pose identity_pose() { return {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}; }
+
+CameraSensor read_camera_yaml(const std::string& path) {
+  const YAML::Node root = load_yaml(path);
+  check_sensor_type(root, "camera", path);
+  CameraSensor c;
+  c.rate_hz = number(require(root, "rate_hz", path), "rate_hz", path);
+  if (c.rate_hz <= 0) throw recording_error_at(path, line_of(root["rate_hz"]), "rate_hz must be positive");
+  const YAML::Node res = require(root, "resolution", path);
+  const std::vector<double> r = numbers(res, "resolution", 2, path);
+  if (r[0] < 1 || r[1] < 1 || r[0] > 16384 || r[1] > 16384 || r[0] != std::floor(r[0]) || r[1] != std::floor(r[1]))
+    throw recording_error_at(path, line_of(res), "resolution: expected [width, height] in whole pixels");
+  c.width = static_cast<int>(r[0]);
+  c.height = static_cast<int>(r[1]);
+  const YAML::Node model = require(root, "camera_model", path);
+  if (text_of(model, "camera_model", path) != "pinhole")
+    throw recording_error_at(path, line_of(model), "camera_model '" + model.Scalar() + "' is not supported (pinhole)");
+  const YAML::Node in = require(root, "intrinsics", path);
+  const std::vector<double> k = numbers(in, "intrinsics", 4, path);
+  c.fu = k[0];
+  c.fv = k[1];
+  c.cu = k[2];
+  c.cv = k[3];
+  if (c.fu <= 0 || c.fv <= 0) throw recording_error_at(path, line_of(in), "intrinsics: fu and fv must be positive");
+  const YAML::Node dm = require(root, "distortion_model", path);
+  c.distortion_model = text_of(dm, "distortion_model", path);
+  if (c.distortion_model != "radial-tangential")
+    throw recording_error_at(path, line_of(dm),
+                             "distortion_model '" + c.distortion_model + "' is not supported (radial-tangential)");
+  c.distortion = numbers(require(root, "distortion_coefficients", path), "distortion_coefficients", 4, path);
+  c.T_BS = read_pose(root, path);
+  c.exposure_s = optional_number(root, "exposure_s", path);
+  c.comment = optional_text(root, "comment");
+  return c;
+}
+
+ImuSensor read_imu_yaml(const std::string& path) {
+  const YAML::Node root = load_yaml(path);
+  check_sensor_type(root, "imu", path);
+  ImuSensor s;
+  s.rate_hz = number(require(root, "rate_hz", path), "rate_hz", path);
+  if (s.rate_hz <= 0) throw recording_error_at(path, line_of(root["rate_hz"]), "rate_hz must be positive");
+  s.T_BS = read_pose(root, path);
+  s.gyroscope_noise_density = optional_number(root, "gyroscope_noise_density", path);
+  s.gyroscope_random_walk = optional_number(root, "gyroscope_random_walk", path);
+  s.comment = optional_text(root, "comment");
+  return s;
+}
+
+void write_camera_yaml(const std::string& path, const CameraSensor& c) {
+  std::string s = "# General sensor definitions.\nsensor_type: camera\n";
+  if (!c.comment.empty()) s += "comment: " + quoted(c.comment) + "\n";
+  s += "\n# Sensor extrinsics wrt. the body-frame.\n" + pose_text(c.T_BS);
+  s += "\n# Camera specific definitions.\n";
+  s += "rate_hz: " + format_double(c.rate_hz) + "\n";
+  s += "resolution: [" + std::to_string(c.width) + ", " + std::to_string(c.height) + "]\n";
+  s += "camera_model: pinhole\n";
+  s += "intrinsics: " + list({c.fu, c.fv, c.cu, c.cv}) + " #fu, fv, cu, cv\n";
+  s += "distortion_model: " + c.distortion_model + "\n";
+  std::vector<double> d = c.distortion;
+  d.resize(4, 0.0);
+  s += "distortion_coefficients: " + list(d) + "\n";
+  if (c.exposure_s >= 0) s += "exposure_s: " + format_double(c.exposure_s) + "\n";
+  write_text(path, s);
+}
+
+void write_imu_yaml(const std::string& path, const ImuSensor& imu) {
+  std::string s = "# General sensor definitions.\nsensor_type: imu\n";
+  if (!imu.comment.empty()) s += "comment: " + quoted(imu.comment) + "\n";
+  s += "\n# Sensor extrinsics wrt. the body-frame.\n" + pose_text(imu.T_BS);
+  s += "rate_hz: " + format_double(imu.rate_hz) + "\n";
+  if (imu.gyroscope_noise_density >= 0)
+    s += "\n# inertial sensor noise model parameters (static)\ngyroscope_noise_density: " +
+         format_double(imu.gyroscope_noise_density) + "     # [ rad / s / sqrt(Hz) ]\n";
+  if (imu.gyroscope_random_walk >= 0)
+    s += "gyroscope_random_walk: " + format_double(imu.gyroscope_random_walk) + "       # [ rad / s^2 / sqrt(Hz) ]\n";
+  write_text(path, s);
+}
+
+}  // namespace lumavel::host

@@ -1,0 +1,44 @@
+// Results of the studies and their Markdown page (docs/results.md).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "lumavel/host/engine.hpp"
+#include "lumavel/host/recording.hpp"
+#include "lumavel/host/run_metrics.hpp"
+#include "studies.hpp"
+
+namespace lumavel::host::reproduce {
+
+// What the status flags say about a run.
+struct FlagBehaviour {
+  int low_texture = 0, no_light = 0, frame_gaps = 0, restarts = 0, frames = 0;
+  double longest_hold_s = 0;    // longest stretch of held V (low texture or no light)
+  double drift_in_hold = 0;     // max |V - V at the start of the stretch| inside it, m/s
+  double recovery_s = -1;       // from the end of that stretch to |err| < 5 % of |V| (-1: never)
+};
+FlagBehaviour flag_behaviour(const std::vector<TrackPoint>& track);
+
+// Mean signed error after `settle_s` relative to the mean |V| there, percent.
+double bias_percent(const std::vector<TrackPoint>& track, double settle_s = 1.0);
+
+struct CaseResult {
+  Case c;
+  WorkSize work{0, 0};
+  EngineKind engine = EngineKind::kFixed;
+  RunMetrics metrics;
+  FlagBehaviour behaviour;
+  GapReport gaps;
+  double run_s = 0;
+  double bias_percent = 0;  // mean signed error after 1 s over mean |V| after 1 s
+  std::string plot;  // relative to the results page, fixed engine only
+};
+
+struct StudyResult {
+  Study study;
+  std::vector<CaseResult> cases;
+};
+
+std::string results_markdown(const std::vector<StudyResult>& results, bool quick, double seconds);
+
+}  // namespace lumavel::host::reproduce

@@ -1,0 +1,45 @@
+// Accuracy of an estimate track against ground truth, as the paper reports it
+// (Zarrouati et al. 2012, eq. 22) plus the usual extras. Shared by `run` and
+// `reproduce`.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace lumavel::host {
+
+struct TrackPoint {
+  uint64_t t_ns = 0;
+  double v_est = 0;   // m/s
+  double v_true = 0;  // m/s; NaN where there is no ground truth
+  uint16_t status = 0;  // lumavel::StatusFlag bits of the estimate
+};
+
+struct MetricOptions {
+  double min_speed = 0.05;  // |V| below this is left out of E (relative error blows up)
+  double settle_s = 1.0;    // "after the first second": convergence excluded
+};
+
+struct RunMetrics {
+  size_t samples = 0;            // all points
+  size_t with_truth = 0;         // points with ground truth
+  size_t excluded_slow = 0;      // left out of E: |V| < min_speed
+  double e_percent = 0;          // eq. 22: time average of |V_est - V| / |V|, percent
+  double l1_percent = 0;         // sum |err| / sum |V|, percent
+  double rms = 0;                // m/s, all points with truth
+  double worst_after = 0;        // max |err| after settle_s, m/s
+  double worst_after_t = 0;      // its time since the first point, s
+  double mean_abs_after = 0;     // mean |err| after settle_s, m/s
+  double mean_after = 0;         // mean signed err (bias) after settle_s, m/s
+  size_t after_count = 0;        // points after settle_s with truth
+  MetricOptions options;
+};
+
+// Each point weighs the time since the previous one (the first: the median
+// interval), so E is a time average even across frame gaps.
+RunMetrics compute_metrics(const std::vector<TrackPoint>& track, const MetricOptions& options = {});
+
+// Multi-line human summary (no trailing newline).
+std::string format_metrics(const RunMetrics& m);
+
+}  // namespace lumavel::host

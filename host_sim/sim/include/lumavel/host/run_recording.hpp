@@ -1,0 +1,45 @@
+// `lumavel-sim run` as a library call: the engine over a recording, frame by
+// frame, with the estimates CSV streamed out and the track kept for metrics.
+#pragma once
+#include <cstdint>
+#include <cstdio>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "lumavel/host/engine.hpp"
+#include "lumavel/host/recording.hpp"
+#include "lumavel/host/rig.hpp"
+#include "lumavel/host/run_metrics.hpp"
+
+namespace lumavel::host {
+
+struct RunOptions {
+  EngineKind engine = EngineKind::kFixed;
+  WorkingSize size;
+  int decode_threads = 2;
+};
+
+struct RunResult {
+  std::vector<TrackPoint> track;  // v_true NaN when the recording has no ground truth
+  bool has_truth = false;
+  size_t frames = 0;
+  int width = 0, height = 0;      // working resolution used
+  double wall_s = 0;              // time spent in the frame loop
+};
+
+// Header of the estimates CSV (docs/estimates-csv.md).
+extern const char* const kEstimatesHeader;
+
+// Runs the engine over `rec`. For each frame pair, pushes every gyro sample up
+// to and including the first one at or after the frame time, then steps.
+// Writes the CSV to `csv` when not null. `progress(done, total)` is called
+// now and then when set. Throws RecordingError for a bad frame.
+RunResult run_recording(const Recording& rec, const RunOptions& options, std::FILE* csv,
+                        const std::function<void(size_t, size_t)>& progress = {});
+
+// Same with a given engine (built for `settings`), e.g. an instrumented one.
+RunResult run_recording(const Recording& rec, const EstimatorSettings& settings, Engine& engine,
+                        int decode_threads, std::FILE* csv, const std::function<void(size_t, size_t)>& progress = {});
+
+}  // namespace lumavel::host

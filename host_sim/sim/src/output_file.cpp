@@ -1,0 +1,52 @@
+#include "output_file.hpp"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <stdexcept>
+
+namespace lumavel::host {
+
+OutputFile::OutputFile(const std::string& path) : path_(path) {
+  if (path.empty()) {
+    file_ = stdout;
+    return;
+  }
+  // Anything that exists and is not a plain regular file (device, pipe, or a
+  // symlink, which a rename would replace) is written in place.
+  struct stat st {};
+  const bool special = ::lstat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode);
+  if (!special) temp_ = path + ".tmp" + std::to_string(::getpid());
+  file_ = std::fopen((special ? path : temp_).c_str(), "w");
+  if (!file_) throw std::runtime_error(path + ": cannot create the output file: " + std::strerror(errno));
+}
+
+OutputFile::~OutputFile() {
+  if (committed_ || file_ == stdout) return;
+  std::fclose(file_);
+  if (!temp_.empty()) std::remove(temp_.c_str());
+}
+
+void OutputFile::commit() {
+  const std::string name = path_.empty() ? std::string("standard output") : path_;
+  if (std::fflush(file_) != 0 || std::ferror(file_)) throw std::runtime_error(name + ": write error");
+  if (file_ == stdout) {
+    committed_ = true;
+    return;
+  }
+  const int closed = std::fclose(file_);
+  committed_ = true;  // closed either way
+  if (closed != 0) {
+    if (!temp_.empty()) std::remove(temp_.c_str());
+    throw std::runtime_error(name + ": write error");
+  }
+  if (!temp_.empty() && std::rename(temp_.c_str(), path_.c_str()) != 0) {
+    const int err = errno;
+    std::remove(temp_.c_str());
+    throw std::runtime_error(name + ": cannot move the output into place: " + std::strerror(err));
+  }
+}
+
+}  // namespace lumavel::host

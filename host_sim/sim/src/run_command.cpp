@@ -1,0 +1,190 @@
+#include "run_command.hpp"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "cli_args.hpp"
+#include "output_file.hpp"
+#include "lumavel/host/run_recording.hpp"
+#include "lumavel/host/track_plot.hpp"
+
+namespace lumavel::host {
+namespace {
+
+const char* const kRunHelp =
+    "usage: lumavel-sim run REC [options]\n"
+    "\n"
+    "Runs the estimator over the recording REC (EuRoC/ASL layout, REC or REC/mav0)\n"
+    "and writes the estimates CSV (docs/estimates-csv.md): one row per frame pair,\n"
+    "  timestamp_ns,v_xb_mps,distance_m,heading_rad,status,v_direct_mps,texture\n"
+    "\n"
+    "options:\n"
+    "  --engine fixed|float   estimator engine: the firmware's fixed-point core (default)\n"
+    "                         or the double-precision reference\n"
+    "  -o, --output FILE      write the CSV to FILE instead of standard output ('-')\n"
+    "  --width W              working resolution width, 16..160 (default 40)\n"
+    "  --height H             working resolution height, 1..128 (default 30; 1 for line-scan input)\n"
+    "  --plot FILE.svg        plot file (default: REC_estimates.svg next to the -o file,\n"
+    "                         or in the current folder); written when the recording has\n"
+    "                         ground truth or when --plot is given\n"
+    "  --quiet                no progress and no summary on standard error\n"
+    "  -h, --help             this help\n"
+    "\n"
+    "With ground truth (state_groundtruth_estimate0), a summary goes to standard error:\n"
+    "frames, gaps, the paper's error E (eq. 22), L1 and RMS errors, worst and mean error\n"
+    "after the first second.\n"
+    "\n"
+    "exit status: 0 done, 1 bad recording or failure (the message names the file and\n"
+    "line or frame), 2 usage error\n";
+
+struct RunArgs {
+  std::string rec;
+  std::string engine = "fixed";
+  std::string output;
+  std::string plot;
+  WorkingSize size;
+  bool quiet = false;
+  bool help = false;
+};
+
+RunArgs parse(int argc, char** argv) {
+  RunArgs a;
+  std::string v;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "-h" || arg == "--help") {
+      a.help = true;
+    } else if (arg == "--quiet" || arg == "-q") {
+      a.quiet = true;
+    } else if (option_value(argc, argv, i, "--engine", v)) {
+      if (v != "fixed" && v != "float") throw UsageError("--engine must be 'fixed' or 'float', not '" + v + "'");
+      a.engine = v;
+    } else if (option_value(argc, argv, i, "-o", v) || option_value(argc, argv, i, "--output", v)) {
+      a.output = v == "-" ? std::string() : v;  // "-": standard output
+    } else if (option_value(argc, argv, i, "--plot", v)) {
+      a.plot = v;
+    } else if (option_value(argc, argv, i, "--width", v)) {
+      a.size.width = parse_int(v, "--width");
+    } else if (option_value(argc, argv, i, "--height", v)) {
+      a.size.height = parse_int(v, "--height");
+    } else if (!arg.empty() && arg[0] == '-') {
+      throw UsageError("unknown option '" + arg + "'");
+    } else if (a.rec.empty()) {
+      a.rec = arg;
+    } else {
+      throw UsageError("unexpected argument '" + arg + "' (one recording per run)");
+    }
+  }
+  if (a.help) return a;
+  if (a.rec.empty()) throw UsageError("missing the recording folder REC");
+  if (a.size.width < kMinWorkWidth || a.size.width > kMaxWorkWidth)
+    throw UsageError("--width must be in " + std::to_string(kMinWorkWidth) + ".." + std::to_string(kMaxWorkWidth));
+  if (a.size.height < 1 || a.size.height > kMaxWorkHeight)
+    throw UsageError("--height must be in 1.." + std::to_string(kMaxWorkHeight));
+  return a;
+}
+
+// "path/to/REC/" or "path/to/REC/mav0" -> "REC".
+std::string recording_name(std::string path) {
+  while (path.size() > 1 && path.back() == '/') path.pop_back();
+  auto base = [](const std::string& p) {
+    const size_t s = p.find_last_of('/');
+    return s == std::string::npos ? p : p.substr(s + 1);
+  };
+  std::string name = base(path);
+  if (name == "mav0") {
+    const size_t s = path.find_last_of('/');
+    if (s != std::string::npos && s > 0) name = base(path.substr(0, s));
+  }
+  return name.empty() || name == "." || name == ".." ? std::string("recording") : name;
+}
+
+std::string default_plot_path(const RunArgs& a) {
+  std::string dir;
+  const size_t s = a.output.find_last_of('/');
+  if (s != std::string::npos) dir = a.output.substr(0, s + 1);
+  return dir + recording_name(a.rec) + "_estimates.svg";
+}
+
+std::string gaps_line(const Recording& rec) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf,
+                "gaps: %d frame gaps (about %ld pairs missing, longest %.3f s), %d gyro holes (longest %.3f s)",
+                rec.gaps.frame_gaps, rec.gaps.frames_missing, rec.gaps.longest_frame_gap_s, rec.gaps.gyro_holes,
+                rec.gaps.longest_gyro_hole_s);
+  return buf;
+}
+
+int run(const RunArgs& a) {
+  const Recording rec = load_recording(a.rec);
+  RunOptions options;
+  options.engine = parse_engine_kind(a.engine);
+  options.size = a.size;
+
+  OutputFile out(a.output);
+  static char out_buf[1 << 16];
+  if (out.get() == stdout) std::setvbuf(stdout, out_buf, _IOFBF, sizeof out_buf);
+
+  const bool show_progress = !a.quiet && ::isatty(STDERR_FILENO);
+  auto progress = [](size_t done, size_t total) {
+    std::fprintf(stderr, "\rframe %zu/%zu", done, total);
+    std::fflush(stderr);
+  };
+  RunResult result;
+  try {
+    result = run_recording(rec, options, out.get(), show_progress ? progress : std::function<void(size_t, size_t)>{});
+    out.commit();
+  } catch (...) {
+    if (show_progress) std::fputc('\n', stderr);
+    throw;
+  }
+  if (show_progress) std::fprintf(stderr, "\r%*s\r", 40, "");
+
+  const std::string plot = a.plot.empty() ? default_plot_path(a) : a.plot;
+  const bool want_plot = result.has_truth || !a.plot.empty();
+  if (want_plot)
+    write_track_svg(plot, result.track,
+                    recording_name(a.rec) + ": V_xb, " + engine_name(options.engine) + " engine, " +
+                        std::to_string(result.width) + "x" + std::to_string(result.height));
+  if (!a.quiet) {
+    const double span = rec.frames.size() > 1
+                            ? static_cast<double>(rec.frames.back().t_ns - rec.frames.front().t_ns) * 1e-9
+                            : 0.0;
+    std::fprintf(stderr, "%s: %zu frame pairs over %.3f s, %s engine, %dx%d working, %.0f frames/s\n",
+                 recording_name(a.rec).c_str(), result.frames, span, engine_name(options.engine),
+                 result.width, result.height,
+                 result.wall_s > 0 ? static_cast<double>(result.frames) / result.wall_s : 0.0);
+    std::fprintf(stderr, "%s\n", gaps_line(rec).c_str());
+    if (result.has_truth) std::fprintf(stderr, "%s\n", format_metrics(compute_metrics(result.track)).c_str());
+    else std::fprintf(stderr, "no ground truth (state_groundtruth_estimate0/data.csv): no error figures\n");
+    if (want_plot) std::fprintf(stderr, "plot: %s\n", plot.c_str());
+  }
+  return 0;
+}
+
+}  // namespace
+
+int run_main(int argc, char** argv) {
+  RunArgs args;
+  try {
+    args = parse(argc, argv);
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "lumavel-sim run: %s\n(see lumavel-sim run --help)\n", e.what());
+    return 2;
+  }
+  if (args.help) {
+    std::fputs(kRunHelp, stdout);
+    return 0;
+  }
+  try {
+    return run(args);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "lumavel-sim run: error: %s\n", e.what());
+    return 1;
+  }
+}
+
+}  // namespace lumavel::host

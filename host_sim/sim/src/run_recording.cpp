@@ -1,0 +1,89 @@
+#include "lumavel/host/run_recording.hpp"
+
+#include <charconv>
+#include <chrono>
+#include <cmath>
+
+#include "lumavel/host/file_camera.hpp"
+#include "lumavel/host/groundtruth.hpp"
+
+namespace lumavel::host {
+namespace {
+
+// Appends a double in its shortest round-trip form.
+char* put_double(char* p, char* end, double v) { return std::to_chars(p, end, v, std::chars_format::general).ptr; }
+
+void write_row(std::FILE* f, const EngineEstimate& e, uint64_t t_ns) {
+  char buf[256];
+  char* const end = buf + sizeof buf;
+  char* p = std::to_chars(buf, end, t_ns).ptr;
+  *p++ = ',';
+  p = put_double(p, end, e.v);
+  *p++ = ',';
+  p = put_double(p, end, e.distance);
+  *p++ = ',';
+  p = put_double(p, end, e.heading);
+  *p++ = ',';
+  p = std::to_chars(p, end, e.status).ptr;
+  *p++ = ',';
+  p = put_double(p, end, e.v_direct);
+  *p++ = ',';
+  p = put_double(p, end, e.texture);
+  *p++ = '\n';
+  std::fwrite(buf, 1, static_cast<size_t>(p - buf), f);
+}
+
+}  // namespace
+
+const char* const kEstimatesHeader = "timestamp_ns,v_xb_mps,distance_m,heading_rad,status,v_direct_mps,texture";
+
+RunResult run_recording(const Recording& rec, const RunOptions& options, std::FILE* csv,
+                        const std::function<void(size_t, size_t)>& progress) {
+  const EstimatorSettings settings = derive_settings(rec, options.size);
+  std::unique_ptr<Engine> engine = make_engine(options.engine, settings);
+  return run_recording(rec, settings, *engine, options.decode_threads, csv, progress);
+}
+
+RunResult run_recording(const Recording& rec, const EstimatorSettings& settings, Engine& engine,
+                        int decode_threads, std::FILE* csv, const std::function<void(size_t, size_t)>& progress) {
+  FileStereoCamera camera(rec, settings.width, settings.height, decode_threads);
+
+  RunResult result;
+  result.has_truth = !rec.groundtruth.empty();
+  result.width = settings.width;
+  result.height = settings.height;
+  result.track.reserve(rec.frames.size());
+  if (csv) std::fprintf(csv, "%s\n", kEstimatesHeader);
+
+  const size_t n = static_cast<size_t>(settings.width) * static_cast<size_t>(settings.height);
+  std::vector<uint8_t> buf0(n), buf1(n);
+  hal::StereoImage img{0, {buf0.data(), buf1.data()}, 0, 0};
+  size_t gyro = 0;
+  const auto start = std::chrono::steady_clock::now();
+  for (;;) {
+    const hal::CaptureStatus st = camera.capture(img);
+    if (st == hal::CaptureStatus::kEnd) break;
+    if (st == hal::CaptureStatus::kError) throw RecordingError(camera.error());
+    while (gyro < rec.imu_samples.size()) {
+      const ImuSample& s = rec.imu_samples[gyro++];
+      engine.push_gyro(s.t_ns, body_yaw_rate(rec.imu, s));
+      if (s.t_ns >= img.t_ns) break;  // the first sample at or after the frame is the last pushed
+    }
+    const EngineEstimate e = engine.step(img.t_ns, buf0.data(), buf1.data());
+    if (csv) write_row(csv, e, img.t_ns);
+    result.track.push_back(TrackPoint{img.t_ns, e.v, std::nan(""), e.status});
+    ++result.frames;
+    if (progress && (result.frames & 255) == 0) progress(result.frames, rec.frames.size());
+  }
+  result.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (result.has_truth) {
+    std::vector<uint64_t> t;
+    t.reserve(result.track.size());
+    for (const TrackPoint& p : result.track) t.push_back(p.t_ns);
+    const std::vector<double> v = true_forward_velocity(rec.groundtruth, t);
+    for (size_t i = 0; i < v.size(); ++i) result.track[i].v_true = v[i];
+  }
+  return result;
+}
+
+}  // namespace lumavel::host

@@ -1,0 +1,263 @@
+// Every "Bad input" case of the recording contract is refused with one message
+// that names the file and the line or frame.
+#include <png.h>
+
+#include <cstdio>
+
+#include "lumavel/host/file_camera.hpp"
+#include "lumavel/host/image_io.hpp"
+#include "recording_fixture.hpp"
+// CppUTest last: its leak-detector macros redefine new.
+#include "CppUTest/TestHarness.h"
+
+using namespace lumavel::host;
+using fixture::error_of;
+
+TEST_GROUP(BadInput) {
+  fixture::TempDir dir;
+  fixture::Options o;
+  std::string rec;
+  std::string m;  // REC/mav0/
+  void setup() override {
+    rec = fixture::write_recording(dir.path() + "/rec", o);
+    m = rec + "/mav0/";
+  }
+  std::string load_error() {
+    return error_of([&] { load_recording(rec); });
+  }
+  // Loads, then decodes every frame like `run` does: the first problem.
+  std::string full_error() {
+    std::string e = load_error();
+    if (e != "(no error)") return e;
+    const Recording r = load_recording(rec);
+    FileStereoCamera cam(r, 40, 30);
+    std::vector<uint8_t> a(1200), b(1200);
+    lumavel::hal::StereoImage img{0, {a.data(), b.data()}, 0, 0};
+    lumavel::hal::CaptureStatus st;
+    while ((st = cam.capture(img)) == lumavel::hal::CaptureStatus::kOk) {
+    }
+    return st == lumavel::hal::CaptureStatus::kError ? cam.error() : std::string("(no error)");
+  }
+  std::string image(int cam, int frame) {
+    return m + "cam" + std::to_string(cam) + "/data/" + std::to_string(fixture::frame_time(o, frame)) + ".png";
+  }
+};
+
+TEST(BadInput, IntactRecordingLoadsAndDecodes) { STRCMP_EQUAL("(no error)", full_error().c_str()); }
+
+TEST(BadInput, MissingRecordingFolder) {
+  const std::string e = error_of([&] { load_recording(dir.path() + "/nope"); });
+  STRCMP_CONTAINS("/nope: recording folder does not exist", e.c_str());
+}
+
+TEST(BadInput, MissingSensorYaml) {
+  std::remove((m + "cam1/sensor.yaml").c_str());
+  STRCMP_CONTAINS((m + "cam1/sensor.yaml: cannot open").c_str(), load_error().c_str());
+}
+
+TEST(BadInput, MissingDataCsv) {
+  std::remove((m + "imu0/data.csv").c_str());
+  STRCMP_CONTAINS((m + "imu0/data.csv: cannot open").c_str(), load_error().c_str());
+}
+
+TEST(BadInput, MissingHeaderLine) {
+  fixture::erase_line(m + "cam0/data.csv", 1);
+  const std::string e = load_error();
+  STRCMP_CONTAINS((m + "cam0/data.csv:1: missing header line").c_str(), e.c_str());
+}
+
+TEST(BadInput, MissingHeaderColumn) {
+  fixture::set_line(m + "imu0/data.csv", 1,
+                    "#timestamp [ns],w_RS_S_x [rad s^-1],w_RS_S_y [rad s^-1],w_RS_S_z [rad s^-1],"
+                    "a_RS_S_x [m s^-2],a_RS_S_y [m s^-2]");
+  const std::string e = load_error();
+  STRCMP_CONTAINS((m + "imu0/data.csv:1: missing column 'a_RS_S_z [m s^-2]'").c_str(), e.c_str());
+}
+
+TEST(BadInput, WrongHeaderColumn) {
+  fixture::set_line(m + "cam1/data.csv", 1, "#timestamp [ns],file");
+  STRCMP_CONTAINS((m + "cam1/data.csv:1: header column 1 is 'file', expected 'filename'").c_str(),
+                  load_error().c_str());
+}
+
+TEST(BadInput, MissingColumnInARow) {
+  fixture::set_line(m + "imu0/data.csv", 9, "1004000000,0.001,-0.002,0.02,0.1,0");
+  STRCMP_CONTAINS((m + "imu0/data.csv:9: expected 7 columns, found 6").c_str(), load_error().c_str());
+}
+
+TEST(BadInput, NonIncreasingTimestamp) {
+  const std::vector<std::string> lines = fixture::read_lines(m + "cam0/data.csv");
+  fixture::set_line(m + "cam0/data.csv", 5, lines[2]);  // line 5 repeats line 3's frame
+  const std::string e = load_error();
+  STRCMP_CONTAINS((m + "cam0/data.csv:5: timestamp").c_str(), e.c_str());
+  STRCMP_CONTAINS("is not after the previous one", e.c_str());
+}
+
+TEST(BadInput, NonIncreasingGyroTimestamp) {
+  fixture::set_line(m + "imu0/data.csv", 8, "1000000000,0,0,0,0,0,0");  // line 7 is 1000000000
+  STRCMP_CONTAINS((m + "imu0/data.csv:8: timestamp 1000000000 is not after").c_str(), load_error().c_str());
+}
+
+TEST(BadInput, TimestampNotAnInteger) {
+  fixture::set_line(m + "cam1/data.csv", 3, "1.01e9,1010000000.png");
+  STRCMP_CONTAINS((m + "cam1/data.csv:3: timestamp '1.01e9'").c_str(), load_error().c_str());
+}
+
+TEST(BadInput, UnpairedCameraRow) {
+  fixture::erase_line(m + "cam1/data.csv", 4);  // cam0's 3rd frame loses its partner
+  const std::string e = load_error();
+  STRCMP_CONTAINS((m + "cam0/data.csv:4: unpaired frame: timestamp 1020000000").c_str(), e.c_str());
+  STRCMP_CONTAINS("cam1/data.csv", e.c_str());
+}
+
+TEST(BadInput, MissingImageFile) {
+  std::remove(image(0, 6).c_str());
+  const std::string e = load_error();
+  STRCMP_CONTAINS((m + "cam0/data.csv:8: image file").c_str(), e.c_str());
+  STRCMP_CONTAINS("does not exist", e.c_str());
+}
+
+TEST(BadInput, NanInGyro) {
+  fixture::set_line(m + "imu0/data.csv", 12, "1010000000,0.001,-0.002,nan,0.1,0,9.81");
+  const std::string e = load_error();
+  STRCMP_CONTAINS((m + "imu0/data.csv:12: column 'w_RS_S_z [rad s^-1]'").c_str(), e.c_str());
+  STRCMP_CONTAINS("not finite", e.c_str());
+}
+
+TEST(BadInput, NotANumberInGyro) {
+  fixture::set_line(m + "imu0/data.csv", 12, "1010000000,0.001,abc,0.02,0.1,0,9.81");
+  STRCMP_CONTAINS((m + "imu0/data.csv:12: column 'w_RS_S_y [rad s^-1]': 'abc' is not a number").c_str(),
+                  load_error().c_str());
+}
+
+TEST(BadInput, InfInGroundTruth) {
+  const std::string gt = m + "state_groundtruth_estimate0/data.csv";
+  const std::string line4 = fixture::read_lines(gt)[3];
+  fixture::set_line(gt, 4, line4.substr(0, line4.find(',')) + ",0,0,0,1,0,0,0,inf,0,0,0,0,0,0,0,0");
+  const std::string e = load_error();
+  STRCMP_CONTAINS((gt + ":4: column 'v_RS_R_x [m s^-1]'").c_str(), e.c_str());
+  STRCMP_CONTAINS("not finite", e.c_str());
+}
+
+TEST(BadInput, GroundTruthQuaternionNotUnit) {
+  const std::string gt = m + "state_groundtruth_estimate0/data.csv";
+  const std::string t = fixture::read_lines(gt)[5].substr(0, fixture::read_lines(gt)[5].find(','));
+  fixture::set_line(gt, 6, t + ",0,0,0,0.5,0,0,0,1,0,0,0,0,0,0,0,0");
+  STRCMP_CONTAINS((gt + ":6: q_RS is not a unit quaternion").c_str(), load_error().c_str());
+}
+
+TEST(BadInput, ResolutionMismatchWithSensorYaml) {
+  const std::vector<uint8_t> px(41 * 30, 100);
+  write_png_gray(image(1, 0), px.data(), 41, 30);
+  const std::string e = load_error();
+  STRCMP_CONTAINS(image(1, 0).c_str(), e.c_str());
+  STRCMP_CONTAINS("frame 0 of cam1 is 41x30", e.c_str());
+  STRCMP_CONTAINS("resolution [40, 30]", e.c_str());
+}
+
+TEST(BadInput, WrongSizeLaterFrame) {
+  const std::vector<uint8_t> px(40 * 29, 100);
+  write_png_gray(image(0, 7), px.data(), 40, 29);
+  const std::string e = full_error();
+  STRCMP_CONTAINS("frame 7 (t=1070000000 ns, cam0)", e.c_str());
+  STRCMP_CONTAINS(image(0, 7).c_str(), e.c_str());
+  STRCMP_CONTAINS("image is 40x29", e.c_str());
+}
+
+TEST(BadInput, WrongDepthFrame) {
+  // A 16-bit grayscale PNG in place of frame 4 of cam1.
+  std::FILE* f = std::fopen(image(1, 4).c_str(), "wb");
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png_create_info_struct(png);
+  png_init_io(png, f);
+  png_set_IHDR(png, info, 40, 30, 16, PNG_COLOR_TYPE_GRAY, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_BASE,
+               PNG_FILTER_TYPE_BASE);
+  png_write_info(png, info);
+  std::vector<uint8_t> row(80, 7);
+  for (int y = 0; y < 30; ++y) png_write_row(png, row.data());
+  png_write_end(png, nullptr);
+  png_destroy_write_struct(&png, &info);
+  std::fclose(f);
+  const std::string e = full_error();
+  STRCMP_CONTAINS("frame 4 (t=1040000000 ns, cam1)", e.c_str());
+  STRCMP_CONTAINS(image(1, 4).c_str(), e.c_str());
+  STRCMP_CONTAINS("16-bit", e.c_str());
+}
+
+TEST(BadInput, TruncatedFrame) {
+  const std::string bytes = fixture::read_text(image(0, 9));
+  fixture::write_text(image(0, 9), bytes.substr(0, bytes.size() - 30));
+  const std::string e = full_error();
+  STRCMP_CONTAINS("frame 9 (t=1090000000 ns, cam0)", e.c_str());
+  STRCMP_CONTAINS((image(0, 9) + ": corrupt PNG").c_str(), e.c_str());
+}
+
+TEST(BadInput, CorruptFrame) {
+  std::string bytes = fixture::read_text(image(1, 11));
+  for (size_t i = 45; i < 60; ++i) bytes[i] = static_cast<char>(~bytes[i]);
+  fixture::write_text(image(1, 11), bytes);
+  const std::string e = full_error();
+  STRCMP_CONTAINS("frame 11 (t=1110000000 ns, cam1)", e.c_str());
+  STRCMP_CONTAINS((image(1, 11) + ": corrupt PNG").c_str(), e.c_str());
+}
+
+TEST(BadInput, SensorYamlMissingKey) {
+  const std::string y = m + "cam0/sensor.yaml";
+  std::vector<std::string> lines = fixture::read_lines(y);
+  for (size_t i = 0; i < lines.size(); ++i)
+    if (lines[i].rfind("intrinsics:", 0) == 0) lines[i] = "# intrinsics removed";
+  fixture::write_lines(y, lines);
+  STRCMP_CONTAINS((y + ": missing key 'intrinsics'").c_str(), load_error().c_str());
+}
+
+TEST(BadInput, SensorYamlBadValueNamesLine) {
+  const std::string y = m + "cam1/sensor.yaml";
+  std::vector<std::string> lines = fixture::read_lines(y);
+  size_t line = 0;
+  for (size_t i = 0; i < lines.size(); ++i)
+    if (lines[i].rfind("rate_hz:", 0) == 0) lines[i] = "rate_hz: fast", line = i + 1;
+  fixture::write_lines(y, lines);
+  STRCMP_CONTAINS((y + ":" + std::to_string(line) + ": rate_hz: expected a number").c_str(), load_error().c_str());
+}
+
+TEST(BadInput, SensorYamlShortList) {
+  const std::string y = m + "cam1/sensor.yaml";
+  std::vector<std::string> lines = fixture::read_lines(y);
+  size_t line = 0;
+  for (size_t i = 0; i < lines.size(); ++i)
+    if (lines[i].rfind("resolution:", 0) == 0) lines[i] = "resolution: [40]", line = i + 1;
+  fixture::write_lines(y, lines);
+  STRCMP_CONTAINS((y + ":" + std::to_string(line) + ": resolution: expected 2 numbers, found 1").c_str(),
+                  load_error().c_str());
+}
+
+TEST(BadInput, SensorYamlSyntaxError) {
+  const std::string y = m + "imu0/sensor.yaml";
+  fixture::write_text(y, "sensor_type: imu\nrate_hz: [500\nT_BS: {cols: 4}\n");
+  const std::string e = load_error();
+  STRCMP_CONTAINS((y + ":").c_str(), e.c_str());
+  STRCMP_CONTAINS("YAML syntax error", e.c_str());
+}
+
+TEST(BadInput, SensorYamlWrongType) {
+  const std::string y = m + "imu0/sensor.yaml";
+  fixture::write_text(y, "sensor_type: camera\nrate_hz: 500\n");
+  STRCMP_CONTAINS((y + ":1: sensor_type is 'camera', expected 'imu'").c_str(), load_error().c_str());
+}
+
+TEST(BadInput, PoseNotARotation) {
+  const std::string y = m + "cam0/sensor.yaml";
+  std::string t = fixture::read_text(y);
+  t.replace(t.find("data: [1"), 8, "data: [2");
+  fixture::write_text(y, t);
+  STRCMP_CONTAINS("T_BS: rotation part is not orthonormal", load_error().c_str());
+  STRCMP_CONTAINS(y.c_str(), load_error().c_str());
+}
+
+TEST(BadInput, NoFramesOrNoGyro) {
+  fixture::write_lines(m + "imu0/data.csv", {fixture::read_lines(m + "imu0/data.csv")[0]});
+  STRCMP_CONTAINS((m + "imu0/data.csv:2: no gyro samples").c_str(), load_error().c_str());
+  fixture::write_lines(m + "cam0/data.csv", {"#timestamp [ns],filename"});
+  fixture::write_lines(m + "cam1/data.csv", {"#timestamp [ns],filename"});
+  STRCMP_CONTAINS((m + "cam0/data.csv:2: no frames").c_str(), load_error().c_str());
+}

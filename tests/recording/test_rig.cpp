@@ -1,0 +1,147 @@
+// Rig derivation from T_BS: axis yaw, image orientation, baseline sign and
+// misalignment are read from the files, never assumed.
+#include <cmath>
+
+#include "lumavel/host/rig.hpp"
+#include "recording_fixture.hpp"
+// CppUTest last: its leak-detector macros redefine new.
+#include "CppUTest/TestHarness.h"
+
+using namespace lumavel::host;
+using fixture::error_of;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// T_BS with rotation Rz(yaw) * R0 (R0 given by its columns = camera axes in body) at body x.
+Pose pose(const double cx[3], const double cy[3], const double cz[3], double x, double yaw = 0) {
+  const double c = std::cos(yaw), s = std::sin(yaw);
+  auto rz = [&](const double v[3], int row) {
+    return row == 0 ? c * v[0] - s * v[1] : row == 1 ? s * v[0] + c * v[1] : v[2];
+  };
+  Pose p{};
+  for (int r = 0; r < 3; ++r) {
+    p[static_cast<size_t>(4 * r + 0)] = rz(cx, r);
+    p[static_cast<size_t>(4 * r + 1)] = rz(cy, r);
+    p[static_cast<size_t>(4 * r + 2)] = rz(cz, r);
+  }
+  p[3] = x;
+  p[15] = 1;
+  return p;
+}
+
+// Camera axes (x right, y down, z optical) in the body frame.
+const double kLeftX[3] = {1, 0, 0}, kLeftY[3] = {0, 0, -1}, kLeftZ[3] = {0, 1, 0};
+const double kRightX[3] = {-1, 0, 0}, kRightY[3] = {0, 0, -1}, kRightZ[3] = {0, -1, 0};
+const double kFlipX[3] = {-1, 0, 0}, kFlipY[3] = {0, 0, 1}, kFlipZ[3] = {0, 1, 0};  // left, upside down
+
+Recording rig(const Pose& p0, const Pose& p1, int w = 640, int h = 480) {
+  Recording r;
+  r.root = "/rec/mav0";
+  for (int c = 0; c < 2; ++c) {
+    r.cam[c] = fixture::left_camera(w, h, 0);
+    r.cam[c].fu = 500;
+    r.cam[c].cu = 319.5;
+  }
+  r.cam[0].T_BS = p0;
+  r.cam[1].T_BS = p1;
+  r.frame_period_s = 0.02;
+  return r;
+}
+
+}  // namespace
+
+TEST_GROUP(Rig) {};
+
+TEST(Rig, LeftLookingCam1Ahead) {
+  const EstimatorSettings s = derive_settings(rig(pose(kLeftX, kLeftY, kLeftZ, -0.04), pose(kLeftX, kLeftY, kLeftZ, 0.04)), {});
+  LONGS_EQUAL(40, s.width);
+  LONGS_EQUAL(30, s.height);
+  DOUBLES_EQUAL(kPi / 2, s.cam[0].axis_yaw, 1e-12);
+  DOUBLES_EQUAL(kPi / 2, s.cam[1].axis_yaw, 1e-12);
+  LONGS_EQUAL(-1, s.cam[0].u_sign);
+  DOUBLES_EQUAL(0.08, s.baseline, 1e-12);
+  DOUBLES_EQUAL(0.02, s.frame_period, 0);
+  DOUBLES_EQUAL(500.0 / 16, s.cam[0].fu, 1e-12);
+  DOUBLES_EQUAL(19.5, s.cam[0].cu, 1e-12);  // the optical centre stays the image centre
+}
+
+TEST(Rig, RightLookingCam1Behind) {
+  const EstimatorSettings s =
+      derive_settings(rig(pose(kRightX, kRightY, kRightZ, 0.05), pose(kRightX, kRightY, kRightZ, -0.03)), {});
+  DOUBLES_EQUAL(-kPi / 2, s.cam[0].axis_yaw, 1e-12);
+  LONGS_EQUAL(-1, s.cam[0].u_sign);
+  LONGS_EQUAL(-1, s.cam[1].u_sign);
+  DOUBLES_EQUAL(-0.08, s.baseline, 1e-12);
+}
+
+TEST(Rig, UpsideDownCameraFlipsU) {
+  const EstimatorSettings s = derive_settings(rig(pose(kFlipX, kFlipY, kFlipZ, 0), pose(kLeftX, kLeftY, kLeftZ, 0.1)), {});
+  LONGS_EQUAL(1, s.cam[0].u_sign);
+  LONGS_EQUAL(-1, s.cam[1].u_sign);
+  DOUBLES_EQUAL(kPi / 2, s.cam[0].axis_yaw, 1e-12);
+}
+
+TEST(Rig, MisalignmentIsTheYawBetweenTheCameras) {
+  const double d = 1.5 * kPi / 180;
+  const EstimatorSettings s =
+      derive_settings(rig(pose(kLeftX, kLeftY, kLeftZ, -0.04, 0.3 * d), pose(kLeftX, kLeftY, kLeftZ, 0.04, 1.3 * d)), {});
+  DOUBLES_EQUAL(kPi / 2 + 0.3 * d, s.cam[0].axis_yaw, 1e-12);
+  DOUBLES_EQUAL(d, s.cam[1].axis_yaw - s.cam[0].axis_yaw, 1e-12);
+}
+
+TEST(Rig, IntrinsicsScaleWithPixelCentreConvention) {
+  Recording r = rig(pose(kLeftX, kLeftY, kLeftZ, 0), pose(kLeftX, kLeftY, kLeftZ, 0.08));
+  r.cam[0].cu = 300;
+  const EstimatorSettings s = derive_settings(r, {80, 60});
+  DOUBLES_EQUAL(62.5, s.cam[0].fu, 1e-12);
+  DOUBLES_EQUAL(300.5 / 8 - 0.5, s.cam[0].cu, 1e-12);
+  DOUBLES_EQUAL(39.5, s.cam[1].cu, 1e-12);
+  LONGS_EQUAL(80, s.width);
+  LONGS_EQUAL(60, s.height);
+  const double hfov = 2 * std::atan(320.0 / 500);
+  LONGS_EQUAL(default_kernels(hfov).size(), s.kernels.size());
+  DOUBLES_EQUAL(default_kernels(hfov)[0].sigma, s.kernels[0].sigma, 0);
+}
+
+TEST(Rig, LineScanInputWorksAtHeightOne) {
+  const EstimatorSettings s =
+      derive_settings(rig(pose(kLeftX, kLeftY, kLeftZ, 0), pose(kLeftX, kLeftY, kLeftZ, 0.08), 128, 1), {64, 30});
+  LONGS_EQUAL(64, s.width);
+  LONGS_EQUAL(1, s.height);
+}
+
+TEST(Rig, BadGeometryOrSizeIsRefused) {
+  const Recording ok = rig(pose(kLeftX, kLeftY, kLeftZ, 0), pose(kLeftX, kLeftY, kLeftZ, 0.08));
+  STRCMP_CONTAINS("working width 200", error_of([&] { derive_settings(ok, {200, 30}); }).c_str());
+  STRCMP_CONTAINS("working width 8", error_of([&] { derive_settings(ok, {8, 30}); }).c_str());
+  STRCMP_CONTAINS("working height 129", error_of([&] { derive_settings(ok, {40, 129}); }).c_str());
+  const Recording small = rig(pose(kLeftX, kLeftY, kLeftZ, 0), pose(kLeftX, kLeftY, kLeftZ, 0.08), 32, 24);
+  const std::string e = error_of([&] { derive_settings(small, {40, 30}); });
+  STRCMP_CONTAINS("/rec/mav0/cam0/sensor.yaml: cannot bin the 32x24 sensor up", e.c_str());
+  const double up[3] = {0, 0, 1}, fwd[3] = {0, 1, 0};
+  const Recording looking_up = rig(pose(kLeftX, fwd, up, 0), pose(kLeftX, kLeftY, kLeftZ, 0.08));
+  STRCMP_CONTAINS("/rec/mav0/cam0/sensor.yaml: T_BS: the optical axis is not horizontal",
+                  error_of([&] { derive_settings(looking_up, {}); }).c_str());
+  const Recording no_baseline = rig(pose(kLeftX, kLeftY, kLeftZ, 0.02), pose(kLeftX, kLeftY, kLeftZ, 0.02));
+  STRCMP_CONTAINS("no baseline", error_of([&] { derive_settings(no_baseline, {}); }).c_str());
+}
+
+TEST(Rig, FramePeriodComesFromTheTimestamps) {
+  fixture::TempDir dir;
+  fixture::Options o;
+  o.frame_dt = 16666667;  // 60 Hz, while sensor.yaml says rate_hz: 100
+  o.drop_frames = {5};
+  const EstimatorSettings s = derive_settings(load_recording(fixture::write_recording(dir.path() + "/rec", o)), {});
+  DOUBLES_EQUAL(0.016666667, s.frame_period, 1e-12);
+  DOUBLES_EQUAL(EstimatorSettings{}.gyro_gap, s.gyro_gap, 0);  // 500 Hz gyro: the default holds
+}
+
+TEST(Rig, SlowGyroWidensTheGyroGap) {
+  fixture::TempDir dir;
+  fixture::Options o;
+  o.gyro_dt = 40000000;  // 25 Hz
+  const EstimatorSettings s = derive_settings(load_recording(fixture::write_recording(dir.path() + "/rec", o)), {});
+  DOUBLES_EQUAL(0.1, s.gyro_gap, 1e-12);
+}
