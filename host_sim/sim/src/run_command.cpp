@@ -4,10 +4,13 @@
 
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <string>
 
 #include "cli_args.hpp"
 #include "output_file.hpp"
+#include "lumavel/host/hid_link.hpp"
+#include "lumavel/host/hid_sender.hpp"
 #include "lumavel/host/run_recording.hpp"
 #include "lumavel/host/track_plot.hpp"
 
@@ -30,6 +33,8 @@ const char* const kRunHelp =
     "  --plot FILE.svg        plot file (default: REC_estimates.svg next to the -o file,\n"
     "                         or in the current folder); written when the recording has\n"
     "                         ground truth or when --plot is given\n"
+    "  --hid SPEC             also send every estimate as a USB HID input report through\n"
+    "                         SPEC: uhid, hidg:/dev/hidgN or file:PATH (docs/usb-hid.md)\n"
     "  --quiet                no progress and no summary on standard error\n"
     "  -h, --help             this help\n"
     "\n"
@@ -45,6 +50,7 @@ struct RunArgs {
   std::string engine = "fixed";
   std::string output;
   std::string plot;
+  std::string hid;
   WorkingSize size;
   bool quiet = false;
   bool help = false;
@@ -66,6 +72,8 @@ RunArgs parse(int argc, char** argv) {
       a.output = v == "-" ? std::string() : v;  // "-": standard output
     } else if (option_value(argc, argv, i, "--plot", v)) {
       a.plot = v;
+    } else if (option_value(argc, argv, i, "--hid", v)) {
+      a.hid = v;
     } else if (option_value(argc, argv, i, "--width", v)) {
       a.size.width = parse_int(v, "--width");
     } else if (option_value(argc, argv, i, "--height", v)) {
@@ -124,6 +132,14 @@ int run(const RunArgs& a) {
   options.engine = parse_engine_kind(a.engine);
   options.size = a.size;
 
+  std::unique_ptr<HidSender> hid;
+  if (!a.hid.empty()) {
+    hid = std::make_unique<HidSender>(open_host_link(a.hid), hid_sender_options_for(a.hid));
+    const EstimatorSettings settings = derive_settings(rec, options.size);
+    hid->set_resolution(static_cast<uint16_t>(settings.width), static_cast<uint16_t>(settings.height));
+    options.sink = [&hid](const EngineEstimate& e) { hid->send(e.t_ns, e.v, e.distance, e.heading, e.status); };
+  }
+
   OutputFile out(a.output);
   static char out_buf[1 << 16];
   if (out.get() == stdout) std::setvbuf(stdout, out_buf, _IOFBF, sizeof out_buf);
@@ -161,6 +177,7 @@ int run(const RunArgs& a) {
     if (result.has_truth) std::fprintf(stderr, "%s\n", format_metrics(compute_metrics(result.track)).c_str());
     else std::fprintf(stderr, "no ground truth (state_groundtruth_estimate0/data.csv): no error figures\n");
     if (want_plot) std::fprintf(stderr, "plot: %s\n", plot.c_str());
+    if (hid) std::fprintf(stderr, "hid: %u reports sent through %s, %u overruns\n", hid->sent(), a.hid.c_str(), hid->overruns());
   }
   return 0;
 }

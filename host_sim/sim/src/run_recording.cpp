@@ -41,11 +41,12 @@ RunResult run_recording(const Recording& rec, const RunOptions& options, std::FI
                         const std::function<void(size_t, size_t)>& progress) {
   const EstimatorSettings settings = derive_settings(rec, options.size);
   std::unique_ptr<Engine> engine = make_engine(options.engine, settings);
-  return run_recording(rec, settings, *engine, options.decode_threads, csv, progress);
+  return run_recording(rec, settings, *engine, options.decode_threads, csv, progress, options.sink);
 }
 
 RunResult run_recording(const Recording& rec, const EstimatorSettings& settings, Engine& engine,
-                        int decode_threads, std::FILE* csv, const std::function<void(size_t, size_t)>& progress) {
+                        int decode_threads, std::FILE* csv, const std::function<void(size_t, size_t)>& progress,
+                        const EstimateSink& sink) {
   FileStereoCamera camera(rec, settings.width, settings.height, decode_threads);
 
   RunResult result;
@@ -71,6 +72,7 @@ RunResult run_recording(const Recording& rec, const EstimatorSettings& settings,
     }
     const EngineEstimate e = engine.step(img.t_ns, buf0.data(), buf1.data());
     if (csv) write_row(csv, e, img.t_ns);
+    if (sink) sink(e);
     result.track.push_back(TrackPoint{img.t_ns, e.v, std::nan(""), e.status});
     ++result.frames;
     if (progress && (result.frames & 255) == 0) progress(result.frames, rec.frames.size());

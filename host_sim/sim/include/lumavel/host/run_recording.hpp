@@ -14,10 +14,14 @@
 
 namespace lumavel::host {
 
+// Called with every estimate as it is made (e.g. to send it as a HID report).
+using EstimateSink = std::function<void(const EngineEstimate&)>;
+
 struct RunOptions {
   EngineKind engine = EngineKind::kFixed;
   WorkingSize size;
   int decode_threads = 2;
+  EstimateSink sink;  // optional
 };
 
 struct RunResult {
@@ -40,6 +44,7 @@ RunResult run_recording(const Recording& rec, const RunOptions& options, std::FI
 
 // Same with a given engine (built for `settings`), e.g. an instrumented one.
 RunResult run_recording(const Recording& rec, const EstimatorSettings& settings, Engine& engine,
-                        int decode_threads, std::FILE* csv, const std::function<void(size_t, size_t)>& progress = {});
+                        int decode_threads, std::FILE* csv, const std::function<void(size_t, size_t)>& progress = {},
+                        const EstimateSink& sink = {});
 
 }  // namespace lumavel::host
