@@ -11,10 +11,21 @@ packages=(
   # USB HID readout and the kernel-in-the-loop test
   libhidapi-dev libusb-1.0-0-dev qemu-system-x86 busybox-static cpio xz-utils kmod
   # fuzzing (libFuzzer)
-  clang
+  clang-14 libclang-rt-14-dev
   # firmware cross build and the emulated Cortex-M
   gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm
 )
+
+sudo=""
+if [ "$(id -u)" -ne 0 ]; then
+  sudo=sudo
+fi
+
+# The HID kernel-in-the-loop test fetches a kernel package with apt-get
+# download: it needs package lists even when nothing is missing.
+if [ -z "$(ls /var/lib/apt/lists/ 2>/dev/null | grep -v -e lock -e partial)" ]; then
+  $sudo apt-get update -qq
+fi
 
 missing=()
 for p in "${packages[@]}"; do
@@ -22,10 +33,9 @@ for p in "${packages[@]}"; do
 done
 [ ${#missing[@]} -eq 0 ] && exit 0
 
-sudo=""
-if [ "$(id -u)" -ne 0 ]; then
-  command -v sudo >/dev/null || { echo "setup: need root or sudo to install: ${missing[*]}" >&2; exit 1; }
-  sudo=sudo
+if [ -n "$sudo" ] && ! command -v sudo >/dev/null; then
+  echo "setup: need root or sudo to install: ${missing[*]}" >&2
+  exit 1
 fi
 echo "setup: installing ${missing[*]}" >&2
 $sudo apt-get update -qq

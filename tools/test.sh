@@ -11,7 +11,8 @@ cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j"$jobs"
 ctest --test-dir build --output-on-failure -j"$jobs"
 
+# The unit suites again under the sanitizers (cross builds, emulator and kernel
+# runs are the same bits as above; the sanitizers watch the host code).
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLUMAVEL_SANITIZE=ON >/dev/null
-cmake --build build-asan -j"$jobs"
-# Emulator and kernel runs are the same bits as above; the sanitizers watch host code.
-ctest --test-dir build-asan --output-on-failure -j"$jobs" -LE emulation
+cmake --build build-asan -j"$jobs" --target unit_tests
+ctest --test-dir build-asan --output-on-failure -j"$jobs" -L unit
