@@ -13,7 +13,7 @@ packages=(
   # fuzzing (libFuzzer)
   clang-14 libclang-rt-14-dev
   # firmware cross build and the emulated Cortex-M
-  gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm
+  gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-dev qemu-system-arm
 )
 
 sudo=""

@@ -198,6 +198,12 @@ bool to_estimator_config(const DeviceConfig& c, EstimatorConfig& out) {
   e.gyro_gap_us = c.gyro_gap_us;
   e.low_texture = c.low_texture;
   e.saturated_permille = c.saturated_permille;
+  // Not carried by configuration version 1: the estimator's own defaults
+  // (finite-baseline correction and gyro-offset learning on, stillness
+  // judged over 2 mm and 0.5 s; see firmware/core gyro_offset.hpp).
+  e.options = kOptionBaselineCorrection | kOptionGyroOffsetLearning;
+  e.still_distance = 33554;  // 2 mm in Q7.24
+  e.still_min_us = 500000;
   out = e;
   return true;
 }
