@@ -1,0 +1,71 @@
+// Host build of the firmware app: runs the same App over the same stream code
+// as the QEMU firmware, with host files as the byte source and sink.
+//   lumavel_app_host <in.lvs> <out.lvr>
+#include <cstdio>
+
+#include "lumavel/stream/run_stream.hpp"
+
+namespace {
+
+class FileSource final : public lumavel::stream::ByteSource {
+ public:
+  explicit FileSource(std::FILE* f) : f_(f) {}
+  size_t read(uint8_t* buf, size_t len) override { return std::fread(buf, 1, len, f_); }
+
+ private:
+  std::FILE* f_;
+};
+
+class FileSink final : public lumavel::stream::ByteSink {
+ public:
+  explicit FileSink(std::FILE* f) : f_(f) {}
+  bool write(const uint8_t* buf, size_t len) override { return std::fwrite(buf, 1, len, f_) == len; }
+
+ private:
+  std::FILE* f_;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 3) {
+    std::fprintf(stderr, "usage: %s <in.lvs> <out.lvr>\n", argv[0]);
+    return 1;
+  }
+  std::FILE* in = std::fopen(argv[1], "rb");
+  if (in == nullptr) {
+    std::fprintf(stderr, "%s: cannot open for reading\n", argv[1]);
+    return 1;
+  }
+  std::FILE* out = std::fopen(argv[2], "wb");
+  if (out == nullptr) {
+    std::fprintf(stderr, "%s: cannot open for writing\n", argv[2]);
+    std::fclose(in);
+    return 1;
+  }
+  FileSource src(in);
+  FileSink sink(out);
+  const lumavel::stream::RunSummary s = lumavel::stream::run_stream(src, sink, lumavel::stream::kStreamBoardName);
+  std::fclose(in);
+  const bool closed = std::fclose(out) == 0;
+  const auto& c = s.counters;
+  std::fprintf(stderr, "frames %u, overruns %u, capture errors %u, gyro samples %u, feature requests %u, "
+               "watchdog kicks %u\n", c.frames, c.overruns, c.capture_errors, c.gyro_samples,
+               c.feature_requests, s.watchdog_kicks);
+  switch (s.outcome) {
+    case lumavel::stream::RunOutcome::kOk:
+      return closed ? 0 : 1;
+    case lumavel::stream::RunOutcome::kBadStream:
+      std::fprintf(stderr, "%s: record %u: %s\n", argv[1], s.record_index,
+                   lumavel::stream::to_string(s.stream_error));
+      return 2;
+    case lumavel::stream::RunOutcome::kUnconfigured:
+      std::fprintf(stderr, "%s: no configuration accepted (%s)\n", argv[1],
+                   lumavel::protocol::to_string(s.config_status));
+      return 3;
+    case lumavel::stream::RunOutcome::kWriteFailed:
+      std::fprintf(stderr, "%s: write failed\n", argv[2]);
+      return 4;
+  }
+  return 1;
+}

@@ -1,0 +1,142 @@
+// Writes a synthetic recorded stream (boards/common/stream format): a vehicle
+// driving past a textured wall 1 m to its left at a varying speed, swaying in
+// yaw, seen by two cameras 8 cm apart, with a 500 Hz gyro. On the way the host
+// reads the device info and configuration, sets a new configuration, sends a
+// corrupt one, asks for the configuration through the mailbox, and three
+// frames are missing (an overrun). Deterministic for a given seed.
+//   lumavel_make_test_stream <out.lvs> <width> <height> <frames> [seed]
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "lumavel/protocol/descriptor.hpp"
+#include "lumavel/protocol/device_config.hpp"
+#include "lumavel/protocol/reports.hpp"
+#include "lumavel/stream/format.hpp"
+#include "lumavel/stream/run_stream.hpp"
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kWall = 1.0;       // m, wall distance on the left
+constexpr double kBaseline = 0.08;  // m
+constexpr double kFramePeriod = 1.0 / 60;
+constexpr double kGyroPeriod = 0.002;
+
+struct Out {
+  std::FILE* f;
+  void bytes(const void* p, size_t n) { std::fwrite(p, 1, n, f); }
+  void u8(uint8_t v) { bytes(&v, 1); }
+  void u16(uint16_t v) { u8(static_cast<uint8_t>(v)); u8(static_cast<uint8_t>(v >> 8)); }
+  void u64(uint64_t v) { for (int i = 0; i < 8; ++i) u8(static_cast<uint8_t>(v >> (8 * i))); }
+  void i32(int32_t v) { const auto u = static_cast<uint32_t>(v); for (int i = 0; i < 4; ++i) u8(static_cast<uint8_t>(u >> (8 * i))); }
+};
+
+double distance(double t) { return 1.5 * t + 0.5 * (1 - std::cos(2 * kPi * 0.3 * t)) / (2 * kPi * 0.3); }
+double heading(double t) { return 0.05 * std::sin(2 * kPi * 0.5 * t); }
+double yaw_rate(double t) { return 0.05 * 2 * kPi * 0.5 * std::cos(2 * kPi * 0.5 * t); }
+double texture(double x) {
+  return 128 + 60 * std::sin(2 * kPi * x / 0.37 + 1) + 40 * std::sin(2 * kPi * x / 0.13 + 2) +
+         20 * std::sin(2 * kPi * x / 0.051);
+}
+
+void render(double t, double cam_x, int w, int h, uint32_t& rng, uint8_t* px) {
+  const double th = heading(t);
+  const double fu = 34.64 * w / 40.0;
+  const double cu = (w - 1) / 2.0;
+  const double cx = distance(t) + cam_x * std::cos(th);
+  const double cy = cam_x * std::sin(th);
+  for (int u = 0; u < w; ++u) {
+    const double dir = th + kPi / 2 - std::atan((u - cu) / fu);  // looking left, upright
+    const double r = (kWall - cy) / std::sin(dir);
+    const double x = cx + r * std::cos(dir);
+    for (int v = 0; v < h; ++v) {
+      rng = rng * 1664525u + 1013904223u;
+      const double noise = static_cast<double>(rng >> 29) - 3.5;  // +-3.5 grey levels
+      const double g = texture(x) * (1.0 - 0.003 * (v - h / 2.0)) + noise;
+      px[v * w + u] = static_cast<uint8_t>(std::lround(std::fmin(255.0, std::fmax(0.0, g))));
+    }
+  }
+}
+
+void set_feature(Out& o, const uint8_t* report, size_t n) {
+  o.u8(lumavel::stream::kTagSetFeature);
+  o.u8(report[0]);
+  o.u8(static_cast<uint8_t>(n));
+  o.bytes(report, n);
+}
+
+void get_feature(Out& o, uint8_t id) {
+  o.u8(lumavel::stream::kTagGetFeature);
+  o.u8(id);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 5 || argc > 6) {
+    std::fprintf(stderr, "usage: %s <out.lvs> <width> <height> <frames> [seed]\n", argv[0]);
+    return 1;
+  }
+  const int w = std::atoi(argv[2]);
+  const int h = std::atoi(argv[3]);
+  const int frames = std::atoi(argv[4]);
+  uint32_t rng = argc == 6 ? static_cast<uint32_t>(std::strtoul(argv[5], nullptr, 10)) : 1u;
+  if (w < 16 || w > 2048 || h < 1 || h > 2048 || frames < 1) {
+    std::fprintf(stderr, "%s: width 16..2048, height 1..2048, frames >= 1\n", argv[0]);
+    return 1;
+  }
+  Out o{std::fopen(argv[1], "wb")};
+  if (o.f == nullptr) {
+    std::fprintf(stderr, "%s: cannot open for writing\n", argv[1]);
+    return 1;
+  }
+  o.bytes(lumavel::stream::kMagic, 4);
+  o.u16(static_cast<uint16_t>(w));
+  o.u16(static_cast<uint16_t>(h));
+
+  std::vector<uint8_t> px(static_cast<size_t>(w) * static_cast<size_t>(h));
+  int gyro_k = 0;
+  for (int k = 0; k < frames; ++k) {
+    const double t = 0.1 + k * kFramePeriod;
+    for (; gyro_k * kGyroPeriod <= t; ++gyro_k) {
+      const double tg = gyro_k * kGyroPeriod;
+      o.u8(lumavel::stream::kTagGyro);
+      o.u64(static_cast<uint64_t>(std::llround(tg * 1e9)));
+      o.i32(static_cast<int32_t>(std::lround(yaw_rate(tg) * (1 << 24))));
+    }
+    if (k == frames * 3 / 10) {
+      get_feature(o, lumavel::protocol::kReportDeviceInfo);
+      get_feature(o, lumavel::protocol::kReportConfig);
+    }
+    if (k == frames / 2) {
+      lumavel::protocol::DeviceConfig c = lumavel::stream::defaults_for(static_cast<uint16_t>(w), static_cast<uint16_t>(h));
+      c.tau_us = 250000;
+      uint8_t report[lumavel::protocol::kConfigSize];
+      const size_t n = lumavel::protocol::encode_config(c, report, sizeof report);
+      set_feature(o, report, n);
+      report[20] ^= 0x40;  // corrupt: the device must refuse it (CRC)
+      set_feature(o, report, n);
+      uint8_t mailbox[lumavel::protocol::kMailboxSize];
+      const size_t m = lumavel::protocol::encode_mailbox_request(lumavel::protocol::kReportConfig, mailbox, sizeof mailbox);
+      set_feature(o, mailbox, m);
+      get_feature(o, lumavel::protocol::kReportDeviceInfo);
+    }
+    const bool dropped = k >= frames * 6 / 10 && k < frames * 6 / 10 + 3;
+    if (dropped) continue;
+    o.u8(lumavel::stream::kTagFrame);
+    o.u64(static_cast<uint64_t>(std::llround(t * 1e9)));
+    render(t, 0.0, w, h, rng, px.data());
+    o.bytes(px.data(), px.size());
+    render(t, kBaseline, w, h, rng, px.data());
+    o.bytes(px.data(), px.size());
+  }
+  if (std::fclose(o.f) != 0) {
+    std::fprintf(stderr, "%s: write failed\n", argv[1]);
+    return 1;
+  }
+  return 0;
+}

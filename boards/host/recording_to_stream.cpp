@@ -1,0 +1,103 @@
+// Converts a recording (EuRoC/ASL layout, host_sim/recording) into the compact
+// stream the stream boards read (boards/common/stream/.../format.hpp): frames
+// binned to the working resolution like a board driver bins its sensor, and the
+// body yaw rate as RateQ24, in time order (each frame after the gyro samples up
+// to its time, so a firmware reading the stream sees them as a sensor would).
+//   lumavel_recording_to_stream <recording dir> <out.lvs> <width> <height>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <vector>
+
+#include "lumavel/host/file_camera.hpp"
+#include "lumavel/host/file_gyro.hpp"
+#include "lumavel/host/recording.hpp"
+#include "lumavel/host/recording_error.hpp"
+#include "lumavel/stream/format.hpp"
+
+namespace {
+
+struct Out {
+  std::FILE* f;
+  void bytes(const void* p, size_t n) { std::fwrite(p, 1, n, f); }
+  void u8(uint8_t v) { bytes(&v, 1); }
+  void u16(uint16_t v) { u8(static_cast<uint8_t>(v)); u8(static_cast<uint8_t>(v >> 8)); }
+  void u64(uint64_t v) { for (int i = 0; i < 8; ++i) u8(static_cast<uint8_t>(v >> (8 * i))); }
+  void i32(int32_t v) {
+    const auto u = static_cast<uint32_t>(v);
+    for (int i = 0; i < 4; ++i) u8(static_cast<uint8_t>(u >> (8 * i)));
+  }
+  void gyro(const lumavel::hal::GyroSample& s) {
+    u8(lumavel::stream::kTagGyro);
+    u64(s.t_ns);
+    i32(s.rate_z);
+  }
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 5) {
+    std::fprintf(stderr, "usage: %s <recording dir> <out.lvs> <width> <height>\n", argv[0]);
+    return 1;
+  }
+  const int w = std::atoi(argv[3]);
+  const int h = std::atoi(argv[4]);
+  if (w < 16 || w > 2048 || h < 1 || h > 2048) {
+    std::fprintf(stderr, "%s: width 16..2048 and height 1..2048\n", argv[0]);
+    return 1;
+  }
+  try {
+    const lumavel::host::Recording rec = lumavel::host::load_recording(argv[1]);
+    lumavel::host::FileStereoCamera camera(rec, w, h);
+    lumavel::host::FileGyro gyro(rec);
+    Out o{std::fopen(argv[2], "wb")};
+    if (o.f == nullptr) {
+      std::fprintf(stderr, "%s: cannot open for writing\n", argv[2]);
+      return 1;
+    }
+    o.bytes(lumavel::stream::kMagic, 4);
+    o.u16(static_cast<uint16_t>(w));
+    o.u16(static_cast<uint16_t>(h));
+    std::vector<uint8_t> px[2];
+    px[0].resize(static_cast<size_t>(w) * static_cast<size_t>(h));
+    px[1].resize(px[0].size());
+    lumavel::hal::StereoImage img{0, {px[0].data(), px[1].data()}, static_cast<uint16_t>(w),
+                                  static_cast<uint16_t>(h)};
+    size_t frames = 0, samples = 0;
+    for (;;) {
+      const lumavel::hal::CaptureStatus st = camera.capture(img);
+      if (st == lumavel::hal::CaptureStatus::kEnd) break;
+      if (st == lumavel::hal::CaptureStatus::kError) {
+        std::fprintf(stderr, "%s\n", camera.error().c_str());
+        std::fclose(o.f);
+        return 2;
+      }
+      uint64_t t = 0;
+      lumavel::hal::GyroSample s{};
+      while (gyro.peek_time(t) && t <= img.t_ns && gyro.read(s)) {
+        o.gyro(s);
+        ++samples;
+      }
+      o.u8(lumavel::stream::kTagFrame);
+      o.u64(img.t_ns);
+      o.bytes(px[0].data(), px[0].size());
+      o.bytes(px[1].data(), px[1].size());
+      ++frames;
+    }
+    lumavel::hal::GyroSample s{};
+    if (gyro.read(s)) {  // the first sample after the last frame: interpolation needs it
+      o.gyro(s);
+      ++samples;
+    }
+    if (std::fclose(o.f) != 0) {
+      std::fprintf(stderr, "%s: write failed\n", argv[2]);
+      return 1;
+    }
+    std::fprintf(stderr, "%s: %zu frames at %dx%d, %zu gyro samples\n", argv[2], frames, w, h, samples);
+    return 0;
+  } catch (const std::exception& e) {  // RecordingError names file and line/frame
+    std::fprintf(stderr, "%s\n", e.what());
+    return 2;
+  }
+}

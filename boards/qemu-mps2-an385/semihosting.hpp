@@ -1,0 +1,47 @@
+// ARM semihosting (bkpt 0xAB on M-profile): file I/O and exit through the
+// debugger, here QEMU with -semihosting-config enable=on,target=native.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+
+#include "lumavel/stream/byte_io.hpp"
+
+namespace lumavel::semihost {
+
+// Command line given to QEMU (-semihosting-config ...,arg=a,arg=b): NUL-terminated.
+bool command_line(char* buf, size_t cap);
+// Handle or -1. mode: 1 = "rb", 5 = "wb".
+int open(const char* path, int mode);
+void close(int handle);
+// Bytes transferred.
+size_t read(int handle, uint8_t* buf, size_t len);
+size_t write(int handle, const uint8_t* buf, size_t len);
+void write_text(const char* text);  // to QEMU's console
+[[noreturn]] void exit(int code);   // SYS_EXIT_EXTENDED: 0..255 reach QEMU's exit status
+
+constexpr int kModeReadBinary = 1;
+constexpr int kModeWriteBinary = 5;
+
+class FileSource final : public stream::ByteSource {
+ public:
+  explicit FileSource(int handle) : h_(handle) {}
+  size_t read(uint8_t* buf, size_t len) override { return semihost::read(h_, buf, len); }
+
+ private:
+  int h_;
+};
+
+// Buffers small writes: each semihosting call is a trap into QEMU.
+class FileSink final : public stream::ByteSink {
+ public:
+  explicit FileSink(int handle) : h_(handle) {}
+  bool write(const uint8_t* buf, size_t len) override;
+  bool flush();
+
+ private:
+  int h_;
+  uint8_t buf_[512]{};
+  size_t used_ = 0;
+};
+
+}  // namespace lumavel::semihost
