@@ -159,9 +159,18 @@ std::string track_svg(const std::vector<TrackPoint>& track, const std::string& t
     s += "<text x=\"" + fmt("%.0f", kWidth - kRight) + "\" y=\"" + fmt("%.0f", kTop - 6) +
          "\" text-anchor=\"end\" fill=\"#222\">ground truth V</text>\n";
     const double top = kTop + kPanelH + kGap;
-    const Axis ae = range(err, err);
-    s += panel_frame(ax, ae, top, "V_est - V (m/s)", true);
-    s += polyline(t, err, ax, ae, top, "#c0392b");
+    // The error scale comes from the errors after the first second (as in the
+    // paper's Fig. 4): the start-up frames would flatten everything else.
+    // Earlier points beyond the scale are clipped to its edge.
+    std::vector<double> settled;
+    for (size_t i = 0; i < err.size(); ++i)
+      if (t[i] >= 1.0) settled.push_back(err[i]);
+    const Axis ae = range(settled.empty() ? err : settled, settled.empty() ? err : settled);
+    std::vector<double> shown = err;
+    for (double& e : shown)
+      if (std::isfinite(e)) e = std::min(std::max(e, ae.lo), ae.hi);
+    s += panel_frame(ax, ae, top, settled.empty() ? "V_est - V (m/s)" : "V_est - V (m/s), scaled after 1 s", true);
+    s += polyline(t, shown, ax, ae, top, "#c0392b");
   }
   s += "<text x=\"" + fmt("%.0f", kWidth / 2) + "\" y=\"" + fmt("%.0f", height - 10) +
        "\" text-anchor=\"middle\">time (s)</text>\n</svg>\n";
