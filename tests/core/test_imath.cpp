@@ -61,3 +61,24 @@ TEST(IMath, WrapPi) {
   DOUBLES_EQUAL(-M_PI + 0.1, rad(fx::wrap_pi(std::llround(std::ldexp(M_PI + 0.1, 28)))), 1e-8);
   DOUBLES_EQUAL(0.5, rad(fx::wrap_pi(std::llround(std::ldexp(0.5 + 6 * M_PI, 28)))), 1e-7);
 }
+
+TEST(IMath, Atan2FastWithin2e7Rad) {
+  double worst = 0;
+  for (double a = -3.1; a < 3.14; a += 0.0037)
+    for (double r : {3.0, 1e3, 1e6, 2e9}) {
+      const int32_t y = static_cast<int32_t>(std::lround(r * std::sin(a)));
+      const int32_t x = static_cast<int32_t>(std::lround(r * std::cos(a)));
+      worst = std::fmax(worst, std::fabs(std::atan2(y, x) - rad(fx::atan2_fast(y, x))));
+    }
+  std::printf("\n  atan2_fast worst error %.2e rad\n", worst);
+  CHECK(worst < 2e-7);
+}
+
+TEST(IMath, Isqrt32) {
+  const uint32_t vals[] = {0, 1, 2, 3, 4, 15, 16, 17, 1000000, 0x3FFFFFFFu, 0xFFFFFFFFu};
+  for (uint32_t v : vals) {
+    const uint64_t r = fx::isqrt32(v);
+    CHECK(r * r <= v);
+    CHECK((r + 1) * (r + 1) > v);
+  }
+}

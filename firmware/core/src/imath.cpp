@@ -64,6 +64,57 @@ int32_t exp_neg_q27(int64_t x_q27) {
   return static_cast<int32_t>(shr_round(p, static_cast<int>(k)));
 }
 
+AngleQ28 atan2_fast(int32_t y32, int32_t x32) {
+  if (x32 == 0 && y32 == 0) return 0;
+  // Quadrant to x > 0, then max(|x|, |y|) into [2^28, 2^29): no overflow
+  // under the CORDIC gain (1.65), and 28 bits of the ratio whatever the scale.
+  int64_t x = x32, y = y32, base = 0;
+  if (x < 0) {
+    base = y >= 0 ? kPiQ28 : -kPiQ28;
+    x = -x;
+    y = -y;
+  }
+  while (x >= (int64_t{1} << 29) || y >= (int64_t{1} << 29) || y <= -(int64_t{1} << 29)) {
+    x /= 2;
+    y /= 2;
+  }
+  while (x < (int64_t{1} << 28) && y < (int64_t{1} << 28) && y > -(int64_t{1} << 28)) {
+    x *= 2;
+    y *= 2;
+  }
+  int32_t xs = static_cast<int32_t>(x), ys = static_cast<int32_t>(y), z = 0;
+  for (int i = 0; i < 24; ++i) {
+    const int32_t dx = xs >> i, dy = ys >> i;
+    const int32_t a = static_cast<int32_t>((kAtanTable[i] + 8) >> 4);  // Q28
+    if (ys > 0) {
+      xs += dy;
+      ys -= dx;
+      z += a;
+    } else {
+      xs -= dy;
+      ys += dx;
+      z -= a;
+    }
+  }
+  return static_cast<AngleQ28>(base + z);
+}
+
+uint32_t isqrt32(uint32_t v) {
+  uint32_t r = 0;
+  uint32_t bit = uint32_t{1} << 30;
+  while (bit > v) bit >>= 2;
+  while (bit != 0) {
+    if (v >= r + bit) {
+      v -= r + bit;
+      r = (r >> 1) + bit;
+    } else {
+      r >>= 1;
+    }
+    bit >>= 2;
+  }
+  return r;
+}
+
 uint32_t isqrt64(uint64_t v) {
   uint64_t r = 0;
   uint64_t bit = uint64_t{1} << 62;

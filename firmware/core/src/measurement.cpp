@@ -109,16 +109,23 @@ AngleQ28 half_phase(const CameraOutputs& c0, const CameraOutputs& c1, ValueQ28 d
     u = sat ? kUMax : fx::shr_round(w2 * s2, 12);
     u = u < kUMin ? kUMin : (u > kUMax ? kUMax : u);
   }
-  const int64_t root_u = fx::isqrt64(static_cast<uint64_t>(u) << 24);                       // Q24
-  // b = -R / w = -R sigma / sqrt(u)
+  // 1/w = sigma / sqrt(u): u brought into [2^28, 2^30) by even shifts for a
+  // 15-bit root, then one division (32-bit work except that division).
+  int s2 = 0;
+  while (u < (int64_t{1} << 28)) {
+    u *= 4;
+    ++s2;
+  }
+  const int64_t root = fx::isqrt32(static_cast<uint32_t>(u));  // sqrt(u) * 2^(12 + s2)
+  const int64_t inv_w = fx::div_q(sigma, root, 8 + s2);           // Q24 rad
   const int64_t a0 = clamp30(int64_t{c0.f[k]} - dc0), a1 = clamp30(int64_t{c1.f[k]} - dc1);
-  const int64_t b0 = clamp30(fx::div_q(-r0 * sigma, root_u, 4)), b1 = clamp30(fx::div_q(-r1 * sigma, root_u, 4));
+  const int64_t b0 = clamp30(-fx::shr_round(r0 * inv_w, 16)), b1 = clamp30(-fx::shr_round(r1 * inv_w, 16));
   int64_t re = a1 * a0 + b1 * b0, im = b1 * a0 - a1 * b0;  // Q56, |.| < 2^61
   while (re >= (int64_t{1} << 31) || re < -(int64_t{1} << 31) || im >= (int64_t{1} << 31) || im < -(int64_t{1} << 31)) {
     re /= 2;
     im /= 2;
   }
-  return fx::atan2_i32(static_cast<int32_t>(im), static_cast<int32_t>(re)) / 2;
+  return fx::atan2_fast(static_cast<int32_t>(im), static_cast<int32_t>(re)) / 2;
 }
 
 }  // namespace

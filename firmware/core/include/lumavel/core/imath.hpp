@@ -12,8 +12,12 @@ namespace lumavel::fx {
 AngleQ28 atan2_i32(int32_t y, int32_t x);
 // exp(-x) for x >= 0 in Q4.27 (x < 16) -> Q1.30; 0 beyond. |relative error| <= 2e-9.
 int32_t exp_neg_q27(int64_t x_q27);
+// atan2 with 32-bit arithmetic only (per-frame use on small cores): |y|, |x|
+// any int32; 24 CORDIC steps, |error| <= 2e-7 rad.
+AngleQ28 atan2_fast(int32_t y, int32_t x);
 // floor(sqrt(v)).
 uint32_t isqrt64(uint64_t v);
+uint32_t isqrt32(uint32_t v);
 // Wraps an angle difference into [-pi, pi).
 AngleQ28 wrap_pi(int64_t a_q28);
 
