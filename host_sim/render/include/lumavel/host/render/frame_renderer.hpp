@@ -1,0 +1,47 @@
+// One camera image of the recording: exposure blur (average of sub-frames
+// spread over the exposure, enough that the scene moves at most 0.5 px
+// between two and a moving edge is within 0.5 % of its exact profile),
+// lighting (flicker, lights off), Gaussian pixel noise and
+// 8-bit rounding with clipping.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "lumavel/host/render/scenario.hpp"
+#include "lumavel/host/render/scene.hpp"
+#include "lumavel/host/render/stereo_rig.hpp"
+#include "lumavel/host/render/trajectory.hpp"
+
+namespace lumavel::host::render {
+
+// Multiplicative light level at scenario time t (0 while the lights are off).
+double light_gain(const LightingSpec& l, double t);
+
+struct FrameStats {
+  int subframes = 0;
+  double background_fraction = 0;
+};
+
+class FrameRenderer {
+ public:
+  FrameRenderer(const Scenario& s, const Scene& scene);
+  int frame_count() const;
+  double frame_time(int i) const;      // mid-exposure, scenario seconds
+  int64_t frame_stamp_ns(int i) const;  // as written in the recording
+  const StereoRig& rig() const { return rig_; }
+  const Trajectory& trajectory() const { return traj_; }
+  // Renders camera `cam` of frame `i` into `out` (width*height bytes).
+  FrameStats render(int i, int cam, std::vector<uint8_t>& out) const;
+  // The same before noise and rounding (gray levels, may exceed 0..255).
+  FrameStats render_radiance(int i, int cam, std::vector<double>& out) const;
+
+ private:
+  int subframes(double t_mid, int cam) const;
+  const Scenario& s_;
+  const Scene& scene_;
+  StereoRig rig_;
+  Trajectory traj_;
+  int64_t period_ns_;
+};
+
+}  // namespace lumavel::host::render

@@ -1,0 +1,108 @@
+// A render scenario in physical units, as read from YAML (keys documented in
+// host_sim/scenarios/README.md). Plain data: the loader validates, the
+// renderer trusts it.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace lumavel::host::render {
+
+enum class LookSide { Left, Right };
+
+struct CameraSpec {
+  int width = 640, height = 480;
+  double hfov_deg = 50, vfov_deg = 40;
+  double rate_hz = 60;
+  double exposure_frames = 0;   // exposure time / frame period
+  double baseline_m = 0.08;     // distance between optical centres
+  double misalignment_deg = 0;  // yaw of cam1 relative to cam0 (CCW positive)
+  LookSide look = LookSide::Left;
+  bool cam1_ahead = true;       // cam1 sits at +h/2 on body x, cam0 at -h/2
+  double rig_yaw_deg = 0;       // yaw of both cameras away from orthogonal
+  double first_frame_s = 0;     // mid-exposure time of frame 0
+};
+
+enum class PatternKind { Uniform, Sinusoid, Checker, Photo };
+enum class Tiling { None, Mirror, Repeat };
+
+struct PatternSpec {
+  PatternKind kind = PatternKind::Uniform;
+  double value = 128;  // uniform gray level
+  // sinusoid: mean + amplitude * combine(sin(2 pi s/Ps + ph_s), sin(2 pi t/Pt + ph_t))
+  double mean = 128, amplitude = 127;
+  double period_h_m = 0.5, period_v_m = 0.5;
+  double phase_h_deg = 0, phase_v_deg = 0;
+  bool product = false;  // false: average of the two sines; true: product
+  // checker: squares of `square_m`, levels low/high, origin at the plane corner
+  double square_m = 0.5, low = 0, high = 255;
+  // photo: file (PNG/JPEG/PGM), physical size of one copy, tiling beyond it
+  std::string file;
+  double width_m = 1, height_m = 1;
+  Tiling tiling = Tiling::None;
+  double offset_h_m = 0, offset_v_m = 0;  // photo origin on the plane
+};
+
+// A vertical rectangle: its base runs from `from` to `to` (world x, y), it
+// spans z in [z_min, z_max]. Plane coordinates: s from `from` towards `to`,
+// v from z_max downwards, so the texture reads upright from the side where
+// from -> to runs left to right.
+struct PlaneSpec {
+  std::string name;
+  double from[2] = {0, 0}, to[2] = {1, 0};
+  double z_min = -1, z_max = 1;
+  PatternSpec pattern;
+};
+
+enum class SegmentKind { Straight, Arc };
+enum class SpeedProfile { Linear, Smooth };
+
+struct SegmentSpec {
+  SegmentKind kind = SegmentKind::Straight;
+  double duration_s = 1;
+  double v0 = 0, v1 = 0;     // speed along body x at start and end, m/s (signed)
+  SpeedProfile profile = SpeedProfile::Linear;
+  double curvature = 0;      // 1/m, positive = left turn (CCW)
+};
+
+struct TrajectorySpec {
+  double x0 = 0, y0 = 0, z = 0, heading0_deg = 0;
+  std::vector<SegmentSpec> segments;
+};
+
+struct LightingSpec {
+  double flicker_hz = 0;  // frequency of the intensity ripple
+  double flicker_amplitude = 0;  // relative, gain = 1 + a sin(2 pi f t + ph)
+  double flicker_phase_deg = 0;
+  std::vector<std::pair<double, double>> dark;  // [t0, t1) lights off, s
+};
+
+struct ImuSpec {
+  double rate_hz = 200;
+  double offset_s = 0.0013;          // first sample time (not frame-synchronous)
+  double gyro_noise_density = 0;     // rad/s/sqrt(Hz), white
+  double gyro_random_walk = 0;       // rad/s^2/sqrt(Hz), written to sensor.yaml only
+  double gyro_bias_z = 0;            // rad/s, constant
+  double accel_noise_density = 0;    // m/s^2/sqrt(Hz)
+};
+
+struct Scenario {
+  std::string file;  // where it was read from (messages)
+  std::string description;
+  double duration_s = 4;
+  uint64_t seed = 1;
+  int64_t start_ns = 1000000000;  // timestamp of scenario time 0
+  double groundtruth_rate_hz = 200;
+  CameraSpec camera;
+  TrajectorySpec trajectory;
+  double background = 128;
+  std::vector<PlaneSpec> planes;
+  LightingSpec lighting;
+  double pixel_noise_sigma = 0;  // gray levels
+  ImuSpec imu;
+  std::vector<int> dropped_frames;
+  double drop_rate = 0;          // probability that a frame pair is lost
+};
+
+}  // namespace lumavel::host::render

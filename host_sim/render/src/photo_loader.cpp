@@ -1,0 +1,115 @@
+// Photographs for textures: any PNG (libpng's simplified API converts colour
+// to gray), JPEG (libjpeg, decoded as grayscale) or binary PGM.
+#include <png.h>
+#include <csetjmp>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#if LUMAVEL_HAVE_JPEG
+#include <jpeglib.h>
+#endif
+
+#include "lumavel/host/render/surface_pattern.hpp"
+
+namespace lumavel::host::render {
+namespace {
+
+std::vector<unsigned char> load_png(const std::string& path, int& w, int& h) {
+  png_image img{};
+  img.version = PNG_IMAGE_VERSION;
+  if (!png_image_begin_read_from_file(&img, path.c_str()))
+    throw std::runtime_error(path + ": cannot read PNG: " + img.message);
+  img.format = PNG_FORMAT_GRAY;
+  std::vector<unsigned char> px(PNG_IMAGE_SIZE(img));
+  if (!png_image_finish_read(&img, nullptr, px.data(), 0, nullptr)) {
+    const std::string msg = img.message;
+    png_image_free(&img);
+    throw std::runtime_error(path + ": corrupt PNG: " + msg);
+  }
+  w = static_cast<int>(img.width);
+  h = static_cast<int>(img.height);
+  return px;
+}
+
+#if LUMAVEL_HAVE_JPEG
+struct JpegError {
+  jpeg_error_mgr mgr;
+  std::jmp_buf jump;
+  char message[JMSG_LENGTH_MAX];
+};
+
+void jpeg_fail(j_common_ptr cinfo) {
+  auto* err = reinterpret_cast<JpegError*>(cinfo->err);
+  (*cinfo->err->format_message)(cinfo, err->message);
+  std::longjmp(err->jump, 1);
+}
+
+std::vector<unsigned char> load_jpeg(const std::string& path, int& w, int& h) {
+  std::unique_ptr<FILE, int (*)(FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
+  if (!f) throw std::runtime_error(path + ": cannot open JPEG");
+  jpeg_decompress_struct cinfo{};
+  JpegError err{};
+  cinfo.err = jpeg_std_error(&err.mgr);
+  err.mgr.error_exit = jpeg_fail;
+  std::vector<unsigned char> px;  // declared before setjmp: no non-trivial locals after it
+  if (setjmp(err.jump)) {
+    jpeg_destroy_decompress(&cinfo);
+    throw std::runtime_error(path + ": corrupt JPEG: " + err.message);
+  }
+  jpeg_create_decompress(&cinfo);
+  jpeg_stdio_src(&cinfo, f.get());
+  jpeg_read_header(&cinfo, TRUE);
+  cinfo.out_color_space = JCS_GRAYSCALE;
+  jpeg_start_decompress(&cinfo);
+  w = static_cast<int>(cinfo.output_width);
+  h = static_cast<int>(cinfo.output_height);
+  px.resize(static_cast<size_t>(w) * static_cast<size_t>(h));
+  while (cinfo.output_scanline < cinfo.output_height) {
+    JSAMPROW row = px.data() + static_cast<size_t>(cinfo.output_scanline) * static_cast<size_t>(w);
+    jpeg_read_scanlines(&cinfo, &row, 1);
+  }
+  jpeg_finish_decompress(&cinfo);
+  jpeg_destroy_decompress(&cinfo);
+  return px;
+}
+
+#else
+std::vector<unsigned char> load_jpeg(const std::string& path, int&, int&) {
+  throw std::runtime_error(path + ": JPEG photos need libjpeg (apt: libjpeg-dev) at build time");
+}
+#endif
+
+std::vector<unsigned char> load_pgm(const std::string& path, int& w, int& h) {
+  std::ifstream in(path, std::ios::binary);
+  std::string magic;
+  int maxval = 0;
+  in >> magic >> w >> h >> maxval;
+  if (!in || magic != "P5" || w <= 0 || h <= 0 || maxval != 255)
+    throw std::runtime_error(path + ": not a binary 8-bit PGM");
+  in.get();
+  std::vector<unsigned char> px(static_cast<size_t>(w) * static_cast<size_t>(h));
+  in.read(reinterpret_cast<char*>(px.data()), static_cast<std::streamsize>(px.size()));
+  if (!in) throw std::runtime_error(path + ": truncated PGM");
+  return px;
+}
+
+}  // namespace
+
+std::vector<unsigned char> load_photo_gray(const std::string& path, int& w, int& h) {
+  unsigned char sig[8] = {};
+  {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw std::runtime_error(path + ": cannot open photo");
+    in.read(reinterpret_cast<char*>(sig), 8);
+  }
+  if (sig[0] == 0x89 && sig[1] == 'P' && sig[2] == 'N' && sig[3] == 'G') return load_png(path, w, h);
+  if (sig[0] == 0xFF && sig[1] == 0xD8) return load_jpeg(path, w, h);
+  if (sig[0] == 'P' && sig[1] == '5') return load_pgm(path, w, h);
+  throw std::runtime_error(path + ": photo is neither PNG, JPEG nor binary PGM");
+}
+
+}  // namespace lumavel::host::render

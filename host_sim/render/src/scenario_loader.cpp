@@ -1,0 +1,381 @@
+// YAML -> Scenario with strict checking: every map's keys are validated so a
+// typo is an error naming file and line, never a silently ignored setting.
+#include "lumavel/host/render/scenario_loader.hpp"
+
+#include "lumavel/host/render/view_renderer.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <fstream>
+#include <initializer_list>
+#include <limits>
+#include <sstream>
+
+namespace lumavel::host::render {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kPi = 3.14159265358979323846;
+
+class Reader {
+ public:
+  explicit Reader(std::string file) : file_(std::move(file)) {}
+
+  [[noreturn]] void fail(const YAML::Node& n, const std::string& what) const {
+    std::ostringstream os;
+    os << file_;
+    if (n.IsDefined() && n.Mark().line >= 0) os << ':' << (n.Mark().line + 1);
+    os << ": " << what;
+    throw ScenarioError(os.str());
+  }
+
+  void expect_map(const YAML::Node& n, const std::string& where) const {
+    if (!n.IsMap()) fail(n, "'" + where + "' must be a map of key: value");
+  }
+
+  void check_keys(const YAML::Node& map, const std::string& where,
+                  std::initializer_list<const char*> allowed) const {
+    expect_map(map, where);
+    for (const auto& kv : map) {
+      const std::string key = kv.first.as<std::string>();
+      bool ok = false;
+      for (const char* a : allowed) ok = ok || key == a;
+      if (!ok) {
+        std::string list;
+        for (const char* a : allowed) list += std::string(list.empty() ? "" : ", ") + a;
+        fail(kv.first, "unknown key '" + key + "' in '" + where + "' (allowed: " + list + ")");
+      }
+    }
+  }
+
+  double to_num(const YAML::Node& n, const std::string& key, double lo, double hi) const {
+    if (!n.IsScalar()) fail(n, "'" + key + "' must be a number");
+    double v = 0;
+    try {
+      v = n.as<double>();
+    } catch (const YAML::Exception&) {
+      fail(n, "'" + key + "' must be a number, got '" + n.Scalar() + "'");
+    }
+    if (!std::isfinite(v)) fail(n, "'" + key + "' must be finite");
+    if (v < lo || v > hi) {
+      std::ostringstream os;
+      os << "'" << key << "' = " << v << " is out of range [" << lo << ", " << hi << "]";
+      fail(n, os.str());
+    }
+    return v;
+  }
+
+  double num(const YAML::Node& map, const char* key, double def, double lo, double hi) const {
+    const YAML::Node n = map[key];
+    if (!n) return def;
+    return to_num(n, key, lo, hi);
+  }
+  double req_num(const YAML::Node& map, const char* key, double lo, double hi,
+                 const std::string& where) const {
+    const YAML::Node n = map[key];
+    if (!n) fail(map, "'" + where + "' needs '" + key + "'");
+    return to_num(n, key, lo, hi);
+  }
+
+  std::vector<double> list(const YAML::Node& n, const std::string& key, size_t count, double lo,
+                           double hi) const {
+    if (!n.IsSequence() || (count != 0 && n.size() != count)) {
+      fail(n, "'" + key + "' must be a list of " +
+                  (count ? std::to_string(count) + " numbers" : std::string("numbers")));
+    }
+    std::vector<double> out;
+    for (const auto& e : n) out.push_back(to_num(e, key, lo, hi));
+    return out;
+  }
+
+  std::string word(const YAML::Node& map, const char* key, const std::string& def,
+                   std::initializer_list<const char*> allowed) const {
+    const YAML::Node n = map[key];
+    if (!n) return def;
+    if (!n.IsScalar()) fail(n, std::string("'") + key + "' must be a word");
+    const std::string v = n.Scalar();
+    std::string list;
+    for (const char* a : allowed) {
+      if (v == a) return v;
+      list += std::string(list.empty() ? "" : ", ") + a;
+    }
+    fail(n, std::string("'") + key + "' = '" + v + "' is not one of: " + list);
+  }
+
+  const std::string& file() const { return file_; }
+
+ private:
+  std::string file_;
+};
+
+void read_camera(const Reader& r, const YAML::Node& n, Scenario& s) {
+  r.check_keys(n, "camera", {"resolution", "fov_deg", "rate_hz", "exposure", "baseline_m",
+                             "misalignment_deg", "look", "ahead", "rig_yaw_deg", "first_frame_s",
+                             "noise_sigma"});
+  CameraSpec& c = s.camera;
+  if (n["resolution"]) {
+    const auto v = r.list(n["resolution"], "resolution", 2, 1, 8192);
+    if (v[0] != std::floor(v[0]) || v[1] != std::floor(v[1]))
+      r.fail(n["resolution"], "'resolution' must be two whole numbers [width, height]");
+    c.width = static_cast<int>(v[0]);
+    c.height = static_cast<int>(v[1]);
+  }
+  if (n["fov_deg"]) {
+    const auto v = r.list(n["fov_deg"], "fov_deg", 2, 0.1, 170);
+    c.hfov_deg = v[0];
+    c.vfov_deg = v[1];
+  }
+  c.rate_hz = r.num(n, "rate_hz", c.rate_hz, 0.1, 10000);
+  c.exposure_frames = r.num(n, "exposure", c.exposure_frames, 0, 10);
+  c.baseline_m = r.num(n, "baseline_m", c.baseline_m, 0, 10);
+  c.misalignment_deg = r.num(n, "misalignment_deg", c.misalignment_deg, -45, 45);
+  c.look = r.word(n, "look", "left", {"left", "right"}) == "left" ? LookSide::Left : LookSide::Right;
+  c.cam1_ahead = r.word(n, "ahead", "cam1", {"cam0", "cam1"}) == "cam1";
+  c.rig_yaw_deg = r.num(n, "rig_yaw_deg", c.rig_yaw_deg, -80, 80);
+  c.first_frame_s = r.num(n, "first_frame_s", c.first_frame_s, -kInf, kInf);
+  s.pixel_noise_sigma = r.num(n, "noise_sigma", s.pixel_noise_sigma, 0, 255);
+}
+
+void read_segment(const Reader& r, const YAML::Node& n, SegmentSpec& g) {
+  r.check_keys(n, "segment", {"type", "duration_s", "speed", "profile", "radius_m", "turn"});
+  const std::string type = r.word(n, "type", "", {"straight", "arc"});
+  if (type.empty()) r.fail(n, "segment needs 'type' (straight or arc)");
+  g.kind = type == "arc" ? SegmentKind::Arc : SegmentKind::Straight;
+  g.duration_s = r.req_num(n, "duration_s", 1e-6, 1e6, "segment");
+  const YAML::Node sp = n["speed"];
+  if (!sp) r.fail(n, "segment needs 'speed' (a number or [start, end])");
+  if (sp.IsSequence()) {
+    const auto v = r.list(sp, "speed", 2, -1000, 1000);
+    g.v0 = v[0];
+    g.v1 = v[1];
+  } else {
+    g.v0 = g.v1 = r.to_num(sp, "speed", -1000, 1000);
+  }
+  g.profile = r.word(n, "profile", "linear", {"linear", "smooth"}) == "smooth"
+                  ? SpeedProfile::Smooth
+                  : SpeedProfile::Linear;
+  if (g.kind == SegmentKind::Arc) {
+    const double radius = r.req_num(n, "radius_m", 1e-3, 1e9, "arc segment");
+    const std::string turn = r.word(n, "turn", "", {"left", "right"});
+    if (turn.empty()) r.fail(n, "arc segment needs 'turn' (left or right)");
+    g.curvature = (turn == "left" ? 1.0 : -1.0) / radius;
+  } else if (n["radius_m"] || n["turn"]) {
+    r.fail(n, "'radius_m' and 'turn' only apply to arc segments");
+  }
+}
+
+void read_trajectory(const Reader& r, const YAML::Node& n, Scenario& s) {
+  r.check_keys(n, "trajectory", {"start", "segments"});
+  TrajectorySpec& t = s.trajectory;
+  if (const YAML::Node st = n["start"]) {
+    r.check_keys(st, "start", {"x", "y", "z", "heading_deg"});
+    t.x0 = r.num(st, "x", 0, -1e6, 1e6);
+    t.y0 = r.num(st, "y", 0, -1e6, 1e6);
+    t.z = r.num(st, "z", 0, -1e6, 1e6);
+    t.heading0_deg = r.num(st, "heading_deg", 0, -360, 360);
+  }
+  const YAML::Node segs = n["segments"];
+  if (!segs || !segs.IsSequence() || segs.size() == 0)
+    r.fail(segs ? segs : n, "'trajectory' needs a non-empty list 'segments'");
+  for (const auto& e : segs) {
+    SegmentSpec g;
+    read_segment(r, e, g);
+    t.segments.push_back(g);
+  }
+}
+
+std::string resolve_path(const std::string& file, const std::string& base_dir) {
+  if (!file.empty() && file[0] == '/') return file;
+  return base_dir + "/" + file;
+}
+
+void read_pattern(const Reader& r, const YAML::Node& n, PatternSpec& p,
+                  const std::string& base_dir) {
+  r.expect_map(n, "pattern");
+  const std::string type = r.word(n, "type", "", {"uniform", "sinusoid", "checker", "photo"});
+  if (type == "uniform") {
+    r.check_keys(n, "pattern", {"type", "value"});
+    p.kind = PatternKind::Uniform;
+    p.value = r.num(n, "value", p.value, 0, 255);
+  } else if (type == "sinusoid") {
+    r.check_keys(n, "pattern", {"type", "mean", "amplitude", "period_m", "phase_deg", "combine"});
+    p.kind = PatternKind::Sinusoid;
+    p.mean = r.num(n, "mean", p.mean, 0, 255);
+    p.amplitude = r.num(n, "amplitude", p.amplitude, 0, 255);
+    if (n["period_m"]) {
+      const auto v = r.list(n["period_m"], "period_m", 2, 1e-4, 1e6);
+      p.period_h_m = v[0];
+      p.period_v_m = v[1];
+    }
+    if (n["phase_deg"]) {
+      const auto v = r.list(n["phase_deg"], "phase_deg", 2, -360, 360);
+      p.phase_h_deg = v[0];
+      p.phase_v_deg = v[1];
+    }
+    p.product = r.word(n, "combine", "sum", {"sum", "product"}) == "product";
+  } else if (type == "checker") {
+    r.check_keys(n, "pattern", {"type", "square_m", "low", "high"});
+    p.kind = PatternKind::Checker;
+    p.square_m = r.num(n, "square_m", p.square_m, 1e-4, 1e6);
+    p.low = r.num(n, "low", p.low, 0, 255);
+    p.high = r.num(n, "high", p.high, 0, 255);
+  } else if (type == "photo") {
+    r.check_keys(n, "pattern", {"type", "file", "size_m", "tiling", "offset_m"});
+    p.kind = PatternKind::Photo;
+    const YAML::Node f = n["file"];
+    if (!f || !f.IsScalar()) r.fail(n, "photo pattern needs 'file'");
+    p.file = resolve_path(f.Scalar(), base_dir);
+    if (!std::ifstream(p.file)) r.fail(f, "cannot open photo '" + p.file + "'");
+    if (!n["size_m"]) r.fail(n, "photo pattern needs 'size_m: [width, height]'");
+    const auto v = r.list(n["size_m"], "size_m", 2, 1e-4, 1e6);
+    p.width_m = v[0];
+    p.height_m = v[1];
+    const std::string tiling = r.word(n, "tiling", "none", {"none", "mirror", "repeat"});
+    p.tiling = tiling == "mirror" ? Tiling::Mirror : tiling == "repeat" ? Tiling::Repeat : Tiling::None;
+    if (n["offset_m"]) {
+      const auto o = r.list(n["offset_m"], "offset_m", 2, -1e6, 1e6);
+      p.offset_h_m = o[0];
+      p.offset_v_m = o[1];
+    }
+  } else {
+    r.fail(n, "pattern needs 'type' (uniform, sinusoid, checker or photo)");
+  }
+}
+
+void read_scene(const Reader& r, const YAML::Node& n, Scenario& s, const std::string& base_dir) {
+  r.check_keys(n, "scene", {"background", "planes"});
+  s.background = r.num(n, "background", s.background, 0, 255);
+  const YAML::Node planes = n["planes"];
+  if (!planes) return;
+  if (!planes.IsSequence()) r.fail(planes, "'planes' must be a list");
+  if (planes.size() > static_cast<size_t>(kMaxScenePlanes))
+    r.fail(planes, "at most " + std::to_string(kMaxScenePlanes) + " planes");
+  for (const auto& e : planes) {
+    r.check_keys(e, "plane", {"name", "from", "to", "z", "pattern"});
+    PlaneSpec p;
+    p.name = e["name"] ? e["name"].as<std::string>() : "plane" + std::to_string(s.planes.size());
+    if (!e["from"] || !e["to"] || !e["z"]) r.fail(e, "plane needs 'from', 'to' and 'z'");
+    const auto a = r.list(e["from"], "from", 2, -1e6, 1e6);
+    const auto b = r.list(e["to"], "to", 2, -1e6, 1e6);
+    const auto z = r.list(e["z"], "z", 2, -1e6, 1e6);
+    if (std::hypot(b[0] - a[0], b[1] - a[1]) < 1e-6) r.fail(e["to"], "'to' equals 'from'");
+    if (z[1] <= z[0]) r.fail(e["z"], "'z' must be [bottom, top] with top > bottom");
+    p.from[0] = a[0];
+    p.from[1] = a[1];
+    p.to[0] = b[0];
+    p.to[1] = b[1];
+    p.z_min = z[0];
+    p.z_max = z[1];
+    if (!e["pattern"]) r.fail(e, "plane needs 'pattern'");
+    read_pattern(r, e["pattern"], p.pattern, base_dir);
+    s.planes.push_back(p);
+  }
+}
+
+void read_lighting(const Reader& r, const YAML::Node& n, Scenario& s) {
+  r.check_keys(n, "lighting", {"flicker_hz", "flicker_amplitude", "flicker_phase_deg", "dark"});
+  LightingSpec& l = s.lighting;
+  l.flicker_hz = r.num(n, "flicker_hz", 0, 0, 1e6);
+  l.flicker_amplitude = r.num(n, "flicker_amplitude", 0, 0, 1);
+  l.flicker_phase_deg = r.num(n, "flicker_phase_deg", 0, -360, 360);
+  if (const YAML::Node d = n["dark"]) {
+    if (!d.IsSequence()) r.fail(d, "'dark' must be a list of [start_s, end_s]");
+    for (const auto& e : d) {
+      const auto v = r.list(e, "dark", 2, -kInf, kInf);
+      if (v[1] <= v[0]) r.fail(e, "dark interval must be [start_s, end_s] with end > start");
+      l.dark.emplace_back(v[0], v[1]);
+    }
+  }
+}
+
+void read_imu(const Reader& r, const YAML::Node& n, Scenario& s) {
+  r.check_keys(n, "imu", {"rate_hz", "offset_s", "gyro_noise_density", "gyro_random_walk",
+                          "gyro_bias_deg_s", "accel_noise_density"});
+  ImuSpec& m = s.imu;
+  m.rate_hz = r.num(n, "rate_hz", m.rate_hz, 1, 100000);
+  m.offset_s = r.num(n, "offset_s", m.offset_s, -kInf, kInf);
+  m.gyro_noise_density = r.num(n, "gyro_noise_density", 0, 0, 10);
+  m.gyro_random_walk = r.num(n, "gyro_random_walk", 0, 0, 10);
+  m.gyro_bias_z = r.num(n, "gyro_bias_deg_s", 0, -1000, 1000) * kPi / 180.0;
+  m.accel_noise_density = r.num(n, "accel_noise_density", 0, 0, 100);
+}
+
+void read_drops(const Reader& r, const YAML::Node& n, Scenario& s) {
+  r.check_keys(n, "drops", {"frames", "rate"});
+  if (const YAML::Node f = n["frames"]) {
+    for (double v : r.list(f, "frames", 0, 0, 1e9)) {
+      if (v != std::floor(v)) r.fail(f, "'frames' must be whole frame indices");
+      s.dropped_frames.push_back(static_cast<int>(v));
+    }
+  }
+  s.drop_rate = r.num(n, "rate", 0, 0, 1);
+}
+
+}  // namespace
+
+Scenario parse_scenario(const std::string& text, const std::string& name,
+                        const std::string& base_dir) {
+  const Reader r(name);
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::ParserException& e) {
+    throw ScenarioError(name + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax: " + e.msg);
+  }
+  if (!root.IsMap()) throw ScenarioError(name + ": a scenario must be a YAML map");
+  try {
+    r.check_keys(root, "scenario", {"description", "duration_s", "seed", "start_ns",
+                                    "groundtruth_rate_hz", "camera", "trajectory", "scene",
+                                    "lighting", "imu", "drops"});
+    Scenario s;
+    s.file = name;
+    if (root["description"]) s.description = root["description"].as<std::string>();
+    s.duration_s = r.req_num(root, "duration_s", 1e-3, 1e6, "scenario");
+    const double seed = r.num(root, "seed", 1, 0, 9007199254740992.0);
+    if (seed != std::floor(seed)) r.fail(root["seed"], "'seed' must be a whole number");
+    s.seed = static_cast<uint64_t>(seed);
+    if (const YAML::Node n = root["start_ns"]) {
+      long long v = -1;
+      try {
+        v = n.as<long long>();
+      } catch (const YAML::Exception&) {
+      }
+      if (v < 0) r.fail(n, "'start_ns' must be a whole number of nanoseconds >= 0");
+      s.start_ns = v;
+    }
+    s.groundtruth_rate_hz = r.num(root, "groundtruth_rate_hz", 200, 1, 100000);
+    if (root["camera"]) read_camera(r, root["camera"], s);
+    if (!root["trajectory"]) r.fail(root, "scenario needs 'trajectory'");
+    read_trajectory(r, root["trajectory"], s);
+    if (root["scene"]) read_scene(r, root["scene"], s, base_dir);
+    if (root["lighting"]) read_lighting(r, root["lighting"], s);
+    if (root["imu"]) read_imu(r, root["imu"], s);
+    if (root["drops"]) read_drops(r, root["drops"], s);
+    return s;
+  } catch (const YAML::Exception& e) {
+    throw ScenarioError(name + ":" + std::to_string(e.mark.line + 1) + ": " + e.msg);
+  }
+}
+
+Scenario load_scenario(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw ScenarioError(path + ": cannot open scenario file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const auto slash = path.find_last_of('/');
+  const std::string dir = slash == std::string::npos ? "." : path.substr(0, slash);
+  return parse_scenario(ss.str(), path, dir.empty() ? "/" : dir);
+}
+
+void apply_overrides(Scenario& s, const Overrides& o) {
+  if (o.width > 0 && o.height > 0) {
+    s.camera.width = o.width;
+    s.camera.height = o.height;
+  }
+  if (o.exposure_frames >= 0) s.camera.exposure_frames = o.exposure_frames;
+  if (o.seed >= 0) s.seed = static_cast<uint64_t>(o.seed);
+  if (o.duration_s > 0) s.duration_s = o.duration_s;
+}
+
+}  // namespace lumavel::host::render

@@ -1,0 +1,61 @@
+#include "lumavel/host/render/stereo_rig.hpp"
+
+#include <cmath>
+
+namespace lumavel::host::render {
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+Eigen::Matrix3d yaw(double a) { return Eigen::AngleAxisd(a, Eigen::Vector3d::UnitZ()).toRotationMatrix(); }
+}  // namespace
+
+Pinhole pinhole_from_fov(int width, int height, double hfov_deg, double vfov_deg) {
+  Pinhole p;
+  p.width = width;
+  p.height = height;
+  // The image spans [-0.5, W-0.5]: its half-width W/2 subtends hfov/2.
+  p.fu = 0.5 * width / std::tan(0.5 * hfov_deg * kPi / 180.0);
+  p.fv = 0.5 * height / std::tan(0.5 * vfov_deg * kPi / 180.0);
+  p.cu = 0.5 * (width - 1);
+  p.cv = 0.5 * (height - 1);
+  return p;
+}
+
+StereoRig::StereoRig(const CameraSpec& spec)
+    : pin_(pinhole_from_fov(spec.width, spec.height, spec.hfov_deg, spec.vfov_deg)) {
+  // Columns = camera axes in the body frame. Looking left: optical axis +y,
+  // image down = -z, image right = y_c x z_c = +x (forward).
+  Eigen::Matrix3d look;
+  if (spec.look == LookSide::Left) {
+    look << 1, 0, 0,  //
+        0, 0, 1,      //
+        0, -1, 0;
+  } else {
+    look << -1, 0, 0,  //
+        0, 0, -1,      //
+        0, -1, 0;
+  }
+  const Eigen::Matrix3d R0 = yaw(spec.rig_yaw_deg * kPi / 180.0) * look;
+  const Eigen::Matrix3d R1 = yaw(spec.misalignment_deg * kPi / 180.0) * R0;
+  const double half = 0.5 * spec.baseline_m * (spec.cam1_ahead ? 1.0 : -1.0);
+  T_BS_[0].R = R0;
+  T_BS_[0].t = Eigen::Vector3d(-half, 0, 0);
+  T_BS_[1].R = R1;
+  T_BS_[1].t = Eigen::Vector3d(half, 0, 0);
+}
+
+RigidPose body_in_world(const BodyState& b) {
+  RigidPose p;
+  p.R = yaw(b.heading);
+  p.t = Eigen::Vector3d(b.x, b.y, b.z);
+  return p;
+}
+
+RigidPose StereoRig::camera_in_world(int cam, const BodyState& b) const {
+  const RigidPose wb = body_in_world(b);
+  RigidPose out;
+  out.R = wb.R * T_BS_[cam].R;
+  out.t = wb.R * T_BS_[cam].t + wb.t;
+  return out;
+}
+
+}  // namespace lumavel::host::render

@@ -1,0 +1,26 @@
+// Small scenes for the renderer tests, built in code (no YAML).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "lumavel/host/render/scenario.hpp"
+
+namespace lumavel::host::render::test {
+
+// Rig at rest at the origin (heading 0), a 1-segment straight trajectory of
+// `speed`, no planes; background 0.
+Scenario empty_scenario(int width, int height, double speed = 0);
+
+// A vertical plane parallel to the x axis at y = `y`, spanning x in [x0, x1]
+// and z in [z0, z1]; `from`/`to` ordered so it reads upright from the origin.
+PlaneSpec wall_at(double y, double x0, double x1, double z0, double z1, const PatternSpec& p);
+
+PatternSpec uniform(double v);
+PatternSpec checker(double square, double low, double high);
+
+// Fresh empty folder under the system temp dir (removed first if present).
+std::string temp_dir(const std::string& name);
+std::string read_text(const std::string& path);
+std::string first_line(const std::string& path);
+
+}  // namespace lumavel::host::render::test

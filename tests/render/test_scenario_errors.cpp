@@ -1,0 +1,136 @@
+// Scenario parsing: a bad key or value is refused with FILE:LINE and the key.
+#include <CppUTest/TestHarness.h>
+
+#include <string>
+
+#include "lumavel/host/render/scenario_loader.hpp"
+
+using namespace lumavel::host::render;
+
+namespace {
+
+const char* const kGood =
+    "duration_s: 2\n"                                      // 1
+    "camera:\n"                                            // 2
+    "  resolution: [40, 30]\n"                             // 3
+    "  rate_hz: 60\n"                                      // 4
+    "trajectory:\n"                                        // 5
+    "  segments:\n"                                        // 6
+    "    - {type: straight, duration_s: 2, speed: 0.5}\n"  // 7
+    "scene:\n"                                             // 8
+    "  planes:\n"                                          // 9
+    "    - from: [0, 2]\n"                                 // 10
+    "      to: [5, 2]\n"                                   // 11
+    "      z: [-1, 1]\n"                                   // 12
+    "      pattern: {type: uniform, value: 90}\n";         // 13
+
+std::string error_of(const std::string& text) {
+  try {
+    parse_scenario(text, "bad.yaml");
+  } catch (const ScenarioError& e) {
+    return e.what();
+  }
+  return "(accepted)";
+}
+
+std::string replace(std::string s, const std::string& from, const std::string& to) {
+  s.replace(s.find(from), from.size(), to);
+  return s;
+}
+
+bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+}  // namespace
+
+TEST_GROUP(ScenarioErrors){};
+
+TEST(ScenarioErrors, GoodScenarioParses) {
+  const Scenario s = parse_scenario(kGood, "good.yaml");
+  CHECK_EQUAL(40, s.camera.width);
+  CHECK_EQUAL(1u, s.planes.size());
+  DOUBLES_EQUAL(90, s.planes[0].pattern.value, 0);
+}
+
+TEST(ScenarioErrors, UnknownKeyNamesFileLineAndKey) {
+  const std::string e = error_of(replace(kGood, "  rate_hz: 60", "  rate_hzz: 60"));
+  STRCMP_CONTAINS("bad.yaml:4:", e.c_str());
+  STRCMP_CONTAINS("rate_hzz", e.c_str());
+}
+
+TEST(ScenarioErrors, OutOfRangeValue) {
+  const std::string e = error_of(replace(kGood, "rate_hz: 60", "rate_hz: -5"));
+  STRCMP_CONTAINS("bad.yaml:4:", e.c_str());
+  STRCMP_CONTAINS("rate_hz", e.c_str());
+}
+
+TEST(ScenarioErrors, NotANumber) {
+  const std::string e = error_of(replace(kGood, "value: 90", "value: grey"));
+  STRCMP_CONTAINS("bad.yaml:13:", e.c_str());
+  STRCMP_CONTAINS("'value' must be a number", e.c_str());
+}
+
+TEST(ScenarioErrors, WrongListLength) {
+  const std::string e = error_of(replace(kGood, "resolution: [40, 30]", "resolution: [40]"));
+  STRCMP_CONTAINS("bad.yaml:3:", e.c_str());
+  STRCMP_CONTAINS("resolution", e.c_str());
+}
+
+TEST(ScenarioErrors, UnknownWord) {
+  const std::string e = error_of(replace(kGood, "type: straight", "type: spiral"));
+  STRCMP_CONTAINS("bad.yaml:7:", e.c_str());
+  STRCMP_CONTAINS("spiral", e.c_str());
+}
+
+TEST(ScenarioErrors, ArcNeedsRadiusAndTurn) {
+  const std::string e = error_of(replace(kGood, "type: straight", "type: arc"));
+  STRCMP_CONTAINS("bad.yaml:7:", e.c_str());
+  STRCMP_CONTAINS("radius_m", e.c_str());
+}
+
+TEST(ScenarioErrors, MissingPhotoFile) {
+  const std::string e =
+      error_of(replace(kGood, "{type: uniform, value: 90}", "{type: photo, file: /nonexistent/x.png, size_m: [1, 1]}"));
+  STRCMP_CONTAINS("bad.yaml:13:", e.c_str());
+  STRCMP_CONTAINS("/nonexistent/x.png", e.c_str());
+}
+
+TEST(ScenarioErrors, BadPlaneGeometry) {
+  STRCMP_CONTAINS("bad.yaml:12:", error_of(replace(kGood, "z: [-1, 1]", "z: [1, -1]")).c_str());
+  STRCMP_CONTAINS("bad.yaml:11:", error_of(replace(kGood, "to: [5, 2]", "to: [0, 2]")).c_str());
+}
+
+TEST(ScenarioErrors, MissingRequiredKeys) {
+  STRCMP_CONTAINS("duration_s", error_of(replace(kGood, "duration_s: 2\n", "")).c_str());
+  CHECK(contains(error_of("duration_s: 2\n"), "trajectory"));
+}
+
+TEST(ScenarioErrors, YamlSyntaxErrorNamesTheLine) {
+  const std::string e = error_of(replace(kGood, "  resolution: [40, 30]", "  resolution: [40, 30"));
+  STRCMP_CONTAINS("bad.yaml:", e.c_str());
+  STRCMP_CONTAINS("YAML syntax", e.c_str());
+}
+
+TEST(ScenarioErrors, MissingFileIsNamed) {
+  try {
+    load_scenario("/nonexistent/scenario.yaml");
+    FAIL("accepted a missing file");
+  } catch (const ScenarioError& e) {
+    STRCMP_CONTAINS("/nonexistent/scenario.yaml", e.what());
+  }
+}
+
+TEST(ScenarioErrors, OverridesApply) {
+  Scenario s = parse_scenario(kGood, "good.yaml");
+  Overrides o;
+  o.width = 20;
+  o.height = 15;
+  o.exposure_frames = 1.25;
+  o.seed = 99;
+  o.duration_s = 1;
+  apply_overrides(s, o);
+  CHECK_EQUAL(20, s.camera.width);
+  CHECK_EQUAL(15, s.camera.height);
+  DOUBLES_EQUAL(1.25, s.camera.exposure_frames, 0);
+  CHECK_EQUAL(99u, s.seed);
+  DOUBLES_EQUAL(1.0, s.duration_s, 0);
+}
