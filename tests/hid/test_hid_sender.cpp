@@ -39,6 +39,21 @@ struct FakeLink : hal::ReportLink {
   }
 };
 
+// The flash page of a simulated device, in memory; shared across restarts.
+struct MemoryStore : hal::ConfigStore {
+  std::vector<uint8_t>* blob;
+  explicit MemoryStore(std::vector<uint8_t>* b) : blob(b) {}
+  size_t load(uint8_t* buf, size_t cap) override {
+    if (blob->size() > cap) return 0;
+    std::copy(blob->begin(), blob->end(), buf);
+    return blob->size();
+  }
+  bool save(const uint8_t* buf, size_t len) override {
+    blob->assign(buf, buf + len);
+    return true;
+  }
+};
+
 }  // namespace
 
 TEST_GROUP(HidSender) {
@@ -121,6 +136,76 @@ TEST(HidSender, ServesInfoAndRefusesConfigSets) {
   CHECK_TRUE(protocol::decode_device_info(reply.data(), reply.size(), info).ok());
   CHECK_EQUAL(static_cast<int>(protocol::ConfigField::kEstimator), info.config_status);
   CHECK_EQUAL(64, info.width);  // unchanged
+}
+
+// With a config store (`lumavel-sim run --hid-config FILE`): validated sets
+// are accepted, served back and persisted; a restarted sender serves them.
+TEST(HidSender, WithAStoreAcceptsAndPersistsConfigSets) {
+  std::vector<uint8_t> blob;
+  auto fresh_sender = [&]() {
+    auto l = std::make_unique<FakeLink>();
+    l->sent = &sent;
+    l->busy = &busy;
+    l->reply = &reply;
+    l->set_result = &set_result;
+    link = l.get();
+    sender = std::make_unique<host::HidSender>(std::move(l), host::HidSenderOptions{},
+                                               std::make_unique<MemoryStore>(&blob));
+    sender->set_resolution(64, 48);
+  };
+  auto get = [&](uint8_t id) {
+    link->ask_id = id;
+    link->ask_set = false;
+    sender->poll();
+  };
+  auto set = [&](const protocol::DeviceConfig& c) {
+    uint8_t cfg[protocol::kConfigSize];
+    protocol::encode_config(c, cfg, sizeof cfg);
+    link->ask_id = protocol::kReportConfig;
+    link->ask_set = true;
+    link->set_data.assign(cfg, cfg + sizeof cfg);
+    sender->poll();
+  };
+  fresh_sender();
+  protocol::DeviceInfo info{};
+  protocol::DeviceConfig got{};
+  get(protocol::kReportConfig);
+  CHECK_TRUE(protocol::decode_config(reply.data(), reply.size(), got).ok());
+  CHECK_EQUAL(64, got.width);  // nothing stored yet: the recording's configuration
+
+  protocol::DeviceConfig c = protocol::default_device_config();
+  c.width = 80;
+  c.tau_us = 250000;
+  set(c);
+  CHECK_EQUAL(1u, set_result);
+  CHECK_EQUAL(protocol::kConfigSize, blob.size());
+  get(protocol::kReportConfig);
+  CHECK_TRUE(protocol::decode_config(reply.data(), reply.size(), got).ok());
+  CHECK_EQUAL(80, got.width);
+  CHECK_EQUAL(250000u, got.tau_us);
+  get(protocol::kReportDeviceInfo);
+  CHECK_TRUE(protocol::decode_device_info(reply.data(), reply.size(), info).ok());
+  CHECK_EQUAL(0, info.config_status);
+  CHECK_EQUAL(protocol::kConfigSetByHost, info.config_source);
+
+  protocol::DeviceConfig bad = c;  // out of range: refused, the store keeps c
+  bad.tau_us = 5;
+  const std::vector<uint8_t> kept = blob;
+  set(bad);
+  CHECK_EQUAL(0u, set_result);
+  CHECK_TRUE(kept == blob);
+  get(protocol::kReportDeviceInfo);
+  CHECK_TRUE(protocol::decode_device_info(reply.data(), reply.size(), info).ok());
+  CHECK_EQUAL(static_cast<int>(protocol::ConfigField::kTau), info.config_status);
+
+  fresh_sender();  // a restart serves the stored configuration
+  get(protocol::kReportConfig);
+  CHECK_TRUE(protocol::decode_config(reply.data(), reply.size(), got).ok());
+  CHECK_EQUAL(80, got.width);
+  CHECK_EQUAL(250000u, got.tau_us);
+  get(protocol::kReportDeviceInfo);
+  CHECK_TRUE(protocol::decode_device_info(reply.data(), reply.size(), info).ok());
+  CHECK_EQUAL(protocol::kConfigStored, info.config_source);
 }
 
 TEST(HidSender, FileLinksAreNotPaced) {

@@ -27,8 +27,10 @@ proto::DeviceInfo sim_identity() {
   return d;
 }
 
-// The simulator's engine follows the recording, not the host: only its own
-// boot-time configuration is accepted, sets from the host are refused.
+// The simulator's engine follows the recording, not the host: without a store
+// only its own boot-time configuration is accepted and sets from the host are
+// refused; with a store every validated set is accepted (the store keeps it,
+// the engine does not change).
 proto::ConfigField apply_own_only(void* ctx, const proto::DeviceConfig&) {
   return *static_cast<bool*>(ctx) ? proto::ConfigField::kOk : proto::ConfigField::kEstimator;
 }
@@ -58,11 +60,15 @@ proto::Measurement quantise_measurement(uint64_t t_ns, uint32_t frame_index, dou
   return m;
 }
 
-HidSender::HidSender(std::unique_ptr<hal::ReportLink> link, const HidSenderOptions& options)
-    : link_(std::move(link)), opt_(options), features_(sim_identity(), nullptr, apply_own_only, &accept_) {
+HidSender::HidSender(std::unique_ptr<hal::ReportLink> link, const HidSenderOptions& options,
+                     std::unique_ptr<hal::ConfigStore> store)
+    : link_(std::move(link)),
+      opt_(options),
+      store_(std::move(store)),
+      features_(sim_identity(), store_.get(), apply_own_only, &accept_) {
   accept_ = true;
   features_.boot(proto::default_device_config());
-  accept_ = false;
+  accept_ = store_ != nullptr;
 }
 
 void HidSender::set_resolution(uint16_t width, uint16_t height) {
@@ -72,8 +78,8 @@ void HidSender::set_resolution(uint16_t width, uint16_t height) {
   c.cu[0] = c.cu[1] = (int32_t{width} - 1) * 32768;  // centre column
   c.fu[0] = c.fu[1] = int32_t{width} * 56756;        // 60 degrees
   accept_ = true;
-  features_.boot(c);  // keeps the previous configuration if c is out of range
-  accept_ = false;
+  features_.boot(c);  // the stored configuration first; keeps the previous one if c is out of range
+  accept_ = store_ != nullptr;
 }
 
 void HidSender::poll() { link_->poll_features(&proto::FeatureServer::handle, &features_); }

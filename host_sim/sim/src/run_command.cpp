@@ -2,13 +2,17 @@
 
 #include <unistd.h>
 
+#include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <thread>
 
 #include "cli_args.hpp"
 #include "output_file.hpp"
+#include "lumavel/host/file_config_store.hpp"
 #include "lumavel/host/hid_link.hpp"
 #include "lumavel/host/hid_sender.hpp"
 #include "lumavel/host/run_recording.hpp"
@@ -35,6 +39,17 @@ const char* const kRunHelp =
     "                         ground truth or when --plot is given\n"
     "  --hid SPEC             also send every estimate as a USB HID input report through\n"
     "                         SPEC: uhid, hidg:/dev/hidgN or file:PATH (docs/usb-hid.md)\n"
+    "  --hid-config FILE      with --hid: configuration sets from the host (lumavel-read\n"
+    "                         config set) are validated, accepted and saved in FILE, and\n"
+    "                         config get returns them, also in later runs; the running\n"
+    "                         engine keeps the recording's configuration. Without it,\n"
+    "                         sets are refused\n"
+    "  --hid-wait-ms N        with --hid: how long a report waits for the host to take it\n"
+    "                         before it is dropped and counted as an overrun (default 20;\n"
+    "                         large values make the stream lossless with a slow host)\n"
+    "  --hid-linger S         with --hid: after the last estimate keep the device and\n"
+    "                         answer feature reports (info, config) for S seconds;\n"
+    "                         -1 until interrupted (SIGINT/SIGTERM, exit 0); default 0\n"
     "  --quiet                no progress and no summary on standard error\n"
     "  -h, --help             this help\n"
     "\n"
@@ -51,6 +66,9 @@ struct RunArgs {
   std::string output;
   std::string plot;
   std::string hid;
+  std::string hid_config;
+  double hid_linger_s = 0;
+  int hid_wait_ms = -1;  // -1: HidSender's default
   WorkingSize size;
   bool quiet = false;
   bool help = false;
@@ -74,6 +92,17 @@ RunArgs parse(int argc, char** argv) {
       a.plot = v;
     } else if (option_value(argc, argv, i, "--hid", v)) {
       a.hid = v;
+    } else if (option_value(argc, argv, i, "--hid-config", v)) {
+      if (v.empty()) throw UsageError("--hid-config needs a file name");
+      a.hid_config = v;
+    } else if (option_value(argc, argv, i, "--hid-wait-ms", v)) {
+      a.hid_wait_ms = parse_int(v, "--hid-wait-ms");
+      if (a.hid_wait_ms < 0 || a.hid_wait_ms > 600000) throw UsageError("--hid-wait-ms must be in 0..600000");
+    } else if (option_value(argc, argv, i, "--hid-linger", v)) {
+      char* end = nullptr;
+      a.hid_linger_s = std::strtod(v.c_str(), &end);
+      if (v.empty() || *end != '\0' || !std::isfinite(a.hid_linger_s) || (a.hid_linger_s < 0 && a.hid_linger_s != -1))
+        throw UsageError("--hid-linger must be a number of seconds >= 0, or -1, not '" + v + "'");
     } else if (option_value(argc, argv, i, "--width", v)) {
       a.size.width = parse_int(v, "--width");
     } else if (option_value(argc, argv, i, "--height", v)) {
@@ -88,6 +117,8 @@ RunArgs parse(int argc, char** argv) {
   }
   if (a.help) return a;
   if (a.rec.empty()) throw UsageError("missing the recording folder REC");
+  if (a.hid.empty() && (!a.hid_config.empty() || a.hid_linger_s != 0 || a.hid_wait_ms >= 0))
+    throw UsageError("--hid-config, --hid-wait-ms and --hid-linger need --hid SPEC");
   if (a.size.width < kMinWorkWidth || a.size.width > kMaxWorkWidth)
     throw UsageError("--width must be in " + std::to_string(kMinWorkWidth) + ".." + std::to_string(kMaxWorkWidth));
   if (a.size.height < 1 || a.size.height > kMaxWorkHeight)
@@ -126,6 +157,25 @@ std::string gaps_line(const Recording& rec) {
   return buf;
 }
 
+volatile std::sig_atomic_t g_stop_linger = 0;
+void on_linger_signal(int) { g_stop_linger = 1; }
+
+// Keeps answering feature reports after the last estimate, so a host can
+// read info and get/set the configuration of a finished run.
+void linger(HidSender& hid, double seconds) {
+  g_stop_linger = 0;
+  std::signal(SIGINT, on_linger_signal);
+  std::signal(SIGTERM, on_linger_signal);
+  const auto end = std::chrono::steady_clock::now() +
+                   std::chrono::microseconds(static_cast<int64_t>(seconds < 0 ? 0 : seconds * 1e6));
+  while (!g_stop_linger && (seconds < 0 || std::chrono::steady_clock::now() < end)) {
+    hid.poll();
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
+}
+
 int run(const RunArgs& a) {
   const Recording rec = load_recording(a.rec);
   RunOptions options;
@@ -134,7 +184,11 @@ int run(const RunArgs& a) {
 
   std::unique_ptr<HidSender> hid;
   if (!a.hid.empty()) {
-    hid = std::make_unique<HidSender>(open_host_link(a.hid), hid_sender_options_for(a.hid));
+    std::unique_ptr<hal::ConfigStore> store;
+    if (!a.hid_config.empty()) store = std::make_unique<FileConfigStore>(a.hid_config);
+    HidSenderOptions hid_options = hid_sender_options_for(a.hid);
+    if (a.hid_wait_ms >= 0) hid_options.wait_ms = a.hid_wait_ms;
+    hid = std::make_unique<HidSender>(open_host_link(a.hid), hid_options, std::move(store));
     const EstimatorSettings settings = derive_settings(rec, options.size);
     hid->set_resolution(static_cast<uint16_t>(settings.width), static_cast<uint16_t>(settings.height));
     options.sink = [&hid](const EngineEstimate& e) { hid->send(e.t_ns, e.v, e.distance, e.heading, e.status); };
@@ -178,7 +232,12 @@ int run(const RunArgs& a) {
     else std::fprintf(stderr, "no ground truth (state_groundtruth_estimate0/data.csv): no error figures\n");
     if (want_plot) std::fprintf(stderr, "plot: %s\n", plot.c_str());
     if (hid) std::fprintf(stderr, "hid: %u reports sent through %s, %u overruns\n", hid->sent(), a.hid.c_str(), hid->overruns());
+    if (hid && a.hid_linger_s != 0) {
+      if (a.hid_linger_s < 0) std::fprintf(stderr, "hid: answering feature reports until interrupted\n");
+      else std::fprintf(stderr, "hid: answering feature reports for %g s\n", a.hid_linger_s);
+    }
   }
+  if (hid && a.hid_linger_s != 0) linger(*hid, a.hid_linger_s);
   return 0;
 }
 

@@ -3,8 +3,11 @@
 set -u
 export PATH=/usr/local/bin:/bin:/sbin:/usr/bin:/usr/sbin
 M=/lib/modules
-EST=/data/est.csv
+EST=/data/est.csv          # synthetic drive, served by the feeder (reconnect, live, permission)
 ROWS=$(($(wc -l < $EST) - 1))
+REC=/data/rec              # a rendered recording, served by lumavel-sim run --hid
+SIM_EST=/data/expected.csv # lumavel-sim run REC's own estimates, computed on the host
+SIM_ROWS=$(($(wc -l < $SIM_EST) - 1))
 
 result() { echo "LUMAVEL-TEST $1 $2${3:+ $3}"; }
 check() {  # check NAME COMMAND...: PASS if the command succeeds
@@ -30,6 +33,19 @@ start_feeder() {  # start_feeder LINK CSV STORE LINGER_MS
   FEEDER=$!
 }
 stop_feeder() { kill $FEEDER 2> /dev/null; wait $FEEDER 2> /dev/null; }
+# The simulator as the device: every estimate of the recording as a report,
+# config sets kept in STORE, then feature reports answered until stopped.
+# Under TCG the reader can stall for tens of ms: reports wait up to 5 s for it.
+start_sim() {  # start_sim LINK STORE
+  lumavel-sim run $REC --hid "$1" --hid-config "$2" --hid-wait-ms 5000 --hid-linger -1 -o /tmp/sim.csv \
+    --plot /tmp/sim.svg 2> /tmp/sim.err &
+  SIM=$!
+}
+stop_sim() {  # it stops cleanly (exit 0) and its own CSV equals the host's run
+  kill $SIM 2> /dev/null; wait $SIM; rc=$?
+  cat /tmp/sim.err
+  [ $rc -eq 0 ] && cmp $SIM_EST /tmp/sim.csv
+}
 has() { grep -qx "$1" "$2" || { echo "missing \"$1\" in $2:"; cat "$2"; return 1; }; }
 
 config_check() {  # BACKEND
@@ -46,16 +62,23 @@ refuse_check() {  # BACKEND: out-of-range values never leave the host
   [ $? -eq 5 ] && grep -q "tau_us is out of range" /tmp/refuse.err
 }
 info_check() {  # BACKEND
-  lumavel-read --backend "$1" info > /tmp/info.out && has board=host-feeder /tmp/info.out \
+  lumavel-read --backend "$1" info > /tmp/info.out && has board=lumavel-sim /tmp/info.out \
     && has resolution=40x30 /tmp/info.out && has firmware=0.1.0 /tmp/info.out
 }
-persist_check() {  # LINK BACKEND: a restarted device comes back on the stored configuration
-  start_feeder "$1" /data/one.csv /tmp/store.bin -1
+# A restarted lumavel-sim streams the same estimates again and serves the
+# stored configuration. The stream is read to the end so that no report is
+# left queued in the gadget for the next reader when this device is killed.
+persist_check() {  # LINK BACKEND
+  lumavel-read --backend "$2" stream -n $SIM_ROWS --timeout 60 --no-live -o /tmp/persist.csv 2> /tmp/persist.err &
+  R=$!
+  case $1 in hidg*) wait_line "connected to" /tmp/persist.err ;; esac
+  start_sim "$1" /tmp/store.bin
+  wait $R && csv_equal $SIM_EST /tmp/persist.csv || { cat /tmp/persist.err; kill $SIM; return 1; }
   wait_listed "$2" && lumavel-read --backend "$2" config get > /tmp/get2.out \
-    && has width=80 /tmp/get2.out && lumavel-read --backend "$2" info > /tmp/info2.out \
+    && cmp /tmp/set.out /tmp/get2.out && lumavel-read --backend "$2" info > /tmp/info2.out \
     && has config_source=stored /tmp/info2.out
   rc=$?
-  stop_feeder
+  kill $SIM 2> /dev/null; wait $SIM 2> /dev/null
   return $rc
 }
 
@@ -76,27 +99,29 @@ wait_line() {  # wait_line TEXT FILE: polls up to 20 s for TEXT in FILE
   done
 }
 
-# A whole device life on one link: stream, info, config set/get, refusal, persistence.
+# A whole device life on one link, the device being `lumavel-sim run REC --hid`:
+# stream (the CSV read must equal lumavel-sim run's own estimates), info,
+# config set/get, refusal, persistence across a restart.
 # The reader opens first: a USB device streams whether or not anyone listens
 # (the gadget cannot tell), so reports sent before the open are not expected.
 run_link() {  # PREFIX LINK BACKEND
-  rm -f /tmp/store.bin
+  rm -f /tmp/store.bin /tmp/set.out
   case $2 in hidg*) check "$1-list" wait_listed "$3" ;; esac
-  lumavel-read --backend "$3" stream -n $ROWS --timeout 60 --no-live -o /tmp/$1.csv 2> /tmp/$1.err &
+  lumavel-read --backend "$3" stream -n $SIM_ROWS --timeout 60 --no-live -o /tmp/$1.csv 2> /tmp/$1.err &
   READER=$!
   case $2 in hidg*) wait_line "connected to" /tmp/$1.err ;; esac
-  start_feeder "$2" $EST /tmp/store.bin -1
+  start_sim "$2" /tmp/store.bin
   case $2 in uhid*) check "$1-list" wait_listed "$3" ;; esac
-  if wait $READER && csv_equal $EST /tmp/$1.csv > /tmp/cmp.out 2>&1; then
+  if wait $READER && csv_equal $SIM_EST /tmp/$1.csv > /tmp/cmp.out 2>&1 \
+     && wait_line "reports sent through" /tmp/sim.err && grep -q " 0 overruns" /tmp/sim.err; then
     result "$1-stream" PASS
   else
-    result "$1-stream" FAIL "($(cat /tmp/$1.err /tmp/cmp.out | tail -c 600 | tr "\n" " "))"
+    result "$1-stream" FAIL "($({ head -c 300 /tmp/cmp.out; tail -c 300 /tmp/$1.err; grep "^hid:" /tmp/sim.err; } | tr "\n" " "))"
   fi
   check "$1-info" info_check "$3"
   check "$1-config-set-get" config_check "$3"
   check "$1-config-refused" refuse_check "$3"
-  stop_feeder
-  cat /tmp/feeder.err
+  check "$1-sim-exit" stop_sim
   check "$1-persist" persist_check "$2" "$3"
 }
 

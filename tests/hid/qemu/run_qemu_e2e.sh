@@ -2,25 +2,29 @@
 # HID end-to-end test through a real Linux USB/HID stack: boots Debian's own
 # kernel (downloaded with apt-get download, unpacked, never installed; cached
 # under --build-dir) under qemu-system-x86_64 -accel tcg with a busybox
-# initramfs holding lumavel-read, the device-side feeder and their libraries.
-# In the guest: uhid (hidraw backend) and a configfs USB gadget on dummy_hcd
-# (hidraw and libusb backends); see guest_tests.sh. Exit 0 pass, 1 fail,
+# initramfs holding lumavel-read, lumavel-sim with a tiny recording rendered
+# here, the device-side feeder and their libraries. In the guest: uhid (hidraw
+# backend) and a configfs USB gadget on dummy_hcd (hidraw and libusb backends),
+# the device being `lumavel-sim run REC --hid ...`; see guest_tests.sh. Exit 0 pass, 1 fail,
 # 77 skip (only where QEMU cannot run).
 set -u
 HERE=$(cd "$(dirname "$0")" && pwd)
-BUILD= READ= FEEDER= COMPARE= MAKE=
+BUILD= READ= SIM= FEEDER= COMPARE= MAKE=
 while [ $# -gt 0 ]; do
   case $1 in
     --build-dir) BUILD=$2; shift 2 ;;
     --lumavel-read) READ=$2; shift 2 ;;
+    --lumavel-sim) SIM=$2; shift 2 ;;
     --feeder) FEEDER=$2; shift 2 ;;
     --compare) COMPARE=$2; shift 2 ;;
     --make-estimates) MAKE=$2; shift 2 ;;
     *) echo "run_qemu_e2e.sh: unknown argument $1" >&2; exit 1 ;;
   esac
 done
-for v in BUILD READ FEEDER COMPARE MAKE; do
-  [ -n "${!v}" ] || { echo "run_qemu_e2e.sh: missing --${v,,} argument" >&2; exit 1; }
+for v in BUILD:--build-dir READ:--lumavel-read SIM:--lumavel-sim FEEDER:--feeder COMPARE:--compare \
+         MAKE:--make-estimates; do
+  n=${v%%:*}
+  [ -n "${!n}" ] || { echo "run_qemu_e2e.sh: missing ${v#*:} argument" >&2; exit 1; }
 done
 skip() { echo "SKIP: $*"; exit 77; }
 fail() { echo "FAIL: $*" >&2; exit 1; }
@@ -67,7 +71,7 @@ cp "$BUSYBOX" "$ROOT/bin/busybox"
 cp "$HERE/init.sh" "$ROOT/init" && chmod 755 "$ROOT/init"
 cp "$HERE/guest_tests.sh" "$ROOT/guest_tests.sh"
 cp "$KDIR"/modules/*.ko "$ROOT/lib/modules/"
-cp "$READ" "$FEEDER" "$COMPARE" "$ROOT/usr/local/bin/"
+cp "$READ" "$SIM" "$FEEDER" "$COMPARE" "$ROOT/usr/local/bin/"
 LIBDIR=/usr/lib/x86_64-linux-gnu
 # hidapi backends are dlopen()ed by lumavel-read: ldd does not see them.
 EXTRA="$LIBDIR/libhidapi-hidraw.so.0 $LIBDIR/libhidapi-libusb.so.0"
@@ -76,7 +80,7 @@ copy_lib() {  # copies a library to the same path in the image, following symlin
   [ -e "$ROOT$1" ] && return
   mkdir -p "$ROOT$(dirname "$1")" && cp -L "$1" "$ROOT$1"
 }
-for bin in "$BUSYBOX" "$READ" "$FEEDER" "$COMPARE" $EXTRA; do
+for bin in "$BUSYBOX" "$READ" "$SIM" "$FEEDER" "$COMPARE" $EXTRA; do
   copy_lib_of=$(ldd "$bin" 2>/dev/null | awk '$2 == "=>" && $3 ~ /^\// {print $3} $1 ~ /^\// {print $1}')
   for lib in $copy_lib_of; do copy_lib "$lib"; done
 done
@@ -89,7 +93,20 @@ done
 printf "root:x:0:0:root:/:/bin/sh\nlumavel:x:1000:1000:lumavel:/tmp:/bin/sh\n" > "$ROOT/etc/passwd"
 printf "root:x:0:\nlumavel:x:1000:\n" > "$ROOT/etc/group"
 
-# Test data: a recording's estimates when given, else a synthetic drive.
+# The device for the streaming and config checks: lumavel-sim on a tiny
+# recording rendered here (2 s, 40x30); its estimates, computed here, are what
+# lumavel-read must read back in the guest.
+SCENARIO=$HERE/../../../host_sim/scenarios/gyro_turning.yaml
+rm -rf "$BUILD/rec"
+"$SIM" render "$SCENARIO" "$BUILD/rec" --resolution 40x30 --duration 2 --quiet > "$BUILD/render.log" 2>&1 ||
+  { tail -5 "$BUILD/render.log"; fail "lumavel-sim render $SCENARIO failed (log: $BUILD/render.log)"; }
+"$SIM" run "$BUILD/rec" -o "$ROOT/data/expected.csv" --plot "$BUILD/expected.svg" --quiet ||
+  fail "lumavel-sim run $BUILD/rec failed"
+cp -r "$BUILD/rec" "$ROOT/data/rec" || fail "cannot copy the recording into $ROOT"
+echo "recording: $(( $(wc -l < "$ROOT/data/expected.csv") - 1 )) estimates, $(du -sh "$BUILD/rec" | cut -f1)"
+
+# Feeder data (reconnect, live view, permission): a recording's estimates when
+# given, else a synthetic drive.
 EST=${LUMAVEL_HID_E2E_ESTIMATES:-}
 if [ -n "$EST" ]; then
   cp "$EST" "$ROOT/data/est.csv" || fail "cannot read $EST"
@@ -118,12 +135,12 @@ if ! grep -q "LUMAVEL-GUEST-START" "$LOG"; then
 fi
 grep "LUMAVEL-TEST" "$LOG"
 grep -q "LUMAVEL-GUEST-DONE" "$LOG" || { tail -30 "$LOG"; fail "the guest did not finish (timeout or crash): see $LOG"; }
-EXPECTED="uhid-list uhid-stream uhid-info uhid-config-set-get uhid-config-refused uhid-persist
+EXPECTED="uhid-list uhid-stream uhid-info uhid-config-set-get uhid-config-refused uhid-sim-exit uhid-persist
   uhid-reconnect uhid-live-view uhid-permission-denied no-device-message gadget-enumerated
   gadget-hidraw-list gadget-hidraw-stream gadget-hidraw-info gadget-hidraw-config-set-get
-  gadget-hidraw-config-refused gadget-hidraw-persist
+  gadget-hidraw-config-refused gadget-hidraw-sim-exit gadget-hidraw-persist
   gadget-libusb-list gadget-libusb-stream gadget-libusb-info gadget-libusb-config-set-get
-  gadget-libusb-config-refused gadget-libusb-persist"
+  gadget-libusb-config-refused gadget-libusb-sim-exit gadget-libusb-persist"
 bad=0
 for t in $EXPECTED; do
   grep -q "^LUMAVEL-TEST $t PASS" "$LOG" || { echo "not passed: $t"; bad=1; }

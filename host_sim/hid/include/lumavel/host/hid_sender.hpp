@@ -1,13 +1,16 @@
 // What `lumavel-sim run --hid SPEC` needs: one input report per estimate
 // through a host link, with sequence numbers, pacing, the overrun count, and
-// the feature reports served (device info; configuration get; sets refused,
-// since the simulator's engine is configured from the recording).
+// the feature reports served (device info; configuration get; sets refused
+// without a config store, since the simulator's engine is configured from the
+// recording; with a store, validated sets are accepted and persisted there,
+// as on a device, while the running engine keeps the recording's configuration).
 #pragma once
 #include <chrono>
 #include <cstdint>
 #include <memory>
 #include <string>
 
+#include "lumavel/hal/config_store.hpp"
 #include "lumavel/hal/report_link.hpp"
 #include "lumavel/protocol/feature_server.hpp"
 #include "lumavel/protocol/reports.hpp"
@@ -27,8 +30,12 @@ struct HidSenderOptions {
 
 class HidSender {
  public:
-  HidSender(std::unique_ptr<hal::ReportLink> link, const HidSenderOptions& options = {});
-  // Working resolution shown in the device info report.
+  // With `store`, configuration sets that pass the codec's checks are accepted
+  // and saved there, and the stored configuration (if any) is served from the start.
+  HidSender(std::unique_ptr<hal::ReportLink> link, const HidSenderOptions& options = {},
+            std::unique_ptr<hal::ConfigStore> store = nullptr);
+  // The recording's working resolution: the configuration served (and the info
+  // report's resolution) unless the store holds a valid configuration.
   void set_resolution(uint16_t width, uint16_t height);
   // Sends one report; false if the host did not take it in time (counted as an overrun).
   bool send(uint64_t t_ns, double v_mps, double distance_m, double heading_rad, uint16_t status);
@@ -39,7 +46,8 @@ class HidSender {
  private:
   std::unique_ptr<hal::ReportLink> link_;
   HidSenderOptions opt_;
-  bool accept_ = false;  // read by the FeatureServer apply hook
+  std::unique_ptr<hal::ConfigStore> store_;
+  bool accept_ = false;  // read by the FeatureServer apply hook: host sets allowed
   protocol::FeatureServer features_;
   uint32_t frame_ = 0;
   uint32_t sent_ = 0;
