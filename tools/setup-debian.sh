@@ -31,7 +31,8 @@ missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
-[ ${#missing[@]} -eq 0 ] && exit 0
+photo() { "$(dirname "$0")/fetch-photo.sh"; }
+[ ${#missing[@]} -eq 0 ] && { photo; exit 0; }
 
 if [ -n "$sudo" ] && ! command -v sudo >/dev/null; then
   echo "setup: need root or sudo to install: ${missing[*]}" >&2
@@ -40,3 +41,4 @@ fi
 echo "setup: installing ${missing[*]}" >&2
 $sudo apt-get update -qq
 DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+photo
