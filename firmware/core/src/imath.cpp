@@ -99,25 +99,12 @@ AngleQ28 atan2_fast(int32_t y32, int32_t x32) {
   return static_cast<AngleQ28>(base + z);
 }
 
-uint32_t isqrt32(uint32_t v) {
-  uint32_t r = 0;
-  uint32_t bit = uint32_t{1} << 30;
-  while (bit > v) bit >>= 2;
-  while (bit != 0) {
-    if (v >= r + bit) {
-      v -= r + bit;
-      r = (r >> 1) + bit;
-    } else {
-      r >>= 1;
-    }
-    bit >>= 2;
-  }
-  return r;
-}
-
-uint32_t isqrt64(uint64_t v) {
-  uint64_t r = 0;
-  uint64_t bit = uint64_t{1} << 62;
+// floor(sqrt(v)) by binary digits; the 32-bit instance avoids 64-bit
+// arithmetic where the operand allows it (per frame on small cores).
+template <typename T>
+uint32_t isqrt_digits(T v) {
+  T r = 0;
+  T bit = T{1} << (sizeof(T) * 8 - 2);
   while (bit > v) bit >>= 2;
   while (bit != 0) {
     if (v >= r + bit) {
@@ -130,6 +117,9 @@ uint32_t isqrt64(uint64_t v) {
   }
   return static_cast<uint32_t>(r);
 }
+
+uint32_t isqrt32(uint32_t v) { return isqrt_digits(v); }
+uint32_t isqrt64(uint64_t v) { return isqrt_digits(v); }
 
 AngleQ28 wrap_pi(int64_t a) {
   const int64_t two_pi = int64_t{2} * kPiQ28;
