@@ -114,6 +114,7 @@ int run(const Options& o) {
           cr.metrics = compute_metrics(r.track);
           cr.behaviour = flag_behaviour(r.track);
           cr.bias_percent = bias_percent(r.track);
+          cr.rms_after = rms_after(r.track);
           cr.gaps = rec.gaps;
           cr.run_s = r.wall_s;
           if (kind == EngineKind::kFixed && &w == &c.work.front()) {

@@ -41,6 +41,17 @@ double bias_percent(const std::vector<TrackPoint>& track, double settle_s) {
   return speed > 0 ? 100 * err / speed : 0;
 }
 
+double rms_after(const std::vector<TrackPoint>& track, double settle_s) {
+  double sq = 0;
+  size_t n = 0;
+  for (const TrackPoint& p : track) {
+    if (std::isnan(p.v_true) || (p.t_ns - track.front().t_ns) * 1e-9 < settle_s) continue;
+    sq += (p.v_est - p.v_true) * (p.v_est - p.v_true);
+    ++n;
+  }
+  return n ? std::sqrt(sq / static_cast<double>(n)) : 0;
+}
+
 FlagBehaviour flag_behaviour(const std::vector<TrackPoint>& track) {
   FlagBehaviour b;
   b.frames = static_cast<int>(track.size());
@@ -112,7 +123,7 @@ std::string results_markdown(const std::vector<StudyResult>& results, bool quick
     const bool worst = st.metric == "worst", l1 = st.metric == "L1";
     const char* mname = worst ? "worst |err| after 1 s" : (l1 ? "L1 error" : "E (eq. 22)");
     body << "| case | working | paper | fixed: " << mname << " | float: " << mname
-         << " | fixed: mean error after 1 s | fixed: RMS | plot |\n|---|---|---|---|---|---|---|---|\n";
+         << " | fixed: mean error after 1 s | fixed: RMS after 1 s | plot |\n|---|---|---|---|---|---|---|---|\n";
     for (const CaseResult& c : sr.cases) {
       if (c.engine != F) continue;
       const CaseResult* d = find(sr, c.c.id, c.work, D);
@@ -123,7 +134,7 @@ std::string results_markdown(const std::vector<StudyResult>& results, bool quick
           c.c.paper_value < 0 ? "-" : (worst ? fmt("%.3f m/s", c.c.paper_value) : fmt("%.2f %%", c.c.paper_value));
       body << "| " << c.c.label << " | " << size_name(c.work) << " | " << paper << " | " << value(c.metrics) << " | "
            << (d ? value(d->metrics) : "-") << " | " << fmt("%+.2f %% of V", c.bias_percent) << " | "
-           << fmt("%.4f m/s", c.metrics.rms) << " | " << (c.plot.empty() ? "" : "[svg](" + c.plot + ")") << " |\n";
+           << fmt("%.4f m/s", c.rms_after) << " | " << (c.plot.empty() ? "" : "[svg](" + c.plot + ")") << " |\n";
       // Targets of the issue.
       const std::string at = c.c.label + " at " + size_name(c.work);
       const RunMetrics& m = c.metrics;

@@ -21,6 +21,8 @@ FlagBehaviour flag_behaviour(const std::vector<TrackPoint>& track);
 
 // Mean signed error after `settle_s` relative to the mean |V| there, percent.
 double bias_percent(const std::vector<TrackPoint>& track, double settle_s = 1.0);
+// RMS error after `settle_s`, m/s.
+double rms_after(const std::vector<TrackPoint>& track, double settle_s = 1.0);
 
 struct CaseResult {
   Case c;
@@ -31,6 +33,7 @@ struct CaseResult {
   GapReport gaps;
   double run_s = 0;
   double bias_percent = 0;  // mean signed error after 1 s over mean |V| after 1 s
+  double rms_after = 0;     // RMS error after 1 s, m/s
   std::string plot;  // relative to the results page, fixed engine only
 };
 
