@@ -55,8 +55,9 @@ void usage(std::FILE* f) {
       f);
 }
 
-// Renders a case unless an identical render is already cached.
-std::string render_case(const Case& c, const Options& o) {
+// Renders a case unless an identical render is already cached; adds the
+// render time to *render_s, or counts the reuse in *reused.
+std::string render_case(const Case& c, const Options& o, double* render_s, int* reused) {
   const std::string dir = o.out + "/rec/" + c.id;
   std::ostringstream stamp;
   const std::string scen = o.scenarios + "/" + c.scenario;
@@ -67,7 +68,10 @@ std::string render_case(const Case& c, const Options& o) {
     std::ifstream in(stamp_path);
     std::stringstream have;
     have << in.rdbuf();
-    if (in && have.str() == stamp.str()) return dir;
+    if (in && have.str() == stamp.str()) {
+      ++*reused;
+      return dir;
+    }
   }
   fs::remove_all(dir);
   render::Scenario s = render::load_scenario(scen);
@@ -81,6 +85,7 @@ std::string render_case(const Case& c, const Options& o) {
   ro.threads = o.threads;
   const render::RenderSummary sum = render::render_recording(s, dir, ro);
   std::fprintf(stderr, "    rendered %d frame pairs in %.1f s\n", sum.frames, sum.seconds);
+  *render_s += sum.seconds;
   std::ofstream(stamp_path) << stamp.str();
   return dir;
 }
@@ -93,6 +98,8 @@ int run(const Options& o) {
   fs::create_directories(plot_dir);
   fs::create_directories(o.out);
   std::vector<StudyResult> results;
+  double render_s = 0;
+  int reused = 0;
   size_t n_cases = 0, i_case = 0;
   for (const Study& st : studies) n_cases += st.cases.size();
   for (const Study& st : studies) {
@@ -100,7 +107,7 @@ int run(const Options& o) {
     for (const Case& c : st.cases) {
       ++i_case;
       std::fprintf(stderr, "[%zu/%zu] %s\n", i_case, n_cases, c.id.c_str());
-      const Recording rec = load_recording(render_case(c, o));
+      const Recording rec = load_recording(render_case(c, o, &render_s, &reused));
       for (const WorkSize& w : c.work) {
         for (EngineKind kind : {EngineKind::kFixed, EngineKind::kFloat}) {
           RunOptions ro;
@@ -132,7 +139,7 @@ int run(const Options& o) {
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::ofstream out(o.doc);
   if (!out) throw std::runtime_error(o.doc + ": cannot write");
-  out << results_markdown(results, o.quick, secs);
+  out << results_markdown(results, o.quick, secs, render_s, reused);
   std::fprintf(stderr, "wrote %s (%.0f s)\n", o.doc.c_str(), secs);
   return 0;
 }

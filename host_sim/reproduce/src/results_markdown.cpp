@@ -91,7 +91,8 @@ FlagBehaviour flag_behaviour(const std::vector<TrackPoint>& track) {
   return b;
 }
 
-std::string results_markdown(const std::vector<StudyResult>& results, bool quick, double seconds) {
+std::string results_markdown(const std::vector<StudyResult>& results, bool quick, double seconds,
+                             double render_seconds, int renders_reused) {
   std::ostringstream md, body;
   std::vector<Target> targets;
   const EngineKind F = EngineKind::kFixed, D = EngineKind::kFloat;
@@ -171,7 +172,9 @@ std::string results_markdown(const std::vector<StudyResult>& results, bool quick
 
   md << "# Results: the paper's studies reproduced\n\n"
      << "Written by `lumavel-sim reproduce" << (quick ? " --quick" : "") << "` (" << fmt("%.0f", seconds)
-     << " s on the 2-core build machine). Every recording is rendered by `lumavel-sim render` from "
+     << " s on the 2-core build machine, of which " << fmt("%.0f", render_seconds) << " s rendering"
+     << (renders_reused ? "; " + std::to_string(renders_reused) + " renders reused from an earlier run, not counted" : std::string())
+     << "). Every recording is rendered by `lumavel-sim render` from "
         "`host_sim/scenarios/`; both engines run on the same frames: `fixed` is the firmware core "
         "(integer only), `float` the double-precision reference. E is the paper's eq. 22 (time average "
         "of |V_est - V| / |V|, samples with |V| < 0.05 m/s left out), from the first frame on: "

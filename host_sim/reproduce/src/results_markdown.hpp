@@ -42,6 +42,7 @@ struct StudyResult {
   std::vector<CaseResult> cases;
 };
 
-std::string results_markdown(const std::vector<StudyResult>& results, bool quick, double seconds);
+std::string results_markdown(const std::vector<StudyResult>& results, bool quick, double seconds,
+                             double render_seconds, int renders_reused);
 
 }  // namespace lumavel::host::reproduce
