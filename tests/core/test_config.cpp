@@ -6,6 +6,9 @@
 
 #include "lumavel/core/config.hpp"
 #include "lumavel/core/estimator.hpp"
+#include "lumavel/core/kernel_bank.hpp"
+
+#include <utility>
 #include "lumavel/host/settings.hpp"
 #include "synthetic_rig.hpp"
 
@@ -82,4 +85,14 @@ TEST(Config, EstimatorKeepsItsConfigurationOnError) {
   CHECK(est->configure(bad) == ConfigError::kWidth);
   LONGS_EQUAL(40, est->config().width);
   delete est;
+}
+
+TEST(Config, ColumnEdgeTableMustBeMonotonic) {
+  EstimatorConfig c = good();
+  AngleQ28 pin[kMaxColumns + 1];
+  pinhole_column_edges(c.cam[0], c.width, pin);
+  c.column_edges[0] = pin;
+  CHECK(validate(c) == ConfigError::kOk);
+  std::swap(pin[3], pin[4]);
+  LONGS_EQUAL(static_cast<int>(ConfigError::kColumnEdges), static_cast<int>(validate(c)));
 }

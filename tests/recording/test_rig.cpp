@@ -145,3 +145,26 @@ TEST(Rig, SlowGyroWidensTheGyroGap) {
   const EstimatorSettings s = derive_settings(load_recording(fixture::write_recording(dir.path() + "/rec", o)), {});
   DOUBLES_EQUAL(0.1, s.gyro_gap, 1e-12);
 }
+
+TEST(Rig, PinholeCamerasHaveNoEdgeTable) {
+  CameraSensor c = fixture::left_camera(640, 480, 0.0);
+  c.distortion = {0, 0, 0, 0};
+  CHECK_TRUE(undistorted_column_edges(c, 40, M_PI / 2, -1).empty());
+}
+
+TEST(Rig, BarrelDistortionWidensTheOuterColumns) {
+  // k1 < 0 pulls the image in: undistorting pushes the edges out, the more
+  // the further from the centre; the centre column stays where it is.
+  CameraSensor c = fixture::left_camera(640, 480, 0.0);
+  c.distortion = {-0.14, 0.09, 0, 0};
+  const std::vector<double> e = undistorted_column_edges(c, 40, M_PI / 2, -1);
+  LONGS_EQUAL(41, static_cast<long>(e.size()));
+  const double fu = c.fu;
+  auto pinhole = [&](int u) { return M_PI / 2 - std::atan((u * 16.0 - 0.5 - c.cu) / fu); };
+  CHECK(e[0] > pinhole(0) + 1e-3);    // left edge further left (yaw up: u_sign -1)
+  CHECK(e[40] < pinhole(40) - 1e-3);
+  for (int u = 0; u < 40; ++u) CHECK(e[static_cast<size_t>(u + 1)] < e[static_cast<size_t>(u)]);  // monotonic
+  // Forward check: distorting the undistorted edge gives back the pixel.
+  const double x = std::tan(M_PI / 2 - e[5]), r2 = x * x;
+  DOUBLES_EQUAL((5 * 16.0 - 0.5 - c.cu) / fu, x * (1 - 0.14 * r2 + 0.09 * r2 * r2), 1e-9);
+}

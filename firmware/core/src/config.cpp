@@ -15,16 +15,29 @@ bool kernel_ok(const KernelSpec& k, bool order_zero_only) {
   return true;
 }
 
-// Yaw range covered by a camera's columns, from the pinhole edges.
-void view_range(const CameraGeometry& g, uint16_t width, int64_t* lo, int64_t* hi) {
-  AngleQ28 e[2];
-  CameraGeometry one = g;
-  AngleQ28 edges[kMaxColumns + 1];
-  pinhole_column_edges(one, width, edges);
-  e[0] = edges[0];
-  e[1] = edges[width];
-  *lo = e[0] < e[1] ? e[0] : e[1];
-  *hi = e[0] < e[1] ? e[1] : e[0];
+// Yaw range covered by a camera's columns (its edge table, else pinhole).
+void view_range(const CameraGeometry& g, const AngleQ28* table, uint16_t width, int64_t* lo, int64_t* hi) {
+  AngleQ28 first = 0, last = 0;
+  if (table) {
+    first = table[0];
+    last = table[width];
+  } else {
+    AngleQ28 edges[kMaxColumns + 1];
+    pinhole_column_edges(g, width, edges);
+    first = edges[0];
+    last = edges[width];
+  }
+  *lo = first < last ? first : last;
+  *hi = first < last ? last : first;
+}
+
+// An edge table must run strictly monotonically in the camera's u direction.
+bool edges_ok(const AngleQ28* e, uint16_t width, int8_t u_sign) {
+  for (uint16_t u = 0; u <= width; ++u)
+    if (e[u] < -fx::kPiQ28 || e[u] > fx::kPiQ28) return false;
+  for (uint16_t u = 0; u < width; ++u)
+    if (u_sign > 0 ? e[u + 1] <= e[u] : e[u + 1] >= e[u]) return false;
+  return true;
 }
 
 }  // namespace
@@ -56,9 +69,11 @@ ConfigError validate(const EstimatorConfig& c) {
   // Each kernel's +-2.5 sigma core must lie inside both views (the side
   // strips of paper eq. 19 take the tails).
   const int64_t centre = (int64_t{c.cam[0].axis_yaw} + c.cam[1].axis_yaw) / 2;
-  for (const CameraGeometry& g : c.cam) {
+  for (int i = 0; i < 2; ++i)
+    if (c.column_edges[i] && !edges_ok(c.column_edges[i], c.width, c.cam[i].u_sign)) return ConfigError::kColumnEdges;
+  for (int cam = 0; cam < 2; ++cam) {
     int64_t lo = 0, hi = 0;
-    view_range(g, c.width, &lo, &hi);
+    view_range(c.cam[cam], c.column_edges[cam], c.width, &lo, &hi);
     for (int i = 1; i < n; ++i) {
       const int64_t reach = all[i]->sigma * 5 / 2;
       if (centre - reach < lo || centre + reach > hi) return ConfigError::kKernelOutsideView;
@@ -98,6 +113,7 @@ const char* to_string(ConfigError e) {
     case ConfigError::kLowTexture: return "low-texture threshold must be 0..1";
     case ConfigError::kSaturatedPermille: return "saturated permille must be 0..1000";
     case ConfigError::kOptions: return "unknown option bits";
+    case ConfigError::kColumnEdges: return "column-edge table must be monotonic in u and within [-pi, pi]";
     case ConfigError::kStill: return "stillness distance must be 0.1 mm..10 cm and its duration 0.1..60 s";
   }
   return "unknown configuration error";

@@ -157,7 +157,13 @@ void build_kernel_bank(const EstimatorConfig& cfg, KernelBank& bank) {
   bank.width = cfg.width;
   bank.count = cfg.kernel_count;
   const int64_t centre = (int64_t{cfg.cam[0].axis_yaw} + cfg.cam[1].axis_yaw) / 2;
-  for (int i = 0; i < 2; ++i) pinhole_column_edges(cfg.cam[i], cfg.width, bank.edge[i]);
+  for (int i = 0; i < 2; ++i) {
+    if (cfg.column_edges[i]) {
+      for (uint16_t u = 0; u <= cfg.width; ++u) bank.edge[i][u] = cfg.column_edges[i][u];
+    } else {
+      pinhole_column_edges(cfg.cam[i], cfg.width, bank.edge[i]);
+    }
+  }
   KernelTable* k_out[2] = {&bank.cam[0].norm, &bank.cam[1].norm};
   KernelTable* d_out[2] = {&bank.cam[0].norm_d, &bank.cam[1].norm_d};
   KernelTable* none[2] = {nullptr, nullptr};

@@ -31,7 +31,33 @@ CameraModel derive_camera(const CameraSensor& c, int work_width, const std::stri
   m.cu = (c.cu + 0.5) * scale - 0.5;  // pixel-centre convention: centre of pixel 0 is 0
   m.axis_yaw = std::atan2(ez[1], ez[0]);
   m.u_sign = cross_z > 0 ? 1 : -1;
+  m.edges = undistorted_column_edges(c, work_width, m.axis_yaw, m.u_sign);
   return m;
+}
+
+std::vector<double> undistorted_column_edges(const CameraSensor& c, int work_width, double axis_yaw, int u_sign) {
+  const std::vector<double>& d = c.distortion;
+  const bool distorted = std::any_of(d.begin(), d.end(), [](double k) { return k != 0; });
+  if (!distorted || c.distortion_model != "radial-tangential") return {};
+  const double k1 = d.size() > 0 ? d[0] : 0, k2 = d.size() > 1 ? d[1] : 0;
+  const double p1 = d.size() > 2 ? d[2] : 0, p2 = d.size() > 3 ? d[3] : 0;
+  std::vector<double> edges(static_cast<size_t>(work_width) + 1);
+  const double scale = static_cast<double>(c.width) / static_cast<double>(work_width);
+  for (int u = 0; u <= work_width; ++u) {
+    // Working edge u on the sensor: native pixel i spans [i - 0.5, i + 0.5].
+    const double xd = (u * scale - 0.5 - c.cu) / c.fu, yd = 0;  // on the principal row
+    double x = xd, y = yd;
+    for (int it = 0; it < 20; ++it) {  // fixed-point inverse of the radial-tangential model
+      const double r2 = x * x + y * y;
+      const double radial = 1 + k1 * r2 + k2 * r2 * r2;
+      const double dx = 2 * p1 * x * y + p2 * (r2 + 2 * x * x);
+      const double dy = p1 * (r2 + 2 * y * y) + 2 * p2 * x * y;
+      x = (xd - dx) / radial;
+      y = (yd - dy) / radial;
+    }
+    edges[static_cast<size_t>(u)] = axis_yaw + u_sign * std::atan(x);
+  }
+  return edges;
 }
 
 EstimatorSettings derive_settings(const Recording& rec, WorkingSize size) {

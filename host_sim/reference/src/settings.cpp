@@ -68,12 +68,25 @@ EstimatorConfig to_fixed_config(const EstimatorSettings& s) {
                                    (s.gyro_offset_learning ? kOptionGyroOffsetLearning : 0));
   c.still_distance = static_cast<LengthQ24>(quantise(s.still_distance, fx::kLengthFrac, "still distance"));
   c.still_min_us = micros(s.still_min, "still duration");
-  for (const CameraModel& cam : s.cam)
-    if (!cam.edges.empty())
-      throw std::invalid_argument("column-edge tables (lens distortion) are not supported by the fixed engine yet");
+  std::vector<AngleQ28> edges[2];
+  for (int i = 0; i < 2; ++i) {
+    edges[i] = to_fixed_edges(s.cam[i], s.width);
+    c.column_edges[i] = edges[i].empty() ? nullptr : edges[i].data();
+  }
   const ConfigError e = validate(c);
   if (e != ConfigError::kOk) throw std::invalid_argument(std::string("configuration: ") + to_string(e));
+  c.column_edges[0] = c.column_edges[1] = nullptr;  // the vectors die here
   return c;
+}
+
+std::vector<AngleQ28> to_fixed_edges(const CameraModel& c, int width) {
+  std::vector<AngleQ28> out;
+  if (c.edges.empty()) return out;
+  if (c.edges.size() != static_cast<size_t>(width) + 1)
+    throw std::invalid_argument("column-edge table has " + std::to_string(c.edges.size()) + " values for " +
+                                std::to_string(width) + " columns (want width + 1)");
+  for (double e : c.edges) out.push_back(static_cast<AngleQ28>(quantise(e, fx::kAngleFrac, "column edge")));
+  return out;
 }
 
 }  // namespace lumavel::host

@@ -40,6 +40,12 @@ struct EstimatorConfig {
   uint8_t options;              // ConfigOption bits
   LengthQ24 still_distance;     // image change since a reference below this counts as still
   uint32_t still_min_us;        // stillness needed before the gyro offset is taken
+  // Optional body-frame yaw of every column edge (width + 1 values) per
+  // camera, replacing the pinhole model: lens distortion is undistorted on
+  // the host and sent as this table, so the firmware stays integer only.
+  // Read by configure() only (the kernel bank keeps the edges); nullptr =
+  // pinhole from fu, cu.
+  const AngleQ28* column_edges[2];
 };
 
 enum ConfigOption : uint8_t {
@@ -68,6 +74,7 @@ enum class ConfigError : uint8_t {
   kSaturatedPermille,
   kOptions,
   kStill,
+  kColumnEdges,
 };
 
 // Names the first field that is out of range (kOk if none).

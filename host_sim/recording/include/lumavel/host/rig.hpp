@@ -20,6 +20,11 @@ constexpr int kMinWorkWidth = kMinColumns, kMaxWorkWidth = kMaxColumns, kMaxWork
 // naming the sensor.yaml when the optical axis is not horizontal.
 CameraModel derive_camera(const CameraSensor& c, int work_width, const std::string& yaml_path);
 
+// Body yaw of the working columns' edges through the sensor's
+// radial-tangential distortion, inverted on the principal row (empty when the
+// coefficients are all zero: the pinhole model applies).
+std::vector<double> undistorted_column_edges(const CameraSensor& c, int work_width, double axis_yaw, int u_sign);
+
 // Full settings; throws RecordingError for a working size the sensors cannot
 // be binned to, or for cameras that do not share one resolution.
 EstimatorSettings derive_settings(const Recording& rec, WorkingSize size);

@@ -46,7 +46,12 @@ struct EstimatorSettings {
 std::vector<KernelModel> default_kernels(double hfov);
 
 // Quantises to the firmware configuration. Throws std::invalid_argument
-// naming the field when a value does not fit its fixed-point format.
+// naming the field when a value does not fit its fixed-point format. Column
+// edge tables are checked too but not attached (column_edges stay nullptr):
+// attach to_fixed_edges() of each camera before configure().
 EstimatorConfig to_fixed_config(const EstimatorSettings& s);
+
+// A camera's column-edge table in Q3.28 (empty for a pinhole camera).
+std::vector<AngleQ28> to_fixed_edges(const CameraModel& c, int width);
 
 }  // namespace lumavel::host
