@@ -2,6 +2,7 @@
 // typo is an error naming file and line, never a silently ignored setting.
 #include "lumavel/host/render/scenario_loader.hpp"
 
+#include "lumavel/host/render/lens_distortion.hpp"
 #include "lumavel/host/render/view_renderer.hpp"
 
 #include <yaml-cpp/yaml.h>
@@ -11,6 +12,7 @@
 #include <initializer_list>
 #include <limits>
 #include <sstream>
+#include <vector>
 
 namespace lumavel::host::render {
 namespace {
@@ -109,10 +111,37 @@ class Reader {
   std::string file_;
 };
 
+// The lens must map the field of view one-to-one: along every row and column
+// of a grid over the distorted image the undistorted coordinates must settle
+// and keep increasing, else the renderer could not find each pixel's ray.
+void read_distortion(const Reader& r, const YAML::Node& d, CameraSpec& c) {
+  const auto v = r.list(d, "distortion", 4, -10, 10);
+  for (int i = 0; i < 4; ++i) c.distortion[static_cast<size_t>(i)] = v[static_cast<size_t>(i)];
+  LensDistortion lens;
+  lens.k = c.distortion;
+  if (lens.none()) return;
+  const double tx = std::tan(0.5 * c.hfov_deg * kPi / 180.0), ty = std::tan(0.5 * c.vfov_deg * kPi / 180.0);
+  constexpr int kGrid = 41;
+  std::vector<double> gx(kGrid * kGrid), gy(kGrid * kGrid);
+  for (int j = 0; j < kGrid; ++j) {
+    for (int i = 0; i < kGrid; ++i) {
+      const double xd = tx * (2.0 * i / (kGrid - 1) - 1), yd = ty * (2.0 * j / (kGrid - 1) - 1);
+      double x, y;
+      if (!lens.undistort(xd, yd, x, y))
+        r.fail(d, "'distortion' cannot be inverted at the image edge (lens folds over)");
+      gx[static_cast<size_t>(j * kGrid + i)] = x;
+      gy[static_cast<size_t>(j * kGrid + i)] = y;
+      const bool rising = (i == 0 || x > gx[static_cast<size_t>(j * kGrid + i - 1)]) &&
+                          (j == 0 || y > gy[static_cast<size_t>((j - 1) * kGrid + i)]);
+      if (!rising) r.fail(d, "'distortion' folds the image over (not one-to-one over the field of view)");
+    }
+  }
+}
+
 void read_camera(const Reader& r, const YAML::Node& n, Scenario& s) {
   r.check_keys(n, "camera", {"resolution", "fov_deg", "rate_hz", "exposure", "baseline_m",
                              "misalignment_deg", "look", "ahead", "rig_yaw_deg", "first_frame_s",
-                             "noise_sigma"});
+                             "noise_sigma", "distortion"});
   CameraSpec& c = s.camera;
   if (n["resolution"]) {
     const auto v = r.list(n["resolution"], "resolution", 2, 1, 8192);
@@ -135,6 +164,7 @@ void read_camera(const Reader& r, const YAML::Node& n, Scenario& s) {
   c.rig_yaw_deg = r.num(n, "rig_yaw_deg", c.rig_yaw_deg, -80, 80);
   c.first_frame_s = r.num(n, "first_frame_s", c.first_frame_s, -kInf, kInf);
   s.pixel_noise_sigma = r.num(n, "noise_sigma", s.pixel_noise_sigma, 0, 255);
+  if (const YAML::Node d = n["distortion"]) read_distortion(r, d, c);
 }
 
 void read_segment(const Reader& r, const YAML::Node& n, SegmentSpec& g) {

@@ -84,7 +84,7 @@ CameraSensor camera_sensor(const Scenario& s, const StereoRig& rig, int cam) {
   c.fv = p.fv;
   c.cu = p.cu;
   c.cv = p.cv;
-  c.distortion = {0, 0, 0, 0};
+  c.distortion.assign(p.lens.k.begin(), p.lens.k.end());
   const RigidPose& T = rig.T_BS(cam);
   for (int r = 0; r < 3; ++r) {
     for (int k = 0; k < 3; ++k) c.T_BS[static_cast<size_t>(4 * r + k)] = T.R(r, k);

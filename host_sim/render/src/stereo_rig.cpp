@@ -20,8 +20,45 @@ Pinhole pinhole_from_fov(int width, int height, double hfov_deg, double vfov_deg
   return p;
 }
 
+void distort_pixel(const Pinhole& p, double u, double v, double& ud, double& vd) {
+  double xd, yd;
+  p.lens.distort((u - p.cu) / p.fu, (v - p.cv) / p.fv, xd, yd);
+  ud = p.cu + p.fu * xd;
+  vd = p.cv + p.fv * yd;
+}
+
+bool undistort_pixel(const Pinhole& p, double ud, double vd, double& u, double& v) {
+  double x, y;
+  const bool ok = p.lens.undistort((ud - p.cu) / p.fu, (vd - p.cv) / p.fv, x, y);
+  u = p.cu + p.fu * x;
+  v = p.cv + p.fv * y;
+  return ok;
+}
+
+std::shared_ptr<const LensGrid> make_lens_grid(const Pinhole& p) {
+  auto g = std::make_shared<LensGrid>();
+  g->w = kLensSubdiv * p.width + 1;
+  g->h = kLensSubdiv * p.height + 1;
+  g->u.resize(static_cast<size_t>(g->w) * static_cast<size_t>(g->h));
+  g->v.resize(g->u.size());
+  for (int j = 0; j < g->h; ++j) {
+    for (int i = 0; i < g->w; ++i) {
+      const size_t k = static_cast<size_t>(j) * static_cast<size_t>(g->w) + static_cast<size_t>(i);
+      double u, v;
+      if (!undistort_pixel(p, -0.5 + static_cast<double>(i) / kLensSubdiv,
+                           -0.5 + static_cast<double>(j) / kLensSubdiv, u, v))
+        u = v = std::nan("");
+      g->u[k] = u;
+      g->v[k] = v;
+    }
+  }
+  return g;
+}
+
 StereoRig::StereoRig(const CameraSpec& spec)
     : pin_(pinhole_from_fov(spec.width, spec.height, spec.hfov_deg, spec.vfov_deg)) {
+  pin_.lens.k = spec.distortion;
+  if (!pin_.lens.none()) pin_.lens_grid = make_lens_grid(pin_);
   // Columns = camera axes in the body frame. Looking left: optical axis +y,
   // image down = -z, image right = y_c x z_c = +x (forward).
   Eigen::Matrix3d look;

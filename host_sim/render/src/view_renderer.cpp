@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <vector>
 
 namespace lumavel::host::render {
@@ -28,6 +29,7 @@ struct PlaneView {
   Eigen::Vector3d D, S, V;
   double cs = 0, cv = 0, g = 0;
   int u0 = 0, u1 = -1, r0 = 0, r1 = -1;  // pixel bounding box (inclusive)
+  double bu0 = 0, bu1 = 0, bv0 = 0, bv1 = 0;  // same, unclipped (ideal pinhole coordinates)
 
   bool eval(double u, double v, double& s, double& t, double& lambda) const {
     const double d = D[0] * u + D[1] * v + D[2];
@@ -68,8 +70,11 @@ Eigen::Matrix3d pixel_to_ray(const Pinhole& c) {
 }
 
 // Sets up the homography and the image bounding box of the plane's rectangle
-// (its corners clipped to the half-space in front of the camera).
-bool make_view(const ScenePlane& p, const Pinhole& cam, const RigidPose& T_WC, PlaneView& pv) {
+// (its corners clipped to the half-space in front of the camera). Without
+// `clip_to_image` (distorted lens: the rays reach beyond the pinhole image)
+// only the unclipped box is set.
+bool make_view(const ScenePlane& p, const Pinhole& cam, const RigidPose& T_WC, PlaneView& pv,
+               bool clip_to_image = true) {
   const Eigen::Vector3d& C = T_WC.t;
   pv.plane = &p;
   pv.g = (p.origin - C).dot(p.normal);
@@ -107,6 +112,11 @@ bool make_view(const ScenePlane& p, const Pinhole& cam, const RigidPose& T_WC, P
     vmin = std::min(vmin, v);
     vmax = std::max(vmax, v);
   }
+  pv.bu0 = umin;
+  pv.bu1 = umax;
+  pv.bv0 = vmin;
+  pv.bv1 = vmax;
+  if (!clip_to_image) return true;
   if (umax < -1 || vmax < -1 || umin > cam.width || vmin > cam.height) return false;
   pv.u0 = static_cast<int>(std::max(0.0, std::floor(umin)));
   pv.u1 = static_cast<int>(std::min(cam.width - 1.0, std::ceil(umax)));
@@ -222,10 +232,71 @@ double sample_rect(const PlaneView* const* cands, int nc, double background, dou
   return acc + rem * background;
 }
 
+// Distorted lens: each output pixel is split into kLensSubdiv^2 equal
+// sub-pixels of the recorded (distorted) image; each sub-pixel's corners are
+// undistorted and its footprint in the pinhole image, taken as the rectangle
+// between its mean edges, is area-averaged like an undistorted pixel. The
+// sub-pixels weigh equally, so the result is the area average over the
+// distorted pixel up to the lens's variation inside a quarter pixel.
+double render_view_distorted(const Scene& scene, const Pinhole& cam, const RigidPose& T_WC,
+                             double gain, std::vector<double>& accum) {
+  const std::shared_ptr<const LensGrid> grid = cam.lens_grid ? cam.lens_grid : make_lens_grid(cam);
+  std::vector<PlaneView> views;
+  views.reserve(scene.planes.size());
+  for (const auto& p : scene.planes) {
+    PlaneView pv;
+    if (make_view(p, cam, T_WC, pv, false)) views.push_back(pv);
+  }
+  if (views.size() > static_cast<size_t>(kMaxPlanes)) views.resize(kMaxPlanes);
+  constexpr double kSubWeight = 1.0 / (kLensSubdiv * kLensSubdiv);
+  const size_t gw = static_cast<size_t>(grid->w);
+  double bg_total = 0;
+  const PlaneView* cands[kMaxPlanes];
+  for (int r = 0; r < cam.height; ++r) {
+    double* out = accum.data() + static_cast<size_t>(r) * static_cast<size_t>(cam.width);
+    for (int c = 0; c < cam.width; ++c) {
+      double sum = 0, bg = 0;
+      for (int sy = 0; sy < kLensSubdiv; ++sy) {
+        for (int sx = 0; sx < kLensSubdiv; ++sx) {
+          const size_t i = static_cast<size_t>(kLensSubdiv * c + sx);
+          const size_t j = static_cast<size_t>(kLensSubdiv * r + sy);
+          const size_t k[4] = {j * gw + i, j * gw + i + 1, (j + 1) * gw + i, (j + 1) * gw + i + 1};
+          const double* U = grid->u.data();
+          const double* V = grid->v.data();
+          const double ua = 0.5 * (U[k[0]] + U[k[2]]), ub = 0.5 * (U[k[1]] + U[k[3]]);
+          const double va = 0.5 * (V[k[0]] + V[k[1]]), vb = 0.5 * (V[k[2]] + V[k[3]]);
+          if (!(std::isfinite(ua) && std::isfinite(ub) && std::isfinite(va) && std::isfinite(vb))) {
+            sum += scene.background;  // no ray: nothing is seen there
+            bg += 1;
+            continue;
+          }
+          double lo_u = U[k[0]], hi_u = lo_u, lo_v = V[k[0]], hi_v = lo_v;
+          for (int q = 1; q < 4; ++q) {
+            lo_u = std::min(lo_u, U[k[q]]);
+            hi_u = std::max(hi_u, U[k[q]]);
+            lo_v = std::min(lo_v, V[k[q]]);
+            hi_v = std::max(hi_v, V[k[q]]);
+          }
+          int nc = 0;
+          for (const auto& pv : views)
+            if (pv.bu1 >= lo_u - 1 && pv.bu0 <= hi_u + 1 && pv.bv1 >= lo_v - 1 && pv.bv0 <= hi_v + 1)
+              cands[nc++] = &pv;
+          // One level of further splitting (2x2) for oblique planes and horizons.
+          sum += sample_rect(cands, nc, scene.background, ua, ub, va, vb, kMaxDepth - 1, bg);
+        }
+      }
+      out[c] += gain * sum * kSubWeight;
+      bg_total += bg * kSubWeight;
+    }
+  }
+  return bg_total / (static_cast<double>(cam.width) * cam.height);
+}
+
 }  // namespace
 
 double render_view(const Scene& scene, const Pinhole& cam, const RigidPose& T_WC, double gain,
                    std::vector<double>& accum) {
+  if (!cam.lens.none()) return render_view_distorted(scene, cam, T_WC, gain, accum);
   std::vector<PlaneView> views;
   views.reserve(scene.planes.size());
   for (const auto& p : scene.planes) {
@@ -260,6 +331,7 @@ double render_view(const Scene& scene, const Pinhole& cam, const RigidPose& T_WC
 
 bool pixel_hit(const Scene& scene, const Pinhole& cam, const RigidPose& T_WC, double u, double v,
                Eigen::Vector3d& hit) {
+  if (!cam.lens.none() && !undistort_pixel(cam, u, v, u, v)) return false;
   double best = 1e300;
   bool found = false;
   for (const auto& p : scene.planes) {
@@ -281,6 +353,7 @@ bool project(const Pinhole& cam, const RigidPose& T_WC, const Eigen::Vector3d& p
   if (p.z() <= 1e-9) return false;
   u = cam.fu * p.x() / p.z() + cam.cu;
   v = cam.fv * p.y() / p.z() + cam.cv;
+  if (!cam.lens.none()) distort_pixel(cam, u, v, u, v);
   return true;
 }
 

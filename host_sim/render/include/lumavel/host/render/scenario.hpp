@@ -2,6 +2,7 @@
 // host_sim/scenarios/README.md). Plain data: the loader validates, the
 // renderer trusts it.
 #pragma once
+#include <array>
 #include <cstdint>
 #include <string>
 #include <utility>
@@ -22,6 +23,7 @@ struct CameraSpec {
   bool cam1_ahead = true;       // cam1 sits at +h/2 on body x, cam0 at -h/2
   double rig_yaw_deg = 0;       // yaw of both cameras away from orthogonal
   double first_frame_s = 0;     // mid-exposure time of frame 0
+  std::array<double, 4> distortion{};  // radial-tangential k1, k2, p1, p2; 0 = pinhole
 };
 
 enum class PatternKind { Uniform, Sinusoid, Checker, Photo };

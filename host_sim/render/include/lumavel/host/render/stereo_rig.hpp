@@ -3,7 +3,10 @@
 // optical centres; cam1 is yawed by the misalignment relative to cam0.
 #pragma once
 #include <Eigen/Dense>
+#include <memory>
+#include <vector>
 
+#include "lumavel/host/render/lens_distortion.hpp"
 #include "lumavel/host/render/scenario.hpp"
 #include "lumavel/host/render/trajectory.hpp"
 
@@ -14,12 +17,33 @@ struct RigidPose {  // p_parent = R * p_child + t
   Eigen::Vector3d t = Eigen::Vector3d::Zero();
 };
 
+// Where each sub-pixel corner of a distorted image looks in the ideal
+// pinhole image: (kLensSubdiv W + 1) x (kLensSubdiv H + 1) points, row-major,
+// corner (i, j) at distorted (-0.5 + i / kLensSubdiv, -0.5 + j / kLensSubdiv);
+// NaN where the inverse does not settle.
+constexpr int kLensSubdiv = 4;
+struct LensGrid {
+  int w = 0, h = 0;
+  std::vector<double> u, v;
+};
+
 struct Pinhole {
   int width = 0, height = 0;
   double fu = 0, fv = 0, cu = 0, cv = 0;  // centre of pixel (0,0) is (0,0)
+  LensDistortion lens;                     // none: an ideal pinhole
+  // Distorted lens: the undistortion grid, computed once by StereoRig and
+  // shared by all views (render_view computes it if absent).
+  std::shared_ptr<const LensGrid> lens_grid;
 };
 
 Pinhole pinhole_from_fov(int width, int height, double hfov_deg, double vfov_deg);
+
+// Pixel coordinates through the lens: ideal pinhole (u, v) <-> the distorted
+// image the sensor records (ud, vd). undistort_pixel: false if the inverse
+// does not settle there.
+void distort_pixel(const Pinhole& p, double u, double v, double& ud, double& vd);
+bool undistort_pixel(const Pinhole& p, double ud, double vd, double& u, double& v);
+std::shared_ptr<const LensGrid> make_lens_grid(const Pinhole& p);
 
 class StereoRig {
  public:

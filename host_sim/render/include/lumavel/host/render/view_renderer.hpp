@@ -2,6 +2,9 @@
 // of the scene over the pixel (exact box filter on each plane through the
 // patterns' rectangle integrals; pixels whose footprint is not close to a
 // rectangle, or that straddle a plane's horizon, are split up to 4x4).
+// With a distorted lens (Pinhole::lens) the pixels are those of the
+// distorted image: pixel coordinates in and out of these functions are
+// distorted ones.
 #pragma once
 #include <vector>
 
