@@ -15,6 +15,10 @@ std::string fmt(const char* f, double v) {
   return b;
 }
 
+double seconds_between(uint64_t later, uint64_t earlier) {
+  return static_cast<double>(later - earlier) * 1e-9;
+}
+
 std::string size_name(const WorkSize& w) { return std::to_string(w.width) + "x" + std::to_string(w.height); }
 
 const CaseResult* find(const StudyResult& s, const std::string& id, const WorkSize& w, EngineKind k) {
@@ -34,7 +38,7 @@ double bias_percent(const std::vector<TrackPoint>& track, double settle_s) {
   if (track.empty()) return 0;
   double err = 0, speed = 0;
   for (const TrackPoint& p : track) {
-    if (std::isnan(p.v_true) || (p.t_ns - track.front().t_ns) * 1e-9 < settle_s) continue;
+    if (std::isnan(p.v_true) || seconds_between(p.t_ns, track.front().t_ns) < settle_s) continue;
     err += p.v_est - p.v_true;
     speed += std::fabs(p.v_true);
   }
@@ -45,7 +49,7 @@ double rms_after(const std::vector<TrackPoint>& track, double settle_s) {
   double sq = 0;
   size_t n = 0;
   for (const TrackPoint& p : track) {
-    if (std::isnan(p.v_true) || (p.t_ns - track.front().t_ns) * 1e-9 < settle_s) continue;
+    if (std::isnan(p.v_true) || seconds_between(p.t_ns, track.front().t_ns) < settle_s) continue;
     sq += (p.v_est - p.v_true) * (p.v_est - p.v_true);
     ++n;
   }
@@ -67,7 +71,7 @@ FlagBehaviour flag_behaviour(const std::vector<TrackPoint>& track) {
     const bool hold = (s & (kStatusLowTexture | kStatusNoLight)) != 0;
     if (hold && !in_hold) start = i;
     if (!hold && in_hold) {
-      const double len = (track[i].t_ns - track[start].t_ns) * 1e-9;
+      const double len = seconds_between(track[i].t_ns, track[start].t_ns);
       if (len > b.longest_hold_s) {
         b.longest_hold_s = len;
         best_start = start;
@@ -83,7 +87,7 @@ FlagBehaviour flag_behaviour(const std::vector<TrackPoint>& track) {
       const double v = track[i].v_true;
       if (std::isnan(v)) break;
       if (std::fabs(track[i].v_est - v) < 0.05 * std::fmax(std::fabs(v), 0.05)) {
-        b.recovery_s = (track[i].t_ns - track[best_end].t_ns) * 1e-9;
+        b.recovery_s = seconds_between(track[i].t_ns, track[best_end].t_ns);
         break;
       }
     }

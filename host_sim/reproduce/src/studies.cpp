@@ -64,12 +64,12 @@ std::vector<Study> paper_studies(bool quick) {
                 "2 m track back and forth at 20.83 fps, clutter at 0.3 to 3.5 m, 50 Hz lighting aliased "
                 "to 4.17 Hz, 1.57 deg misalignment. L1 error sum|err| / sum|V|. Rendered at 160x120.",
                 "L1", {}};
-  trolley.cases.push_back({"trolley", "paper_trolley.yaml", 160, 120, -1, quick ? 6 : -1,
+  trolley.cases.push_back({"trolley", "paper_trolley.yaml", 160, 120, -1, quick ? 6.0 : -1.0,
                            {{160, 120}, {40, 30}}, "trolley", -1});
   out.push_back(trolley);
 
   Study turning{"Turning with gyro noise and bias", "A turning run with a noisy, biased gyro.", "E", {}};
-  turning.cases.push_back({"turning", "gyro_turning.yaml", -1, -1, -1, quick ? 4 : -1, {{40, 30}}, "turning", -1});
+  turning.cases.push_back({"turning", "gyro_turning.yaml", -1, -1, -1, quick ? 4.0 : -1.0, {{40, 30}}, "turning", -1});
   out.push_back(turning);
 
   Study texture{"Untextured scene, dark frames, dropped frames",

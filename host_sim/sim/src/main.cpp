@@ -2,6 +2,8 @@
 #include <cstdio>
 #include <cstring>
 
+#include "lumavel/host/calibrate.hpp"
+#include "lumavel/host/import_slider.hpp"
 #include "lumavel/host/reproduce_command.hpp"
 #include "run_command.hpp"
 
@@ -31,6 +33,8 @@ void print_help(std::FILE* f) {
       "  render    render a synthetic recording of a textured scene\n"
 #endif
       "  reproduce render and run the paper's studies, write docs/results.md\n"
+      "  calibrate estimate the misalignment between the cameras from a recording\n"
+      "  import-slider  turn a single-camera slider sequence into a two-camera recording\n"
       "\n"
       "  lumavel-sim <command> --help   help on one command\n"
       "  lumavel-sim --version          version\n"
@@ -59,6 +63,8 @@ int main(int argc, char** argv) {
 #if LUMAVEL_HAVE_RENDER
   if (!std::strcmp(cmd, "render")) return lumavel::host::render_main(argc - 1, argv + 1);
 #endif
+  if (!std::strcmp(cmd, "calibrate")) return lumavel::host::calibrate_main(argc - 1, argv + 1);
+  if (!std::strcmp(cmd, "import-slider")) return lumavel::host::import_slider_main(argc - 1, argv + 1);
   if (!std::strcmp(cmd, "reproduce")) return lumavel::host::reproduce_main(argc - 1, argv + 1);
   std::fprintf(stderr, "lumavel-sim: unknown command '%s' (see lumavel-sim --help)\n", cmd);
   return 2;

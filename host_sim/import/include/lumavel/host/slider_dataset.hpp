@@ -1,0 +1,37 @@
+// The single-camera slider recordings of the Event-Camera Dataset (Mueggler et
+// al., IJRR 2017), e.g. slider_depth: images.txt (time s, file), groundtruth.txt
+// (t x y z qx qy qz qw) and calib.txt (fx fy cx cy k1 k2 p1 p2 k3). Read as
+// they are; errors name the file and the line.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace lumavel::host {
+
+struct SliderFrame {
+  double t = 0;      // s
+  std::string path;  // absolute or relative to the current directory
+};
+
+struct SliderPose {
+  double t = 0;                // s
+  double p[3] = {0, 0, 0};     // camera position, m (dataset world frame)
+  double q[4] = {0, 0, 0, 1};  // qx qy qz qw as in the file
+};
+
+struct SliderCalib {
+  double fx = 0, fy = 0, cx = 0, cy = 0;
+  double k1 = 0, k2 = 0, p1 = 0, p2 = 0, k3 = 0;
+};
+
+struct SliderDataset {
+  std::vector<SliderFrame> frames;  // times strictly increasing
+  std::vector<SliderPose> poses;    // times strictly increasing
+  SliderCalib calib;
+};
+
+// Reads DIR/images.txt, DIR/groundtruth.txt, DIR/calib.txt (images are not
+// decoded here). Throws RecordingError naming the file and line.
+SliderDataset read_slider_dataset(const std::string& dir);
+
+}  // namespace lumavel::host

@@ -1,0 +1,85 @@
+#include "lumavel/host/slider_dataset.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "lumavel/host/recording_error.hpp"
+
+namespace lumavel::host {
+namespace {
+
+// Calls row(fields, line_no) for each non-empty, non-comment line.
+template <typename Row>
+void for_each_row(const std::string& path, Row row) {
+  std::ifstream in(path);
+  if (!in) throw recording_error_in(path, "cannot open");
+  std::string line;
+  long no = 0;
+  while (std::getline(in, line)) {
+    ++no;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    const size_t first = line.find_first_not_of(" \t");
+    if (first == std::string::npos || line[first] == '#') continue;
+    std::istringstream fields(line);
+    row(fields, no);
+  }
+}
+
+double number(std::istringstream& s, const std::string& path, long line, const char* what) {
+  double v = 0;
+  if (!(s >> v) || !std::isfinite(v)) throw recording_error_at(path, line, std::string("bad or missing ") + what);
+  return v;
+}
+
+void check_increasing(double prev, double t, bool any, const std::string& path, long line) {
+  if (any && !(t > prev)) throw recording_error_at(path, line, "timestamp does not increase");
+}
+
+}  // namespace
+
+SliderDataset read_slider_dataset(const std::string& dir) {
+  SliderDataset d;
+  const std::string images = dir + "/images.txt";
+  for_each_row(images, [&](std::istringstream& s, long line) {
+    SliderFrame f;
+    f.t = number(s, images, line, "time");
+    std::string file;
+    if (!(s >> file)) throw recording_error_at(images, line, "missing image file name");
+    f.path = file.front() == '/' ? file : dir + "/" + file;
+    check_increasing(d.frames.empty() ? 0 : d.frames.back().t, f.t, !d.frames.empty(), images, line);
+    d.frames.push_back(f);
+  });
+  if (d.frames.size() < 2) throw recording_error_in(images, "fewer than two frames");
+
+  const std::string gt = dir + "/groundtruth.txt";
+  static const char* const kCols[] = {"x", "y", "z", "qx", "qy", "qz", "qw"};
+  for_each_row(gt, [&](std::istringstream& s, long line) {
+    SliderPose p;
+    p.t = number(s, gt, line, "time");
+    for (int k = 0; k < 3; ++k) p.p[k] = number(s, gt, line, kCols[k]);
+    for (int k = 0; k < 4; ++k) p.q[k] = number(s, gt, line, kCols[3 + k]);
+    check_increasing(d.poses.empty() ? 0 : d.poses.back().t, p.t, !d.poses.empty(), gt, line);
+    d.poses.push_back(p);
+  });
+  if (d.poses.size() < 2) throw recording_error_in(gt, "fewer than two ground-truth samples");
+
+  const std::string calib = dir + "/calib.txt";
+  int rows = 0;
+  for_each_row(calib, [&](std::istringstream& s, long line) {
+    if (rows++) throw recording_error_at(calib, line, "expected one line: fx fy cx cy k1 k2 p1 p2 k3");
+    SliderCalib& c = d.calib;
+    c.fx = number(s, calib, line, "fx");
+    c.fy = number(s, calib, line, "fy");
+    c.cx = number(s, calib, line, "cx");
+    c.cy = number(s, calib, line, "cy");
+    double* k[] = {&c.k1, &c.k2, &c.p1, &c.p2, &c.k3};
+    static const char* const kNames[] = {"k1", "k2", "p1", "p2", "k3"};
+    for (int i = 0; i < 5; ++i) *k[i] = number(s, calib, line, kNames[i]);
+    if (c.fx <= 0 || c.fy <= 0) throw recording_error_at(calib, line, "focal lengths must be positive");
+  });
+  if (!rows) throw recording_error_in(calib, "empty (expected fx fy cx cy k1 k2 p1 p2 k3)");
+  return d;
+}
+
+}  // namespace lumavel::host
