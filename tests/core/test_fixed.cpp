@@ -58,5 +58,3 @@ TEST(Fixed, DivQSaturatesAndHandlesZero) {
   LONGS_EQUAL(0, fx::div_q(0, 0, 16, &sat));
   CHECK_FALSE(sat);
 }
-
-TEST(Fixed, MulShrRounds) { LONGS_EQUAL(3, fx::mul_shr(5, 5, 3)); }

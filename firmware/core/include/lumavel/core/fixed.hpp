@@ -2,7 +2,6 @@
 // saturation. Every quantity crossing a module boundary uses one of these.
 //
 //   name        storage  format   range                 resolution        used for
-//   q15_t       int16    Q0.15    [-1, 1)               3.05e-5           spare (CMSIS naming)
 //   q31_t       int32    Q0.31    [-1, 1)               4.66e-10          kernel tables (see kernel_bank.hpp)
 //   AngleQ28    int32    Q3.28    [-8, 8) rad           3.73e-9 rad       angles: yaw, heading, gyro increments
 //   RateQ24     int32    Q7.24    [-128, 128) rad/s     5.96e-8 rad/s     gyro rate (MPU-6050 max 34.9 rad/s)
@@ -21,7 +20,6 @@
 
 namespace lumavel {
 
-using q15_t = int16_t;
 using q31_t = int32_t;
 using AngleQ28 = int32_t;
 using RateQ24 = int32_t;
@@ -76,11 +74,6 @@ constexpr int64_t shr_round(int64_t v, int s) {
 // scale moves into num or den). A zero
 // denominator saturates toward the sign of num and sets *saturated.
 int32_t div_q(int64_t num, int64_t den, int q, bool* saturated = nullptr);
-
-// (a * b) >> s with rounding, saturated to int32.
-constexpr int32_t mul_shr(int32_t a, int32_t b, int s, bool* saturated = nullptr) {
-  return sat32(shr_round(int64_t{a} * int64_t{b}, s), saturated);
-}
 
 }  // namespace fx
 }  // namespace lumavel
