@@ -16,6 +16,7 @@
 #include "lumavel/protocol/device_config.hpp"
 #include "lumavel/protocol/reports.hpp"
 #include "lumavel/stream/format.hpp"
+#include "stream_writer.hpp"
 #include "lumavel/stream/run_stream.hpp"
 
 namespace {
@@ -26,14 +27,6 @@ constexpr double kBaseline = 0.08;  // m
 constexpr double kFramePeriod = 1.0 / 60;
 constexpr double kGyroPeriod = 0.002;
 
-struct Out {
-  std::FILE* f;
-  void bytes(const void* p, size_t n) { std::fwrite(p, 1, n, f); }
-  void u8(uint8_t v) { bytes(&v, 1); }
-  void u16(uint16_t v) { u8(static_cast<uint8_t>(v)); u8(static_cast<uint8_t>(v >> 8)); }
-  void u64(uint64_t v) { for (int i = 0; i < 8; ++i) u8(static_cast<uint8_t>(v >> (8 * i))); }
-  void i32(int32_t v) { const auto u = static_cast<uint32_t>(v); for (int i = 0; i < 4; ++i) u8(static_cast<uint8_t>(u >> (8 * i))); }
-};
 
 double distance(double t) { return 1.5 * t + 0.5 * (1 - std::cos(2 * kPi * 0.3 * t)) / (2 * kPi * 0.3); }
 double heading(double t) { return 0.05 * std::sin(2 * kPi * 0.5 * t); }
@@ -62,14 +55,14 @@ void render(double t, double cam_x, int w, int h, uint32_t& rng, uint8_t* px) {
   }
 }
 
-void set_feature(Out& o, const uint8_t* report, size_t n) {
+void set_feature(lumavel::stream::StreamWriter& o, const uint8_t* report, size_t n) {
   o.u8(lumavel::stream::kTagSetFeature);
   o.u8(report[0]);
   o.u8(static_cast<uint8_t>(n));
   o.bytes(report, n);
 }
 
-void get_feature(Out& o, uint8_t id) {
+void get_feature(lumavel::stream::StreamWriter& o, uint8_t id) {
   o.u8(lumavel::stream::kTagGetFeature);
   o.u8(id);
 }
@@ -89,14 +82,12 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "%s: width 16..2048, height 1..2048, frames >= 1\n", argv[0]);
     return 1;
   }
-  Out o{std::fopen(argv[1], "wb")};
+  lumavel::stream::StreamWriter o{std::fopen(argv[1], "wb")};
   if (o.f == nullptr) {
     std::fprintf(stderr, "%s: cannot open for writing\n", argv[1]);
     return 1;
   }
-  o.bytes(lumavel::stream::kMagic, 4);
-  o.u16(static_cast<uint16_t>(w));
-  o.u16(static_cast<uint16_t>(h));
+  o.header(w, h);
 
   std::vector<uint8_t> px(static_cast<size_t>(w) * static_cast<size_t>(h));
   int gyro_k = 0;
@@ -104,9 +95,7 @@ int main(int argc, char** argv) {
     const double t = 0.1 + k * kFramePeriod;
     for (; gyro_k * kGyroPeriod <= t; ++gyro_k) {
       const double tg = gyro_k * kGyroPeriod;
-      o.u8(lumavel::stream::kTagGyro);
-      o.u64(static_cast<uint64_t>(std::llround(tg * 1e9)));
-      o.i32(static_cast<int32_t>(std::lround(yaw_rate(tg) * (1 << 24))));
+      o.gyro(static_cast<uint64_t>(std::llround(tg * 1e9)), static_cast<int32_t>(std::lround(yaw_rate(tg) * (1 << 24))));
     }
     if (k == frames * 3 / 10) {
       get_feature(o, lumavel::protocol::kReportDeviceInfo);

@@ -14,25 +14,10 @@
 #include "lumavel/host/recording.hpp"
 #include "lumavel/host/recording_error.hpp"
 #include "lumavel/stream/format.hpp"
+#include "stream_writer.hpp"
 
 namespace {
 
-struct Out {
-  std::FILE* f;
-  void bytes(const void* p, size_t n) { std::fwrite(p, 1, n, f); }
-  void u8(uint8_t v) { bytes(&v, 1); }
-  void u16(uint16_t v) { u8(static_cast<uint8_t>(v)); u8(static_cast<uint8_t>(v >> 8)); }
-  void u64(uint64_t v) { for (int i = 0; i < 8; ++i) u8(static_cast<uint8_t>(v >> (8 * i))); }
-  void i32(int32_t v) {
-    const auto u = static_cast<uint32_t>(v);
-    for (int i = 0; i < 4; ++i) u8(static_cast<uint8_t>(u >> (8 * i)));
-  }
-  void gyro(const lumavel::hal::GyroSample& s) {
-    u8(lumavel::stream::kTagGyro);
-    u64(s.t_ns);
-    i32(s.rate_z);
-  }
-};
 
 }  // namespace
 
@@ -51,14 +36,12 @@ int main(int argc, char** argv) {
     const lumavel::host::Recording rec = lumavel::host::load_recording(argv[1]);
     lumavel::host::FileStereoCamera camera(rec, w, h);
     lumavel::host::FileGyro gyro(rec);
-    Out o{std::fopen(argv[2], "wb")};
+    lumavel::stream::StreamWriter o{std::fopen(argv[2], "wb")};
     if (o.f == nullptr) {
       std::fprintf(stderr, "%s: cannot open for writing\n", argv[2]);
       return 1;
     }
-    o.bytes(lumavel::stream::kMagic, 4);
-    o.u16(static_cast<uint16_t>(w));
-    o.u16(static_cast<uint16_t>(h));
+    o.header(w, h);
     std::vector<uint8_t> px[2];
     px[0].resize(static_cast<size_t>(w) * static_cast<size_t>(h));
     px[1].resize(px[0].size());
@@ -76,7 +59,7 @@ int main(int argc, char** argv) {
       uint64_t t = 0;
       lumavel::hal::GyroSample s{};
       while (gyro.peek_time(t) && t <= img.t_ns && gyro.read(s)) {
-        o.gyro(s);
+        o.gyro(s.t_ns, s.rate_z);
         ++samples;
       }
       o.u8(lumavel::stream::kTagFrame);
@@ -87,7 +70,7 @@ int main(int argc, char** argv) {
     }
     lumavel::hal::GyroSample s{};
     if (gyro.read(s)) {  // the first sample after the last frame: interpolation needs it
-      o.gyro(s);
+      o.gyro(s.t_ns, s.rate_z);
       ++samples;
     }
     if (std::fclose(o.f) != 0) {

@@ -13,17 +13,6 @@
 
 namespace {
 
-// Splits the semihosting command line in place; returns the word count.
-int split(char* line, char** words, int max) {
-  int n = 0;
-  for (char* p = line; *p != '\0' && n < max;) {
-    while (*p == ' ') *p++ = '\0';
-    if (*p == '\0') break;
-    words[n++] = p;
-    while (*p != '\0' && *p != ' ') ++p;
-  }
-  return n;
-}
 
 [[noreturn]] void fail(const char* what, const char* detail) {
   lumavel::board::Text<200> t;
@@ -39,7 +28,7 @@ int main() {
   lumavel::board::paint_stack();
   char line[256];
   char* words[4] = {};
-  if (!sh::command_line(line, sizeof line) || split(line, words, 4) != 3) {
+  if (!sh::command_line(line, sizeof line) || sh::split_words(line, words, 4) != 3) {
     fail("usage: -semihosting-config ...,arg=lumavel,arg=<in.lvs>,arg=<out.lvr>", "");
   }
   const int in = sh::open(words[1], sh::kModeReadBinary);

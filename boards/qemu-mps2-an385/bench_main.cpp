@@ -73,16 +73,6 @@ void print_phase(const char* label, const char* phase, uint64_t ticks, uint32_t 
   lumavel::semihost::write_text(t.c_str());
 }
 
-int split(char* line, char** words, int max) {
-  int n = 0;
-  for (char* p = line; *p != '\0' && n < max;) {
-    while (*p == ' ') *p++ = '\0';
-    if (*p == '\0') break;
-    words[n++] = p;
-    while (*p != '\0' && *p != ' ') ++p;
-  }
-  return n;
-}
 
 }  // namespace
 
@@ -90,7 +80,7 @@ int main() {
   namespace sh = lumavel::semihost;
   char line[256];
   char* words[4] = {};
-  if (!sh::command_line(line, sizeof line) || split(line, words, 4) != 3) {
+  if (!sh::command_line(line, sizeof line) || sh::split_words(line, words, 4) != 3) {
     fail("usage: -semihosting-config ...,arg=bench,arg=<in.lvs>,arg=<label>\n");
   }
   const int in = sh::open(words[1], sh::kModeReadBinary);

@@ -80,4 +80,15 @@ bool FileSink::flush() {
   return ok;
 }
 
+int split_words(char* line, char** words, int max) {
+  int n = 0;
+  for (char* p = line; *p != '\0' && n < max;) {
+    while (*p == ' ') *p++ = '\0';
+    if (*p == '\0') break;
+    words[n++] = p;
+    while (*p != '\0' && *p != ' ') ++p;
+  }
+  return n;
+}
+
 }  // namespace lumavel::semihost

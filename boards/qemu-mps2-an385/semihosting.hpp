@@ -17,6 +17,8 @@ void close(int handle);
 size_t read(int handle, uint8_t* buf, size_t len);
 size_t write(int handle, const uint8_t* buf, size_t len);
 void write_text(const char* text);  // to QEMU's console
+// Splits a command line in place at spaces; returns the word count (<= max).
+int split_words(char* line, char** words, int max);
 [[noreturn]] void exit(int code);   // SYS_EXIT_EXTENDED: 0..255 reach QEMU's exit status
 
 constexpr int kModeReadBinary = 1;

@@ -1,5 +1,8 @@
 #include "render_test_support.hpp"
 
+#include "lumavel/host/render/frame_renderer.hpp"
+#include "lumavel/host/render/scene.hpp"
+
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -69,6 +72,20 @@ std::string first_line(const std::string& path) {
   std::string line;
   std::getline(in, line);
   return line;
+}
+
+std::vector<double> radiance(const Scenario& s, int cam) {
+  const Scene scene = build_scene(s);
+  const FrameRenderer fr(s, scene);
+  std::vector<double> out;
+  fr.render_radiance(0, cam, out);
+  return out;
+}
+
+double edge_u_from_left(const std::vector<double>& img, int w, int row) {
+  double sum = 0;
+  for (int c = 0; c < w; ++c) sum += img[static_cast<size_t>(row * w + c)] / 255.0;
+  return sum - 0.5;
 }
 
 }  // namespace lumavel::host::render::test

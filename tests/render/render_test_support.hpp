@@ -19,6 +19,13 @@ PatternSpec uniform(double v);
 PatternSpec checker(double square, double low, double high);
 
 // Fresh empty folder under the system temp dir (removed first if present).
+// Radiance (before noise and rounding) of frame 0 of camera `cam`.
+std::vector<double> radiance(const Scenario& s, int cam = 0);
+// With a plane of 255 on background 0 covering a row from the left up to a
+// vertical edge, the edge's u is the covered length of the row - 0.5 (box
+// filtering makes this exact).
+double edge_u_from_left(const std::vector<double>& img, int w, int row);
+
 std::string temp_dir(const std::string& name);
 std::string read_text(const std::string& path);
 std::string first_line(const std::string& path);

@@ -17,14 +17,6 @@ using namespace lumavel::host::render::test;
 
 namespace {
 
-std::vector<double> radiance(const Scenario& s) {
-  const Scene scene = build_scene(s);
-  const FrameRenderer fr(s, scene);
-  std::vector<double> out;
-  fr.render_radiance(0, 0, out);
-  return out;
-}
-
 // World x on the wall at distance d that projects to image column u.
 double x_at_u(const Pinhole& p, double u, double d) { return (u - p.cu) * d / p.fu; }
 

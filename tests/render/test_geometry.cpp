@@ -17,22 +17,6 @@ using namespace lumavel::host::render::test;
 namespace {
 constexpr double kPi = 3.14159265358979323846;
 
-std::vector<double> radiance(const Scenario& s, int cam) {
-  const Scene scene = build_scene(s);
-  const FrameRenderer fr(s, scene);
-  std::vector<double> out;
-  fr.render_radiance(0, cam, out);
-  return out;
-}
-
-// With a plane of 255 on background 0 covering the image from the left up
-// to a vertical edge, the edge's u is the covered length of a row - 0.5
-// (box filtering makes this exact).
-double edge_u_from_left(const std::vector<double>& img, int w, int row) {
-  double sum = 0;
-  for (int c = 0; c < w; ++c) sum += img[static_cast<size_t>(row * w + c)] / 255.0;
-  return sum - 0.5;
-}
 double edge_v_from_top(const std::vector<double>& img, int w, int h, int col) {
   double sum = 0;
   for (int r = 0; r < h; ++r) sum += img[static_cast<size_t>(r * w + col)] / 255.0;
