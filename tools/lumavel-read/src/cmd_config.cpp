@@ -1,4 +1,7 @@
 // `config get` and `config set KEY=VALUE...`.
+#include <algorithm>
+#include <chrono>
+#include <thread>
 #include <cstdio>
 
 #include "commands.hpp"
@@ -63,28 +66,38 @@ int cmd_config(const Common& c, const std::vector<std::string>& args) {
   }
   uint8_t buf[proto::kConfigSize];
   proto::encode_config(cfg, buf, sizeof buf);
-  bool refused_by_link = false;
-  try {
-    dev.set_feature(buf, sizeof buf);
-  } catch (const DeviceError&) {
-    refused_by_link = true;  // the reason is in the info report
-  }
-  const proto::DeviceInfo info = read_info(dev);
-  if (refused_by_link || info.config_status != 0) {
-    std::fprintf(stderr, "lumavel-read config set: the device refused the configuration: %s\n",
-                 proto::to_string(static_cast<proto::ConfigField>(info.config_status)));
-    return kExitRefused;
-  }
-  const proto::DeviceConfig now = read_config(dev);
-  std::fputs(format_config(now).c_str(), stdout);
-  uint8_t back[proto::kConfigSize];
-  proto::encode_config(now, back, sizeof back);
-  for (size_t i = 0; i < sizeof back; ++i) {
-    if (back[i] != buf[i]) {
-      std::fprintf(stderr, "lumavel-read config set: the device reports a different configuration "
-                           "than the one sent\n");
+  // A set is idempotent: when the read-back shows it did not arrive (a lost
+  // transfer was seen on the gadget link under emulation), send it again.
+  constexpr int kAttempts = 3;
+  for (int attempt = 1;; ++attempt) {
+    bool refused_by_link = false;
+    try {
+      dev.set_feature(buf, sizeof buf);
+    } catch (const DeviceError&) {
+      refused_by_link = true;  // the reason is in the info report
+    }
+    const proto::DeviceInfo info = read_info(dev);
+    if (refused_by_link || info.config_status != 0) {
+      std::fprintf(stderr, "lumavel-read config set: the device refused the configuration: %s\n",
+                   proto::to_string(static_cast<proto::ConfigField>(info.config_status)));
       return kExitRefused;
     }
+    const proto::DeviceConfig now = read_config(dev);
+    uint8_t back[proto::kConfigSize];
+    proto::encode_config(now, back, sizeof back);
+    if (std::equal(back, back + sizeof back, buf)) {
+      std::fputs(format_config(now).c_str(), stdout);
+      break;
+    }
+    if (attempt == kAttempts) {
+      std::fputs(format_config(now).c_str(), stdout);
+      std::fprintf(stderr, "lumavel-read config set: the device reports a different configuration "
+                           "than the one sent (%d attempts)\n", kAttempts);
+      return kExitRefused;
+    }
+    std::fprintf(stderr, "lumavel-read config set: not in force yet, sending again (attempt %d of %d)\n",
+                 attempt + 1, kAttempts);
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
   }
   return kExitOk;
 }
