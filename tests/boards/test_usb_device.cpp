@@ -168,7 +168,7 @@ TEST(UsbEnumeration, GetFeatureReportWaitsForTheApp) {
   STRCMP_EQUAL("test", info.board);
   CHECK_FALSE(dev.ctl.pending());
   // Input reports are not fetched through GET_REPORT.
-  CHECK_EQUAL(ControlReply::kStall, dev.setup({0xA1, 0x01, 0x01, 0x01, 0x00, 0x00, 0x26, 0x00}).kind);
+  CHECK_EQUAL(ControlReply::kStall, dev.setup({0xA1, 0x01, 0x01, 0x01, 0x00, 0x00, 0x2A, 0x00}).kind);
 }
 
 TEST(UsbEnumeration, SetFeatureReportArrivesInTwoPacketsAndIsJudgedByTheApp) {
@@ -176,25 +176,25 @@ TEST(UsbEnumeration, SetFeatureReportArrivesInTwoPacketsAndIsJudgedByTheApp) {
   FakeApp app;
   uint8_t cfg[protocol::kConfigSize];
   CHECK_EQUAL(protocol::kConfigSize, protocol::encode_config(protocol::default_device_config(), cfg, sizeof cfg));
-  // SET_REPORT, feature (3), ID 3, 90 bytes: a 64-byte and a 26-byte OUT packet.
-  CHECK_EQUAL(ControlReply::kReceive, dev.setup({0x21, 0x09, 0x03, 0x03, 0x00, 0x00, 0x5A, 0x00}).kind);
+  // SET_REPORT, feature (3), ID 3, 102 bytes: a 64-byte and a 38-byte OUT packet.
+  CHECK_EQUAL(ControlReply::kReceive, dev.setup({0x21, 0x09, 0x03, 0x03, 0x00, 0x00, 0x66, 0x00}).kind);
   CHECK_EQUAL(ControlReply::kReceive, dev.ctl.out_data(cfg, 64).kind);
-  CHECK_EQUAL(ControlReply::kPending, dev.ctl.out_data(cfg + 64, 26).kind);
+  CHECK_EQUAL(ControlReply::kPending, dev.ctl.out_data(cfg + 64, 38).kind);
   CHECK_EQUAL(ControlReply::kAck, dev.ctl.serve(&FakeApp::handle, &app).kind);
   CHECK_EQUAL(1, app.sets);
   CHECK_TRUE(std::vector<uint8_t>(cfg, cfg + sizeof cfg) == app.last_set);
   // The same with a corrupt CRC: the app refuses, the status stage stalls.
   cfg[50] ^= 1;
-  dev.setup({0x21, 0x09, 0x03, 0x03, 0x00, 0x00, 0x5A, 0x00});
+  dev.setup({0x21, 0x09, 0x03, 0x03, 0x00, 0x00, 0x66, 0x00});
   dev.ctl.out_data(cfg, 64);
-  dev.ctl.out_data(cfg + 64, 26);
+  dev.ctl.out_data(cfg + 64, 38);
   CHECK_EQUAL(ControlReply::kStall, dev.ctl.serve(&FakeApp::handle, &app).kind);
   // More data than announced stalls at once.
   dev.setup({0x21, 0x09, 0x03, 0x03, 0x00, 0x00, 0x10, 0x00});
   CHECK_EQUAL(ControlReply::kStall, dev.ctl.out_data(cfg, 64).kind);
   // A report ID in the data that differs from wValue's is refused.
-  dev.setup({0x21, 0x09, 0x02, 0x03, 0x00, 0x00, 0x5A, 0x00});
+  dev.setup({0x21, 0x09, 0x02, 0x03, 0x00, 0x00, 0x66, 0x00});
   dev.ctl.out_data(cfg, 64);
-  dev.ctl.out_data(cfg + 64, 26);
+  dev.ctl.out_data(cfg + 64, 38);
   CHECK_EQUAL(ControlReply::kStall, dev.ctl.serve(&FakeApp::handle, &app).kind);
 }

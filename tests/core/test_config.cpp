@@ -87,12 +87,24 @@ TEST(Config, EstimatorKeepsItsConfigurationOnError) {
   delete est;
 }
 
-TEST(Config, ColumnEdgeTableMustBeMonotonic) {
+TEST(Config, LensTableMustKeepTheEdgesMonotonic) {
   EstimatorConfig c = good();
-  AngleQ28 pin[kMaxColumns + 1];
-  pinhole_column_edges(c.cam[0], c.width, pin);
-  c.column_edges[0] = pin;
+  EdgeOffsetQ15 lens[kMaxColumns + 1] = {};
+  c.edge_offsets[0] = lens;
   CHECK(validate(c) == ConfigError::kOk);
-  std::swap(pin[3], pin[4]);
+  // Edge 4 pushed past edge 3 (columns are ~0.026 rad wide at 40 x 60 deg).
+  lens[4] = static_cast<EdgeOffsetQ15>(c.cam[0].u_sign * 0.05 * 32768);
   LONGS_EQUAL(static_cast<int>(ConfigError::kColumnEdges), static_cast<int>(validate(c)));
+}
+
+TEST(Config, LensTableIsAddedToThePinholeEdges) {
+  EstimatorConfig c = good();
+  EdgeOffsetQ15 lens[kMaxColumns + 1] = {};
+  for (int u = 0; u <= c.width; ++u) lens[u] = static_cast<EdgeOffsetQ15>((u - c.width / 2) * 7);
+  AngleQ28 pin[kMaxColumns + 1], with[kMaxColumns + 1];
+  pinhole_column_edges(c.cam[0], c.width, pin);
+  column_edge_yaws(c.cam[0], lens, c.width, with);
+  for (int u = 0; u <= c.width; ++u) LONGS_EQUAL(pin[u] + lens[u] * 8192, with[u]);
+  column_edge_yaws(c.cam[0], nullptr, c.width, with);
+  for (int u = 0; u <= c.width; ++u) LONGS_EQUAL(pin[u], with[u]);
 }

@@ -127,8 +127,9 @@ TEST(FixedVsFloat, PinholeEdgeTableEqualsThePinholeModel) {
     b_eng->push_gyro(tn, 0);
     worst = std::fmax(worst, std::fabs(a_eng->step(tn, a.data(), b.data()).v - b_eng->step(tn, a.data(), b.data()).v));
   }
-  // The two differ only by quantisation (fu, cu in Q16 vs edges in Q28):
-  // require 5 % of the 1 mm/s fixed-point allowance.
+  // The table is sent as corrections to the firmware's own pinhole edges
+  // (EdgeOffsetQ15): the two differ only by the Q15 rounding of those
+  // corrections (here all round to 0). Require 5 % of the 1 mm/s allowance.
   std::printf("\n  pinhole model vs the same edges as a table: worst |dV| %.2e m/s", worst);
   CHECK(worst < 5e-5);
 }

@@ -45,7 +45,8 @@ std::vector<protocol::Measurement> read_estimates_csv(const std::string& path) {
     return -1;
   };
   const int ct = col("timestamp_ns", true), cv = col("v_xb_mps", true), cd = col("distance_m", true),
-            ch = col("heading_rad", true), cs = col("status", true), cf = col("frame_index", false);
+            ch = col("heading_rad", true), cs = col("status", true), cf = col("frame_index", false),
+            cg = col("gyro_offset_radps", false);
   std::vector<protocol::Measurement> out;
   size_t lineno = 1;
   while (std::getline(in, line)) {
@@ -60,7 +61,7 @@ std::vector<protocol::Measurement> read_estimates_csv(const std::string& path) {
     protocol::Measurement m = host::quantise_measurement(
         std::strtoull(cell(ct).c_str(), nullptr, 10), frame, number(cell(cv), where),
         number(cell(cd), where), number(cell(ch), where),
-        static_cast<uint16_t>(number(cell(cs), where)));
+        static_cast<uint16_t>(number(cell(cs), where)), cg >= 0 ? number(cell(cg), where) : 0.0);
     m.seq = static_cast<uint16_t>(out.size());
     out.push_back(m);
   }

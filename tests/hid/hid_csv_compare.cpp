@@ -1,5 +1,5 @@
 // Compares two estimates CSVs at the report's resolution: every row's
-// timestamp, V, distance, heading and status must be equal after
+// timestamp, V, distance, heading, status and gyro offset must be equal after
 // quantisation to the report's fixed-point formats. Exit 0 if equal, 1 with
 // the first difference otherwise.
 #include <cinttypes>
@@ -24,12 +24,13 @@ int main(int argc, char** argv) {
       const auto& x = a[i];
       const auto& y = b[i];
       if (x.t_ns != y.t_ns || x.v != y.v || x.distance != y.distance || x.heading != y.heading ||
-          x.status != y.status) {
+          x.status != y.status || x.gyro_offset != y.gyro_offset) {
         std::fprintf(stderr,
                      "hid_csv_compare: line %zu differs: expected t=%" PRIu64 " v=%d s=%" PRId64
-                     " heading=%d status=%u, got t=%" PRIu64 " v=%d s=%" PRId64 " heading=%d status=%u\n",
-                     i + 2, x.t_ns, x.v, x.distance, x.heading, unsigned{x.status}, y.t_ns, y.v,
-                     y.distance, y.heading, unsigned{y.status});
+                     " heading=%d status=%u gyro_offset=%d, got t=%" PRIu64 " v=%d s=%" PRId64
+                     " heading=%d status=%u gyro_offset=%d\n",
+                     i + 2, x.t_ns, x.v, x.distance, x.heading, unsigned{x.status}, x.gyro_offset, y.t_ns, y.v,
+                     y.distance, y.heading, unsigned{y.status}, y.gyro_offset);
         return 1;
       }
     }

@@ -39,7 +39,9 @@ void usage() {
       "                     (-1: until SIGTERM; default 0)\n");
 }
 
-proto::ConfigField accept_all(void*, const proto::DeviceConfig&) { return proto::ConfigField::kOk; }
+proto::ConfigField accept_all(void*, const proto::DeviceConfig&, const lumavel::EdgeOffsetQ15* const[2]) {
+  return proto::ConfigField::kOk;
+}
 
 }  // namespace
 

@@ -19,7 +19,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "make_test_estimates: cannot write %s\n", argv[2]);
     return 1;
   }
-  std::fprintf(f, "timestamp_ns,v_xb_mps,distance_m,heading_rad,status\n");
+  std::fprintf(f, "timestamp_ns,v_xb_mps,distance_m,heading_rad,status,gyro_offset_radps\n");
   const double pi = 3.14159265358979323846;
   int64_t dist_q32 = 0;
   for (long i = 0; i < rows; ++i) {
@@ -31,7 +31,9 @@ int main(int argc, char** argv) {
     h = std::fmod(h + pi, 2 * pi) - pi;
     int32_t h_q28 = static_cast<int32_t>(std::lround(h * 268435456.0));
     if (h_q28 > 843314856) h_q28 = 843314856;  // stay inside [-pi, pi) after rounding
-    const unsigned status = (i % 9 == 0) ? (1u << (i / 9 % 7)) : 0u;
+    const unsigned status = (i % 9 == 0) ? (1u << (i / 9 % 8)) : 0u;  // every bit, STILL (7) too
+    // A learned offset that steps now and then, either sign (RateQ24 values).
+    const int32_t offset_q24 = static_cast<int32_t>((i / 40) % 5 - 2) * 8389;
     // Shortest round-trip decimals of the exact fixed-point values, as lumavel-sim writes them.
     char line[160];
     char* const end = line + sizeof line;
@@ -42,6 +44,8 @@ int main(int argc, char** argv) {
     }
     *p++ = ',';
     p = std::to_chars(p, end, status).ptr;
+    *p++ = ',';
+    p = std::to_chars(p, end, std::ldexp(offset_q24, -24), std::chars_format::general).ptr;
     *p++ = '\n';
     std::fwrite(line, 1, static_cast<size_t>(p - line), f);
   }

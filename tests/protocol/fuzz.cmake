@@ -11,7 +11,8 @@ endif()
 
 set(_proto ${PROJECT_SOURCE_DIR}/firmware/protocol)
 set(_fuzz_srcs ${_proto}/src/crc.cpp ${_proto}/src/descriptor.cpp ${_proto}/src/reports.cpp
-               ${_proto}/src/device_config.cpp ${CMAKE_CURRENT_SOURCE_DIR}/fuzz_targets.cpp)
+               ${_proto}/src/device_config.cpp ${_proto}/src/lens.cpp
+               ${CMAKE_CURRENT_SOURCE_DIR}/fuzz_targets.cpp)
 file(GLOB _fuzz_headers ${_proto}/include/lumavel/protocol/*.hpp ${_proto}/src/*.hpp)
 
 foreach(kind reports config)

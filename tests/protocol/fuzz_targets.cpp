@@ -1,5 +1,6 @@
 // libFuzzer targets for the report and configuration parsers. Built twice
-// (LUMAVEL_FUZZ_CONFIG selects the target). Besides "never crash", each
+// (LUMAVEL_FUZZ_CONFIG selects the target: configuration report and the
+// stored blob with its lens tables; else measurement, info, mailbox, lens piece). Besides "never crash", each
 // checks a property: whatever decodes re-encodes to the same bytes. The input
 // is also tried with its CRC repaired, so that the range checks behind the
 // CRC get fuzzed too.
@@ -10,6 +11,7 @@
 
 #include "lumavel/protocol/crc.hpp"
 #include "lumavel/protocol/device_config.hpp"
+#include "lumavel/protocol/lens.hpp"
 #include "lumavel/protocol/reports.hpp"
 
 using namespace lumavel::protocol;
@@ -41,13 +43,26 @@ void one(const uint8_t* data, size_t len) {
     require(encode_config(c, again, sizeof again) == kConfigSize);
     require(std::memcmp(again, data, kConfigSize) == 0);
     lumavel::EstimatorConfig e{};
-    require(to_estimator_config(c, e));
+    static const lumavel::EdgeOffsetQ15 none[kMaxLensEdges] = {};
+    const lumavel::EdgeOffsetQ15* const lens[2] = {none, none};
+    require(to_estimator_config(c, e, lens));
+  }
+  // The stored blob: whatever decodes re-encodes to the same bytes.
+  static LensTables t;
+  DeviceConfig s{};
+  if (decode_stored_config(data, len, s, t) == ConfigField::kOk) {
+    static uint8_t again[kMaxStoredConfigSize];
+    require(encode_stored_config(s, t, again, sizeof again) == len);
+    require(std::memcmp(again, data, len) == 0);
   }
 }
 void fuzz(const uint8_t* data, size_t len) {
   one(data, len);
-  uint8_t buf[kConfigSize];
-  one(buf, resealed(data, len, kConfigSize, buf));
+  static uint8_t buf[kMaxStoredConfigSize];
+  const size_t n = resealed(data, len, kConfigSize, buf);
+  // Keep the tail so that blobs with tables get past the header's CRC.
+  if (len > kConfigSize) std::memcpy(buf + kConfigSize, data + kConfigSize, len - kConfigSize < sizeof buf - kConfigSize ? len - kConfigSize : sizeof buf - kConfigSize);
+  one(buf, len > kConfigSize ? (len < sizeof buf ? len : sizeof buf) : n);
 }
 #else
 void one(const uint8_t* data, size_t len) {
@@ -67,6 +82,11 @@ void one(const uint8_t* data, size_t len) {
     require(encode_feature_chunk(c, again, sizeof again) == kFeatureChunkSize);
     require(std::memcmp(again, data, 6 + c.length) == 0);
   }
+  LensChunk l{};
+  if (decode_lens_chunk(data, len, l).ok()) {
+    require(encode_lens_chunk(l, again, sizeof again) == kLensChunkSize);
+    require(std::memcmp(again, data, kLensChunkSize) == 0);
+  }
   uint8_t id = 0;
   if (decode_mailbox_request(data, len, id).ok()) {
     require(encode_mailbox_request(id, again, sizeof again) == kMailboxSize);
@@ -78,6 +98,7 @@ void fuzz(const uint8_t* data, size_t len) {
   uint8_t buf[kMaxReportSize];
   one(buf, resealed(data, len, kMeasurementSize, buf));
   one(buf, resealed(data, len, kDeviceInfoSize, buf));
+  one(buf, resealed(data, len, kLensChunkSize, buf));
 }
 #endif
 

@@ -63,6 +63,10 @@ TEST(Descriptor, ReportLengthsMatchTheCodec) {
   CHECK_EQUAL(kDeviceInfoSize, p.feature[kReportDeviceInfo]);
   CHECK_EQUAL(kConfigSize, p.feature[kReportConfig]);
   CHECK_EQUAL(kMailboxSize, p.feature[kReportMailbox]);
+  CHECK_EQUAL(kLensChunkSize, p.feature[kReportLens]);
+  size_t largest = 0;
+  for (size_t id = 0; id < 256; ++id) largest = p.feature[id] > largest ? p.feature[id] : largest;
+  CHECK_EQUAL(kMaxReportSize, largest);
 }
 
 TEST(Descriptor, NoInputReportIsOneFullSpeedPacketLong) {

@@ -23,6 +23,9 @@ DeviceConfig sample() {
   c.kernels[2] = KernelSetting{3, 30000000};
   c.tau_us = 250000;
   c.saturated_permille = 1000;
+  c.options = lumavel::kOptionGyroOffsetLearning;
+  c.still_distance = 1677722;
+  c.still_min_us = 100000;
   return c;
 }
 
@@ -59,6 +62,13 @@ const Case kCases[] = {
     {"gyro gap", [](DeviceConfig& c) { c.gyro_gap_us = 99; }, ConfigField::kGyroGap},
     {"low texture", [](DeviceConfig& c) { c.low_texture = -1; }, ConfigField::kLowTexture},
     {"saturated", [](DeviceConfig& c) { c.saturated_permille = 1001; }, ConfigField::kSaturatedPermille},
+    {"options", [](DeviceConfig& c) { c.options = 0x04; }, ConfigField::kOptions},
+    {"still distance low", [](DeviceConfig& c) { c.still_distance = 1677; }, ConfigField::kStillDistance},
+    {"still distance high", [](DeviceConfig& c) { c.still_distance = 1677723; }, ConfigField::kStillDistance},
+    {"still duration low", [](DeviceConfig& c) { c.still_min_us = 99999; }, ConfigField::kStillDuration},
+    {"still duration high", [](DeviceConfig& c) { c.still_min_us = 60000001; }, ConfigField::kStillDuration},
+    {"lens bits", [](DeviceConfig& c) { c.lens = 0x04; }, ConfigField::kLens},
+    {"lens crc without lens", [](DeviceConfig& c) { c.lens_crc = 1; }, ConfigField::kLens},
 };
 
 }  // namespace
@@ -80,6 +90,16 @@ TEST(DeviceConfig, RoundTripsByteExactly) {
   CHECK_EQUAL(-2000000, d.baseline);
   CHECK_EQUAL(3, d.kernels[2].order);
   CHECK_EQUAL(30000000, d.kernels[2].sigma);
+  CHECK_EQUAL(lumavel::kOptionGyroOffsetLearning, d.options);
+  CHECK_EQUAL(1677722, d.still_distance);
+  CHECK_EQUAL(100000u, d.still_min_us);
+  DeviceConfig l = sample();
+  l.lens = kLensCam1;
+  l.lens_crc = 0xBEEF;
+  encode_config(l, a, sizeof a);
+  CHECK_TRUE(decode_config(a, sizeof a, d).ok());
+  CHECK_EQUAL(kLensCam1, d.lens);
+  CHECK_EQUAL(0xBEEF, d.lens_crc);
 }
 
 TEST(DeviceConfig, EachOutOfRangeFieldIsNamedByValidateAndDecode) {
@@ -149,6 +169,33 @@ TEST(DeviceConfig, MapsToEstimatorConfig) {
   CHECK_EQUAL(c.gyro_gap_us, e.gyro_gap_us);
   CHECK_EQUAL(c.low_texture, e.low_texture);
   CHECK_EQUAL(c.saturated_permille, e.saturated_permille);
+  CHECK_EQUAL(c.options, e.options);
+  CHECK_EQUAL(c.still_distance, e.still_distance);
+  CHECK_EQUAL(c.still_min_us, e.still_min_us);
+  POINTERS_EQUAL(nullptr, e.edge_offsets[0]);
+  POINTERS_EQUAL(nullptr, e.edge_offsets[1]);
+}
+
+TEST(DeviceConfig, LensTablesReachTheEstimatorOnlyWhenNamed) {
+  DeviceConfig c = sample();
+  const lumavel::EdgeOffsetQ15 t0[1] = {0}, t1[1] = {0};
+  const lumavel::EdgeOffsetQ15* const both[2] = {t0, t1};
+  EstimatorConfig e{};
+  c.lens = kLensCam1;
+  CHECK_FALSE(to_estimator_config(c, e));  // named but not given
+  const lumavel::EdgeOffsetQ15* const only0[2] = {t0, nullptr};
+  CHECK_FALSE(to_estimator_config(c, e, only0));
+  CHECK_TRUE(to_estimator_config(c, e, both));
+  POINTERS_EQUAL(nullptr, e.edge_offsets[0]);
+  POINTERS_EQUAL(t1, e.edge_offsets[1]);
+}
+
+TEST(DeviceConfig, DefaultsCarryTheEstimatorsOwnDefaults) {
+  const DeviceConfig c = default_device_config();
+  CHECK_EQUAL(lumavel::kOptionBaselineCorrection | lumavel::kOptionGyroOffsetLearning, c.options);
+  CHECK_EQUAL(33554, c.still_distance);  // 2 mm
+  CHECK_EQUAL(500000u, c.still_min_us);
+  CHECK_EQUAL(0, c.lens);
 }
 
 TEST(DeviceConfig, LooksLeftByDefault) {

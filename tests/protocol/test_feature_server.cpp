@@ -9,7 +9,7 @@ using namespace lumavel::protocol;
 namespace {
 
 struct MemoryStore : lumavel::hal::ConfigStore {
-  uint8_t blob[128] = {};
+  uint8_t blob[kMaxStoredConfigSize] = {};
   size_t size = 0;
   bool fail_save = false;
   int saves = 0;
@@ -31,13 +31,19 @@ struct App {
   bool refuse = false;
   int applied = 0;
   uint16_t width = 0;
+  lumavel::EdgeOffsetQ15 lens[2][kMaxLensEdges] = {};  // what the last apply was given
+  bool had_lens[2] = {false, false};
 };
 
-ConfigField apply(void* ctx, const DeviceConfig& c) {
+ConfigField apply(void* ctx, const DeviceConfig& c, const lumavel::EdgeOffsetQ15* const lens[2]) {
   App& a = *static_cast<App*>(ctx);
   if (a.refuse) return ConfigField::kEstimator;
   ++a.applied;
   a.width = c.width;
+  for (int i = 0; i < 2; ++i) {
+    a.had_lens[i] = lens[i] != nullptr;
+    for (int u = 0; lens[i] && u <= c.width; ++u) a.lens[i][u] = lens[i][u];
+  }
   return ConfigField::kOk;
 }
 
@@ -142,4 +148,161 @@ TEST(FeatureServer, CorruptStoreFallsBackToDefaults) {
   CHECK_TRUE(ConfigField::kOk == s.boot(default_device_config()));
   CHECK_EQUAL(40, s.config().width);
   CHECK_EQUAL(kConfigDefaults, s.info().config_source);
+}
+
+namespace {
+
+// Uploads `edges` values of camera `cam` in 24-value pieces; false if one is refused.
+bool upload(FeatureServer& s, uint8_t cam, const lumavel::EdgeOffsetQ15* v, int edges) {
+  for (int first = 0; first < edges; first += static_cast<int>(kLensChunkEdges)) {
+    LensChunk c{};
+    c.camera = cam;
+    c.first = static_cast<uint8_t>(first);
+    const int n = edges - first < static_cast<int>(kLensChunkEdges) ? edges - first : static_cast<int>(kLensChunkEdges);
+    c.count = static_cast<uint8_t>(n);
+    for (int i = 0; i < n; ++i) c.offsets[i] = v[first + i];
+    uint8_t buf[kLensChunkSize];
+    encode_lens_chunk(c, buf, sizeof buf);
+    if (FeatureServer::handle(&s, kReportLens, true, buf, sizeof buf, sizeof buf) != 1) return false;
+  }
+  return true;
+}
+
+// A lens table for `width` columns: a smooth barrel-like correction.
+void table(lumavel::EdgeOffsetQ15* v, int width, int scale) {
+  for (int u = 0; u <= width; ++u) {
+    const int x = 2 * u - width;
+    v[u] = static_cast<lumavel::EdgeOffsetQ15>(scale * x * x * x / (width * width * width));
+  }
+}
+
+DeviceConfig with_lens(uint8_t lens, const lumavel::EdgeOffsetQ15* t0, const lumavel::EdgeOffsetQ15* t1) {
+  DeviceConfig c = other();
+  c.lens = lens;
+  const lumavel::EdgeOffsetQ15* const t[2] = {t0, t1};
+  c.lens_crc = lens_crc(t, lens, static_cast<uint16_t>(c.width + 1));
+  return c;
+}
+
+// Reads the piece at {cam, first} back through a select and a get.
+LensChunk read_piece(FeatureServer& s, uint8_t cam, uint8_t first) {
+  LensChunk sel{};
+  sel.camera = cam;
+  sel.first = first;
+  uint8_t buf[kLensChunkSize];
+  encode_lens_chunk(sel, buf, sizeof buf);
+  CHECK_EQUAL(1u, FeatureServer::handle(&s, kReportLens, true, buf, sizeof buf, sizeof buf));
+  uint8_t got[kMaxReportSize];
+  CHECK_EQUAL(kLensChunkSize, FeatureServer::handle(&s, kReportLens, false, got, 0, sizeof got));
+  LensChunk out{};
+  CHECK_TRUE(decode_lens_chunk(got, kLensChunkSize, out).ok());
+  return out;
+}
+
+}  // namespace
+
+TEST(FeatureServer, LensTablesAreAppliedStoredAndReadBack) {
+  FeatureServer s(identity(), &store, apply, &app);
+  s.boot(default_device_config());
+  static lumavel::EdgeOffsetQ15 t0[kMaxLensEdges], t1[kMaxLensEdges];
+  table(t0, 80, 900);
+  table(t1, 80, -700);
+  CHECK_TRUE(upload(s, 0, t0, 81));
+  CHECK_TRUE(upload(s, 1, t1, 81));
+  uint8_t buf[kConfigSize];
+  encode_config(with_lens(kLensCam0 | kLensCam1, t0, t1), buf, sizeof buf);
+  CHECK_EQUAL(1u, FeatureServer::handle(&s, kReportConfig, true, buf, sizeof buf, sizeof buf));
+  CHECK_TRUE(app.had_lens[0] && app.had_lens[1]);
+  MEMCMP_EQUAL(t0, app.lens[0], 81 * sizeof t0[0]);
+  MEMCMP_EQUAL(t1, app.lens[1], 81 * sizeof t1[0]);
+  CHECK_EQUAL(kConfigSize + 2 * 81 * 2, store.size);
+
+  // Read back piece by piece: the last piece of 81 holds 81 - 72 = 9 values.
+  const LensChunk last = read_piece(s, 1, 72);
+  CHECK_EQUAL(9, last.count);
+  MEMCMP_EQUAL(t1 + 72, last.offsets, 9 * sizeof t1[0]);
+  CHECK_EQUAL(0, read_piece(s, 1, 81).count);
+
+  // A reboot applies the stored tables.
+  App app2;
+  FeatureServer s2(identity(), &store, apply, &app2);
+  CHECK_TRUE(ConfigField::kOk == s2.boot(default_device_config()));
+  CHECK_EQUAL(kConfigStored, s2.info().config_source);
+  CHECK_TRUE(app2.had_lens[0] && app2.had_lens[1]);
+  MEMCMP_EQUAL(t0, app2.lens[0], 81 * sizeof t0[0]);
+  const LensChunk first = read_piece(s2, 0, 24);
+  CHECK_EQUAL(24, first.count);
+  MEMCMP_EQUAL(t0 + 24, first.offsets, 24 * sizeof t0[0]);
+}
+
+TEST(FeatureServer, PartialOrMismatchedLensIsRefusedAsLens) {
+  FeatureServer s(identity(), &store, apply, &app);
+  s.boot(default_device_config());
+  static lumavel::EdgeOffsetQ15 t0[kMaxLensEdges];
+  table(t0, 80, 900);
+  uint8_t buf[kConfigSize];
+  // Named but never uploaded.
+  encode_config(with_lens(kLensCam0, t0, nullptr), buf, sizeof buf);
+  CHECK_EQUAL(0u, FeatureServer::handle(&s, kReportConfig, true, buf, sizeof buf, sizeof buf));
+  CHECK_EQUAL(static_cast<int>(ConfigField::kLens), s.info().config_status);
+  // Incomplete: 80 of 81 edges.
+  CHECK_TRUE(upload(s, 0, t0, 80));
+  CHECK_EQUAL(0u, FeatureServer::handle(&s, kReportConfig, true, buf, sizeof buf, sizeof buf));
+  CHECK_EQUAL(static_cast<int>(ConfigField::kLens), s.info().config_status);
+  // Complete but not the table the configuration was made for.
+  CHECK_TRUE(upload(s, 0, t0, 81));
+  DeviceConfig c = with_lens(kLensCam0, t0, nullptr);
+  c.lens_crc ^= 1;
+  encode_config(c, buf, sizeof buf);
+  CHECK_EQUAL(0u, FeatureServer::handle(&s, kReportConfig, true, buf, sizeof buf, sizeof buf));
+  CHECK_EQUAL(static_cast<int>(ConfigField::kLens), s.info().config_status);
+  CHECK_EQUAL(40, s.config().width);
+  CHECK_EQUAL(0, store.saves);
+  // The right one goes through.
+  encode_config(with_lens(kLensCam0, t0, nullptr), buf, sizeof buf);
+  CHECK_EQUAL(1u, FeatureServer::handle(&s, kReportConfig, true, buf, sizeof buf, sizeof buf));
+  CHECK_TRUE(app.had_lens[0]);
+  CHECK_FALSE(app.had_lens[1]);
+}
+
+TEST(FeatureServer, LensPiecesOutOfOrderOrBeyondCapacityAreRefused) {
+  FeatureServer s(identity(), &store, apply, &app);
+  s.boot(default_device_config());
+  LensChunk c{};
+  c.camera = 0;
+  c.first = 24;  // nothing before it
+  c.count = 24;
+  uint8_t buf[kLensChunkSize];
+  encode_lens_chunk(c, buf, sizeof buf);
+  CHECK_EQUAL(0u, FeatureServer::handle(&s, kReportLens, true, buf, sizeof buf, sizeof buf));
+  CHECK_EQUAL(static_cast<int>(ConfigField::kLens), s.info().config_status);
+  c.first = static_cast<uint8_t>(kMaxLensEdges - 10);  // past the build's columns + 1
+  encode_lens_chunk(c, buf, sizeof buf);
+  CHECK_EQUAL(0u, FeatureServer::handle(&s, kReportLens, true, buf, sizeof buf, sizeof buf));
+  encode_lens_chunk(c, buf, sizeof buf);
+  buf[7] ^= 1;  // CRC
+  CHECK_EQUAL(0u, FeatureServer::handle(&s, kReportLens, true, buf, sizeof buf, sizeof buf));
+  CHECK_EQUAL(static_cast<int>(ConfigField::kMalformed), s.info().config_status);
+}
+
+TEST(FeatureServer, StoredLensWithBadTableFallsBackToDefaults) {
+  FeatureServer s(identity(), &store, apply, &app);
+  s.boot(default_device_config());
+  static lumavel::EdgeOffsetQ15 t0[kMaxLensEdges];
+  table(t0, 80, 900);
+  CHECK_TRUE(upload(s, 0, t0, 81));
+  uint8_t buf[kConfigSize];
+  encode_config(with_lens(kLensCam0, t0, nullptr), buf, sizeof buf);
+  CHECK_EQUAL(1u, FeatureServer::handle(&s, kReportConfig, true, buf, sizeof buf, sizeof buf));
+  store.blob[kConfigSize + 11] ^= 0x10;  // a table byte: lens_crc no longer matches
+  App app2;
+  FeatureServer s2(identity(), &store, apply, &app2);
+  CHECK_TRUE(ConfigField::kOk == s2.boot(default_device_config()));
+  CHECK_EQUAL(kConfigDefaults, s2.info().config_source);
+  CHECK_FALSE(app2.had_lens[0]);
+  store.blob[kConfigSize + 11] ^= 0x10;
+  store.size -= 2;  // truncated tables
+  FeatureServer s3(identity(), &store, apply, &app2);
+  s3.boot(default_device_config());
+  CHECK_EQUAL(kConfigDefaults, s3.info().config_source);
 }

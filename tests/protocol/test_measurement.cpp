@@ -17,8 +17,9 @@ Measurement sample() {
   m.v = -1234567;                 // -18.8 m/s
   m.distance = -0x123456789ABLL;  // negative and wide
   m.heading = -lumavel::fx::kPiQ28;  // the lower bound is included
-  m.status = 0x0055;
+  m.status = 0x00D5;  // STILL (bit 7) is a known bit in version 2
   m.overruns = 65535;
+  m.gyro_offset = -123457;  // -7.4 mrad/s
   return m;
 }
 
@@ -48,6 +49,7 @@ TEST(Measurement, RoundTripsEveryField) {
   CHECK_EQUAL(m.heading, d.heading);
   CHECK_EQUAL(m.status, d.status);
   CHECK_EQUAL(m.overruns, d.overruns);
+  CHECK_EQUAL(m.gyro_offset, d.gyro_offset);
 }
 
 TEST(Measurement, LittleEndianLayout) {
@@ -57,6 +59,10 @@ TEST(Measurement, LittleEndianLayout) {
   CHECK_EQUAL(0xBE, buf[3]);
   CHECK_EQUAL(0xEF, buf[4]);   // t_ns low byte
   CHECK_EQUAL(0x01, buf[11]);  // t_ns high byte
+  // gyro_offset at 36..39, after overruns, before the CRC.
+  const uint32_t g = static_cast<uint32_t>(sample().gyro_offset);
+  CHECK_EQUAL(g & 0xFF, buf[36]);
+  CHECK_EQUAL(g >> 24, buf[39]);
 }
 
 TEST(Measurement, EncodeRefusesSmallBuffer) {
@@ -119,7 +125,7 @@ TEST(Measurement, HeadingOutsidePiRejected) {
 
 TEST(Measurement, UnknownStatusBitRejected) {
   Measurement m = sample();
-  m.status = 0x0080;
+  m.status = 0x0100;  // bits 8..15 are not defined in version 2
   uint8_t buf[kMeasurementSize];
   encode_measurement(m, buf, sizeof buf);
   Measurement d{};

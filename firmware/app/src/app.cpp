@@ -30,18 +30,25 @@ protocol::DeviceInfo identity(const char* board_name) {
 App::App(const Hal& hal, const Board& board)
     : hal_(hal), board_(board), features_(identity(board.name), &hal.store, &App::apply_hook, this) {}
 
-ConfigField App::apply_hook(void* ctx, const protocol::DeviceConfig& c) {
-  return static_cast<App*>(ctx)->apply(c);
+ConfigField App::apply_hook(void* ctx, const protocol::DeviceConfig& c, const EdgeOffsetQ15* const lens[2]) {
+  return static_cast<App*>(ctx)->apply(c, lens);
 }
 
-// Called by the FeatureServer with a range-checked configuration.
-ConfigField App::apply(const protocol::DeviceConfig& c) {
+// Called by the FeatureServer with a range-checked configuration and the
+// lens tables it names (complete, CRC checked).
+ConfigField App::apply(const protocol::DeviceConfig& c, const EdgeOffsetQ15* const lens[2]) {
   // The camera delivers one working resolution; the configuration must match it.
   if (c.width != hal_.camera.width()) return ConfigField::kWidth;
   if (c.height != hal_.camera.height()) return ConfigField::kHeight;
   EstimatorConfig e{};
-  if (!protocol::to_estimator_config(c, e)) return protocol::validate(c);
-  if (estimator_.configure(e) != ConfigError::kOk) return ConfigField::kEstimator;
+  if (!protocol::to_estimator_config(c, e, lens)) {
+    const ConfigField f = protocol::validate(c);
+    return f != ConfigField::kOk ? f : ConfigField::kLens;
+  }
+  // The kernel bank copies the edges: the tables are not needed after this.
+  const ConfigError err = estimator_.configure(e);
+  if (err == ConfigError::kColumnEdges) return ConfigField::kLensEdges;
+  if (err != ConfigError::kOk) return ConfigField::kEstimator;
   width_ = c.width;
   height_ = c.height;
   frame_period_us_ = c.frame_period_us;
@@ -98,6 +105,7 @@ void App::send_measurement(const Estimate& e) {
   m.heading = e.heading;
   m.status = e.status;
   m.overruns = counters_.overruns;
+  m.gyro_offset = e.gyro_offset;
   uint8_t report[protocol::kMeasurementSize];
   const size_t n = protocol::encode_measurement(m, report, sizeof report);
   if (n == 0 || !hal_.link.send_input(report, n)) ++counters_.reports_dropped;

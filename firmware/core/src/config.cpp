@@ -15,23 +15,8 @@ bool kernel_ok(const KernelSpec& k, bool order_zero_only) {
   return true;
 }
 
-// Yaw range covered by a camera's columns (its edge table, else pinhole).
-void view_range(const CameraGeometry& g, const AngleQ28* table, uint16_t width, int64_t* lo, int64_t* hi) {
-  AngleQ28 first = 0, last = 0;
-  if (table) {
-    first = table[0];
-    last = table[width];
-  } else {
-    AngleQ28 edges[kMaxColumns + 1];
-    pinhole_column_edges(g, width, edges);
-    first = edges[0];
-    last = edges[width];
-  }
-  *lo = first < last ? first : last;
-  *hi = first < last ? last : first;
-}
-
-// An edge table must run strictly monotonically in the camera's u direction.
+// A camera's column edges (pinhole plus the lens table, if any) must lie in
+// [-pi, pi] and run strictly monotonically in the camera's u direction.
 bool edges_ok(const AngleQ28* e, uint16_t width, int8_t u_sign) {
   for (uint16_t u = 0; u <= width; ++u)
     if (e[u] < -fx::kPiQ28 || e[u] > fx::kPiQ28) return false;
@@ -69,11 +54,12 @@ ConfigError validate(const EstimatorConfig& c) {
   // Each kernel's +-2.5 sigma core must lie inside both views (the side
   // strips of paper eq. 19 take the tails).
   const int64_t centre = (int64_t{c.cam[0].axis_yaw} + c.cam[1].axis_yaw) / 2;
-  for (int i = 0; i < 2; ++i)
-    if (c.column_edges[i] && !edges_ok(c.column_edges[i], c.width, c.cam[i].u_sign)) return ConfigError::kColumnEdges;
   for (int cam = 0; cam < 2; ++cam) {
-    int64_t lo = 0, hi = 0;
-    view_range(c.cam[cam], c.column_edges[cam], c.width, &lo, &hi);
+    AngleQ28 edges[kMaxColumns + 1];
+    column_edge_yaws(c.cam[cam], c.edge_offsets[cam], c.width, edges);
+    if (c.edge_offsets[cam] && !edges_ok(edges, c.width, c.cam[cam].u_sign)) return ConfigError::kColumnEdges;
+    const int64_t lo = edges[0] < edges[c.width] ? edges[0] : edges[c.width];
+    const int64_t hi = edges[0] < edges[c.width] ? edges[c.width] : edges[0];
     for (int i = 1; i < n; ++i) {
       const int64_t reach = all[i]->sigma * 5 / 2;
       if (centre - reach < lo || centre + reach > hi) return ConfigError::kKernelOutsideView;
@@ -113,7 +99,7 @@ const char* to_string(ConfigError e) {
     case ConfigError::kLowTexture: return "low-texture threshold must be 0..1";
     case ConfigError::kSaturatedPermille: return "saturated permille must be 0..1000";
     case ConfigError::kOptions: return "unknown option bits";
-    case ConfigError::kColumnEdges: return "column-edge table must be monotonic in u and within [-pi, pi]";
+    case ConfigError::kColumnEdges: return "lens table: column edges must be monotonic in u and within [-pi, pi]";
     case ConfigError::kStill: return "stillness distance must be 0.1 mm..10 cm and its duration 0.1..60 s";
   }
   return "unknown configuration error";

@@ -23,8 +23,8 @@ ConfigError Estimator::configure(const EstimatorConfig& cfg) {
   if (e != ConfigError::kOk) return e;
   cfg_ = cfg;
   build_kernel_bank(cfg_, bank_);
-  // The edge tables are the caller's: the bank holds their values now.
-  cfg_.column_edges[0] = cfg_.column_edges[1] = nullptr;
+  // The lens tables are the caller's: the kernel tables are built from them now.
+  cfg_.edge_offsets[0] = cfg_.edge_offsets[1] = nullptr;
   configured_ = true;
   reset();
   return ConfigError::kOk;

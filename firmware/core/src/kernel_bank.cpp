@@ -41,13 +41,25 @@ void gaussian_triple(int order, int64_t s, int32_t* phi_n, int32_t* phi_n1, int3
   *phi_n3 = static_cast<int32_t>((order + 3) % 2 == 0 ? c : -c);
 }
 
+// Body yaw of column edge u: the pinhole edge plus the lens correction (Q15 -> Q28).
+AngleQ28 edge_yaw(const CameraGeometry& g, const EdgeOffsetQ15* lens, uint16_t u) {
+  // atan of the exact ratio (x / fu, both Q16 px): no rounded tangent.
+  const int64_t x = (int64_t{u} << 16) - (int64_t{1} << 15) - g.cu;
+  const AngleQ28 pin = static_cast<AngleQ28>(g.axis_yaw + g.u_sign * fx::atan2_i32(static_cast<int32_t>(x), g.fu));
+  constexpr int kShift = fx::kAngleFrac - fx::kEdgeOffsetFrac;
+  return lens == nullptr ? pin : static_cast<AngleQ28>(pin + lens[u] * (int32_t{1} << kShift));
+}
+
 // Raw column integrals, in sigma units, Q3.28, written into the tables'
-// storage before quantisation (no scratch memory):
+// storage before quantisation (no scratch memory: the edges are computed as
+// they are needed, so no edge table is kept in RAM):
 //   K = Int phi_n(s) ds,  D = -Int phi_(n+1)(s) ds,  T = -Int phi_(n+3)(s) ds
-void integrate(const AngleQ28* edges, uint16_t width, int64_t centre,
+void integrate(const CameraGeometry& g, const EdgeOffsetQ15* lens, uint16_t width, int64_t centre,
                const KernelSpec& k, KernelTable& kk, KernelTable& dd, KernelTable* tt) {
+  int64_t next = edge_yaw(g, lens, 0);
   for (uint16_t u = 0; u < width; ++u) {
-    const int64_t lo = edges[u], hi = edges[u + 1];
+    const int64_t lo = next, hi = edge_yaw(g, lens, static_cast<uint16_t>(u + 1));
+    next = hi;
     int64_t acc_k = 0, acc_d = 0, acc_t = 0;
     for (int j = 0; j < kPoints; ++j) {
       const int64_t psi = lo + (hi - lo) * j / kSimpsonIntervals;
@@ -109,12 +121,12 @@ uint64_t sum_sq_q48(const KernelTable& t, uint16_t width) {
 // that F1 - F0 compares like with like. unit_l1: the normaliser (sum K = 1);
 // otherwise sum K^2 = 1/width, which gives every kernel the same pixel-noise
 // variance, so that the least squares over kernels weighs them fairly.
-void build_kernel(KernelBank& bank, int64_t centre,
+void build_kernel(const EstimatorConfig& cfg, int64_t centre,
                   const KernelSpec& spec, bool unit_l1, KernelTable* k_out[2],
                   KernelTable* d_out[2], KernelTable* t_out[2]) {
-  const uint16_t w = bank.width;
+  const uint16_t w = cfg.width;
   for (int i = 0; i < 2; ++i)
-    integrate(bank.edge[i], w, centre, spec, *k_out[i], *d_out[i], t_out[i]);
+    integrate(cfg.cam[i], cfg.edge_offsets[i], w, centre, spec, *k_out[i], *d_out[i], t_out[i]);
   int64_t norm = 0;  // Q28
   if (unit_l1) {
     norm = (sum(*k_out[0], w) + sum(*k_out[1], w)) / 2;
@@ -146,33 +158,26 @@ int32_t gaussian_derivative_q30(int order, int32_t s_q24) {
 }
 
 void pinhole_column_edges(const CameraGeometry& g, uint16_t width, AngleQ28* edges) {
-  for (uint16_t u = 0; u <= width; ++u) {
-    // atan of the exact ratio (x / fu, both Q16 px): no rounded tangent.
-    const int64_t x = (int64_t{u} << 16) - (int64_t{1} << 15) - g.cu;
-    edges[u] = static_cast<AngleQ28>(g.axis_yaw + g.u_sign * fx::atan2_i32(static_cast<int32_t>(x), g.fu));
-  }
+  for (uint16_t u = 0; u <= width; ++u) edges[u] = edge_yaw(g, nullptr, u);
+}
+
+void column_edge_yaws(const CameraGeometry& g, const EdgeOffsetQ15* offsets, uint16_t width, AngleQ28* edges) {
+  for (uint16_t u = 0; u <= width; ++u) edges[u] = edge_yaw(g, offsets, u);
 }
 
 void build_kernel_bank(const EstimatorConfig& cfg, KernelBank& bank) {
   bank.width = cfg.width;
   bank.count = cfg.kernel_count;
   const int64_t centre = (int64_t{cfg.cam[0].axis_yaw} + cfg.cam[1].axis_yaw) / 2;
-  for (int i = 0; i < 2; ++i) {
-    if (cfg.column_edges[i]) {
-      for (uint16_t u = 0; u <= cfg.width; ++u) bank.edge[i][u] = cfg.column_edges[i][u];
-    } else {
-      pinhole_column_edges(cfg.cam[i], cfg.width, bank.edge[i]);
-    }
-  }
   KernelTable* k_out[2] = {&bank.cam[0].norm, &bank.cam[1].norm};
   KernelTable* d_out[2] = {&bank.cam[0].norm_d, &bank.cam[1].norm_d};
   KernelTable* none[2] = {nullptr, nullptr};
-  build_kernel(bank, centre, cfg.normaliser, true, k_out, d_out, none);
+  build_kernel(cfg, centre, cfg.normaliser, true, k_out, d_out, none);
   for (int k = 0; k < cfg.kernel_count; ++k) {
     KernelTable* kk[2] = {&bank.cam[0].k[k], &bank.cam[1].k[k]};
     KernelTable* dd[2] = {&bank.cam[0].d[k], &bank.cam[1].d[k]};
     KernelTable* tt[2] = {&bank.cam[0].t[k], &bank.cam[1].t[k]};
-    build_kernel(bank, centre, cfg.kernels[k], false, kk, dd, tt);
+    build_kernel(cfg, centre, cfg.kernels[k], false, kk, dd, tt);
   }
   for (int k = 0; k < cfg.kernel_count; ++k) bank.sigma[k] = cfg.kernels[k].sigma;
   for (int i = 0; i < 2; ++i) {

@@ -6,6 +6,7 @@ namespace {
 // HID report counts exclude the report ID byte.
 constexpr uint8_t count_of(size_t total) { return static_cast<uint8_t>(total - 1); }
 static_assert(kMeasurementSize - 1 < 256 && kConfigSize - 1 < 256, "one-byte report counts");
+static_assert(kLensChunkSize <= kFeatureChunkData, "a lens piece fits one mailbox chunk");
 static_assert(kMaxInputReportSize != 64 && kMeasurementSize != 64 && kFeatureChunkSize != 64,
               "no 64-byte input reports (zero-length-packet pitfall)");
 static_assert(kMaxInputReportSize < 64, "input reports fit one full-speed packet");
@@ -26,6 +27,8 @@ const uint8_t kReportDescriptor[] = {
     0x09, 0x03, 0xB1, 0x02,  // Feature
     0x85, kReportMailbox, 0x95, count_of(kMailboxSize),
     0x09, 0x04, 0xB1, 0x02,  // Feature
+    0x85, kReportLens, 0x95, count_of(kLensChunkSize),
+    0x09, 0x06, 0xB1, 0x02,  // Feature
     0x85, kReportFeatureChunk, 0x95, count_of(kFeatureChunkSize),
     0x09, 0x05, 0x81, 0x02,  // Input
     0xC0,                    // End Collection

@@ -20,6 +20,9 @@ constexpr AngleQ28 kHalfPi = 421657428;        // pi/2
 constexpr ValueQ28 kMaxLowTexture = ValueQ28{1} << fx::kValueFrac;
 constexpr size_t kKernelOffset = 36;
 constexpr size_t kKernelStride = 5;
+constexpr size_t kCrcAt = kConfigSize - 2;
+constexpr LengthQ24 kMinStillDistance = 1678;     // 0.1 mm (the estimator's own limits)
+constexpr LengthQ24 kMaxStillDistance = 1677722;  // 10 cm
 
 bool in(int64_t v, int64_t lo, int64_t hi) { return v >= lo && v <= hi; }
 
@@ -45,6 +48,11 @@ const char* to_string(ConfigField f) {
     case ConfigField::kGyroGap: return "gyro_gap_us";
     case ConfigField::kLowTexture: return "low_texture";
     case ConfigField::kSaturatedPermille: return "saturated_permille";
+    case ConfigField::kOptions: return "options";
+    case ConfigField::kStillDistance: return "still_distance";
+    case ConfigField::kStillDuration: return "still_min_us";
+    case ConfigField::kLens: return "lens";
+    case ConfigField::kLensEdges: return "lens edges";
     case ConfigField::kMalformed: return "malformed report";
     case ConfigField::kEstimator: return "refused by the estimator";
     case ConfigField::kStore: return "could not be stored";
@@ -83,6 +91,10 @@ ConfigField validate(const DeviceConfig& c) {
   if (!in(c.gyro_gap_us, 100, 1000000)) return ConfigField::kGyroGap;
   if (!in(c.low_texture, 0, kMaxLowTexture)) return ConfigField::kLowTexture;
   if (c.saturated_permille > 1000) return ConfigField::kSaturatedPermille;
+  if ((c.options & ~kKnownOptionBits) != 0) return ConfigField::kOptions;
+  if (!in(c.still_distance, kMinStillDistance, kMaxStillDistance)) return ConfigField::kStillDistance;
+  if (!in(c.still_min_us, 100000, 60000000)) return ConfigField::kStillDuration;
+  if ((c.lens & ~kKnownLensBits) != 0 || (c.lens == 0 && c.lens_crc != 0)) return ConfigField::kLens;
   return ConfigField::kOk;
 }
 
@@ -112,7 +124,12 @@ size_t encode_config(const DeviceConfig& c, uint8_t* buf, size_t cap) {
   put_u32(buf, 78, c.gyro_gap_us);
   put_i32(buf, 82, c.low_texture);
   put_u16(buf, 86, c.saturated_permille);
-  put_u16(buf, 88, crc16(buf, 88));
+  put_u8(buf, 88, c.options);
+  put_i32(buf, 89, c.still_distance);
+  put_u32(buf, 93, c.still_min_us);
+  put_u8(buf, 97, c.lens);
+  put_u16(buf, 98, c.lens_crc);
+  put_u16(buf, kCrcAt, crc16(buf, kCrcAt));
   return kConfigSize;
 }
 
@@ -122,7 +139,7 @@ ReportError check_frame(const uint8_t* buf, size_t len) {
   if (buf == nullptr || len < kConfigSize) return ReportError::kShort;
   if (buf[0] != kReportConfig) return ReportError::kWrongId;
   if (buf[1] != kConfigVersion) return ReportError::kBadVersion;
-  if (crc16(buf, 88) != get_u16(buf, 88)) return ReportError::kBadCrc;
+  if (crc16(buf, kCrcAt) != get_u16(buf, kCrcAt)) return ReportError::kBadCrc;
   return ReportError::kOk;
 }
 
@@ -150,6 +167,11 @@ DeviceConfig unpack(const uint8_t* buf) {
   c.gyro_gap_us = get_u32(buf, 78);
   c.low_texture = get_i32(buf, 82);
   c.saturated_permille = get_u16(buf, 86);
+  c.options = buf[88];
+  c.still_distance = get_i32(buf, 89);
+  c.still_min_us = get_u32(buf, 93);
+  c.lens = buf[97];
+  c.lens_crc = get_u16(buf, 98);
   return c;
 }
 
@@ -173,8 +195,10 @@ ConfigField parse_config(const uint8_t* buf, size_t len, DeviceConfig& out) {
   return f;
 }
 
-bool to_estimator_config(const DeviceConfig& c, EstimatorConfig& out) {
+bool to_estimator_config(const DeviceConfig& c, EstimatorConfig& out, const EdgeOffsetQ15* const lens[2]) {
   if (validate(c) != ConfigField::kOk) return false;
+  for (int i = 0; i < 2; ++i)
+    if ((c.lens & (1u << i)) != 0 && (lens == nullptr || lens[i] == nullptr)) return false;
   EstimatorConfig e{};
   e.width = c.width;
   e.height = c.height;
@@ -198,12 +222,10 @@ bool to_estimator_config(const DeviceConfig& c, EstimatorConfig& out) {
   e.gyro_gap_us = c.gyro_gap_us;
   e.low_texture = c.low_texture;
   e.saturated_permille = c.saturated_permille;
-  // Not carried by configuration version 1: the estimator's own defaults
-  // (finite-baseline correction and gyro-offset learning on, stillness
-  // judged over 2 mm and 0.5 s; see firmware/core gyro_offset.hpp).
-  e.options = kOptionBaselineCorrection | kOptionGyroOffsetLearning;
-  e.still_distance = 33554;  // 2 mm in Q7.24
-  e.still_min_us = 500000;
+  e.options = c.options;
+  e.still_distance = c.still_distance;
+  e.still_min_us = c.still_min_us;
+  for (int i = 0; i < 2; ++i) e.edge_offsets[i] = (c.lens & (1u << i)) != 0 ? lens[i] : nullptr;
   out = e;
   return true;
 }
@@ -229,7 +251,57 @@ DeviceConfig default_device_config() {
   c.gyro_gap_us = 50000;
   c.low_texture = 536871;  // 2e-3
   c.saturated_permille = 50;
+  // The estimator's defaults: finite-baseline correction and gyro-offset
+  // learning on, stillness judged over 2 mm and 0.5 s (gyro_offset.hpp).
+  c.options = kOptionBaselineCorrection | kOptionGyroOffsetLearning;
+  c.still_distance = 33554;  // 2 mm in Q7.24
+  c.still_min_us = 500000;
+  c.lens = 0;  // pinhole
+  c.lens_crc = 0;
   return c;
+}
+
+size_t stored_config_size(const DeviceConfig& c) {
+  const size_t tables = ((c.lens & kLensCam0) ? 1u : 0u) + ((c.lens & kLensCam1) ? 1u : 0u);
+  return kConfigSize + tables * 2 * (size_t{c.width} + 1);
+}
+
+size_t encode_stored_config(const DeviceConfig& c, const LensTables& lens, uint8_t* buf, size_t cap) {
+  const size_t n = stored_config_size(c);
+  if (n > cap || c.width + 1u > kMaxLensEdges) return 0;
+  if (encode_config(c, buf, cap) != kConfigSize) return 0;
+  size_t off = kConfigSize;
+  for (int cam = 0; cam < 2; ++cam) {
+    if ((c.lens & (1u << cam)) == 0) continue;
+    if (lens.filled[cam] != c.width + 1u) return 0;
+    for (uint16_t u = 0; u <= c.width; ++u, off += 2) put_u16(buf, off, static_cast<uint16_t>(lens.offsets[cam][u]));
+  }
+  return n;
+}
+
+ConfigField decode_stored_config(const uint8_t* buf, size_t len, DeviceConfig& c, LensTables& lens) {
+  DeviceConfig d{};
+  const ConfigField f = parse_config(buf, len < kConfigSize ? len : kConfigSize, d);
+  if (f != ConfigField::kOk) return f;
+  if (len != stored_config_size(d) || d.width + 1u > kMaxLensEdges) return ConfigField::kMalformed;
+  // Straight into `lens` (no second copy of the tables on the stack).
+  lens.filled[0] = lens.filled[1] = 0;
+  size_t off = kConfigSize;
+  for (int cam = 0; cam < 2; ++cam) {
+    if ((d.lens & (1u << cam)) == 0) continue;
+    for (uint16_t u = 0; u <= d.width; ++u, off += 2) {
+      const uint16_t raw = get_u16(buf, off);
+      lens.offsets[cam][u] = static_cast<EdgeOffsetQ15>(raw <= 0x7FFF ? int32_t{raw} : int32_t{raw} - 65536);
+    }
+    lens.filled[cam] = static_cast<uint16_t>(d.width + 1u);
+  }
+  const EdgeOffsetQ15* const tables[2] = {lens.offsets[0], lens.offsets[1]};
+  if (lens_crc(tables, d.lens, static_cast<uint16_t>(d.width + 1u)) != d.lens_crc) {
+    lens.filled[0] = lens.filled[1] = 0;
+    return ConfigField::kLens;
+  }
+  c = d;
+  return ConfigField::kOk;
 }
 
 }  // namespace lumavel::protocol

@@ -9,6 +9,9 @@ using namespace wire;
 
 namespace {
 
+// Feature reports the mailbox can send.
+bool mailbox_id(uint8_t id) { return id == kReportDeviceInfo || id == kReportConfig || id == kReportLens; }
+
 DecodeResult fail(ReportError e, const char* field = "") { return DecodeResult{e, field}; }
 
 // Length, ID, version and (when crc) CRC checks shared by every report.
@@ -48,6 +51,7 @@ size_t encode_measurement(const Measurement& m, uint8_t* buf, size_t cap) {
   put_i32(buf, 28, m.heading);
   put_u16(buf, 32, m.status);
   put_u16(buf, 34, m.overruns);
+  put_i32(buf, 36, m.gyro_offset);
   seal(buf, kMeasurementSize);
   return kMeasurementSize;
 }
@@ -64,6 +68,7 @@ DecodeResult decode_measurement(const uint8_t* buf, size_t len, Measurement& out
   m.heading = get_i32(buf, 28);
   m.status = get_u16(buf, 32);
   m.overruns = get_u16(buf, 34);
+  m.gyro_offset = get_i32(buf, 36);
   if (m.heading < -fx::kPiQ28 || m.heading >= fx::kPiQ28) return fail(ReportError::kOutOfRange, "heading");
   if ((m.status & ~kKnownStatusBits) != 0) return fail(ReportError::kOutOfRange, "status");
   out = m;
@@ -139,7 +144,7 @@ size_t encode_mailbox_request(uint8_t report_id, uint8_t* buf, size_t cap) {
 DecodeResult decode_mailbox_request(const uint8_t* buf, size_t len, uint8_t& report_id) {
   const DecodeResult r = check_frame(buf, len, kReportMailbox, kMailboxSize, false);
   if (!r.ok()) return r;
-  if (buf[2] != kReportDeviceInfo && buf[2] != kReportConfig) return fail(ReportError::kOutOfRange, "report_id");
+  if (!mailbox_id(buf[2])) return fail(ReportError::kOutOfRange, "report_id");
   if (buf[3] != 0) return fail(ReportError::kOutOfRange, "reserved");
   report_id = buf[2];
   return r;
@@ -166,9 +171,7 @@ DecodeResult decode_feature_chunk(const uint8_t* buf, size_t len, FeatureChunk& 
   c.offset = buf[3];
   c.length = buf[4];
   c.total = buf[5];
-  if (c.report_id != kReportDeviceInfo && c.report_id != kReportConfig) {
-    return fail(ReportError::kOutOfRange, "report_id");
-  }
+  if (!mailbox_id(c.report_id)) return fail(ReportError::kOutOfRange, "report_id");
   if (c.total == 0 || c.total > kMaxReportSize) return fail(ReportError::kOutOfRange, "total");
   if (c.length == 0 || c.length > kFeatureChunkData) return fail(ReportError::kOutOfRange, "length");
   if (size_t{c.offset} + c.length > c.total) return fail(ReportError::kOutOfRange, "offset");

@@ -31,14 +31,15 @@ proto::DeviceInfo sim_identity() {
 // only its own boot-time configuration is accepted and sets from the host are
 // refused; with a store every validated set is accepted (the store keeps it,
 // the engine does not change).
-proto::ConfigField apply_own_only(void* ctx, const proto::DeviceConfig&) {
+proto::ConfigField apply_own_only(void* ctx, const proto::DeviceConfig&, const EdgeOffsetQ15* const[2]) {
   return *static_cast<bool*>(ctx) ? proto::ConfigField::kOk : proto::ConfigField::kEstimator;
 }
 
 }  // namespace
 
 proto::Measurement quantise_measurement(uint64_t t_ns, uint32_t frame_index, double v_mps,
-                                        double distance_m, double heading_rad, uint16_t status) {
+                                        double distance_m, double heading_rad, uint16_t status,
+                                        double gyro_offset_radps) {
   proto::Measurement m{};
   m.t_ns = t_ns;
   m.frame_index = frame_index;
@@ -48,6 +49,7 @@ proto::Measurement quantise_measurement(uint64_t t_ns, uint32_t frame_index, dou
     return static_cast<int32_t>(q > 2147483647.0 ? 2147483647.0 : q < -2147483648.0 ? -2147483648.0 : q);
   };
   m.v = q32(v_mps, 16);
+  m.gyro_offset = q32(gyro_offset_radps, fx::kRateFrac);
   m.distance = static_cast<int64_t>(std::llround(std::ldexp(distance_m, 32)));
   int64_t h = std::llround(std::ldexp(heading_rad, 28));
   const int64_t pi_q = fx::kPiQ28;
@@ -85,8 +87,8 @@ void HidSender::set_resolution(uint16_t width, uint16_t height) {
 void HidSender::poll() { link_->poll_features(&proto::FeatureServer::handle, &features_); }
 
 bool HidSender::send(uint64_t t_ns, double v_mps, double distance_m, double heading_rad,
-                     uint16_t status) {
-  proto::Measurement m = quantise_measurement(t_ns, frame_, v_mps, distance_m, heading_rad, status);
+                     uint16_t status, double gyro_offset_radps) {
+  proto::Measurement m = quantise_measurement(t_ns, frame_, v_mps, distance_m, heading_rad, status, gyro_offset_radps);
   m.overruns = overruns_;
   ++frame_;
   uint8_t buf[proto::kMeasurementSize];

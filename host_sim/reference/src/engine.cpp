@@ -13,10 +13,10 @@ class FixedEngine final : public Engine {
  public:
   explicit FixedEngine(const EstimatorSettings& s) : est_(std::make_unique<Estimator>()) {
     EstimatorConfig c = to_fixed_config(s);
-    std::vector<AngleQ28> edges[2];
+    std::vector<EdgeOffsetQ15> lens[2];
     for (int i = 0; i < 2; ++i) {
-      edges[i] = to_fixed_edges(s.cam[i], s.width);
-      c.column_edges[i] = edges[i].empty() ? nullptr : edges[i].data();
+      lens[i] = to_fixed_edge_offsets(s.cam[i], c.cam[i], s.width);
+      c.edge_offsets[i] = lens[i].empty() ? nullptr : lens[i].data();
     }
     const ConfigError e = est_->configure(c);
     if (e != ConfigError::kOk) throw std::invalid_argument(to_string(e));

@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "lumavel/core/kernel_bank.hpp"
+
 namespace lumavel::host {
 namespace {
 
@@ -68,14 +70,14 @@ EstimatorConfig to_fixed_config(const EstimatorSettings& s) {
                                    (s.gyro_offset_learning ? kOptionGyroOffsetLearning : 0));
   c.still_distance = static_cast<LengthQ24>(quantise(s.still_distance, fx::kLengthFrac, "still distance"));
   c.still_min_us = micros(s.still_min, "still duration");
-  std::vector<AngleQ28> edges[2];
+  std::vector<EdgeOffsetQ15> lens[2];
   for (int i = 0; i < 2; ++i) {
-    edges[i] = to_fixed_edges(s.cam[i], s.width);
-    c.column_edges[i] = edges[i].empty() ? nullptr : edges[i].data();
+    lens[i] = to_fixed_edge_offsets(s.cam[i], c.cam[i], s.width);
+    c.edge_offsets[i] = lens[i].empty() ? nullptr : lens[i].data();
   }
   const ConfigError e = validate(c);
   if (e != ConfigError::kOk) throw std::invalid_argument(std::string("configuration: ") + to_string(e));
-  c.column_edges[0] = c.column_edges[1] = nullptr;  // the vectors die here
+  c.edge_offsets[0] = c.edge_offsets[1] = nullptr;  // the vectors die here
   return c;
 }
 
@@ -86,6 +88,22 @@ std::vector<AngleQ28> to_fixed_edges(const CameraModel& c, int width) {
     throw std::invalid_argument("column-edge table has " + std::to_string(c.edges.size()) + " values for " +
                                 std::to_string(width) + " columns (want width + 1)");
   for (double e : c.edges) out.push_back(static_cast<AngleQ28>(quantise(e, fx::kAngleFrac, "column edge")));
+  return out;
+}
+
+std::vector<EdgeOffsetQ15> to_fixed_edge_offsets(const CameraModel& c, const CameraGeometry& fixed, int width) {
+  const std::vector<AngleQ28> exact = to_fixed_edges(c, width);
+  std::vector<EdgeOffsetQ15> out;
+  if (exact.empty()) return out;
+  // The firmware's own pinhole edges (bit-identical integer atan), so the
+  // device reconstructs edge = pinhole + offset to within half a Q15 step.
+  std::vector<AngleQ28> pin(static_cast<size_t>(width) + 1);
+  pinhole_column_edges(fixed, static_cast<uint16_t>(width), pin.data());
+  for (size_t u = 0; u < exact.size(); ++u) {
+    const double d = std::ldexp(static_cast<double>(int64_t{exact[u]} - pin[u]), -fx::kAngleFrac);
+    const std::string field = "lens correction of column edge " + std::to_string(u);
+    out.push_back(static_cast<EdgeOffsetQ15>(quantise(d, fx::kEdgeOffsetFrac, field.c_str(), INT16_MIN, INT16_MAX)));
+  }
   return out;
 }
 

@@ -61,6 +61,15 @@ refuse_check() {  # BACKEND: out-of-range values never leave the host
   lumavel-read --backend "$1" config set tau_us=5 2> /tmp/refuse.err
   [ $? -eq 5 ] && grep -q "tau_us is out of range" /tmp/refuse.err
 }
+# A lens table from a file (as `lumavel-sim calibrate --write` makes them):
+# uploaded in pieces, named by the configuration, read back piece by piece.
+# It becomes /tmp/set.out, so persist_check checks that the tables persist.
+lens_check() {  # BACKEND
+  lumavel-read --backend "$1" config set --file /data/lens.cfg > /tmp/set.out || return 1
+  lumavel-read --backend "$1" config get > /tmp/get.out || return 1
+  cmp /tmp/set.out /tmp/get.out && has width=40 /tmp/get.out && has lens_cam1=none /tmp/get.out \
+    && grep -q "^lens_cam0=0.01," /tmp/get.out && [ "$(grep ^lens_cam0= /tmp/get.out | tr , '\n' | wc -l)" -eq 41 ]
+}
 info_check() {  # BACKEND
   lumavel-read --backend "$1" info > /tmp/info.out && has board=lumavel-sim /tmp/info.out \
     && has resolution=40x30 /tmp/info.out && has firmware=0.1.0 /tmp/info.out
@@ -83,12 +92,12 @@ persist_check() {  # LINK BACKEND
 }
 
 # The CSV read through HID equals the estimates: every row at the report's
-# resolution (hid_csv_compare), and the shared five columns character for
+# resolution (hid_csv_compare), and the shared six columns character for
 # character (both sides print shortest round-trip decimals).
 csv_equal() {  # EXPECTED ACTUAL
   hid_csv_compare "$1" "$2" || return 1
-  cut -d, -f1-5 "$1" > /tmp/expected5.csv && cut -d, -f1-5 "$2" > /tmp/actual5.csv
-  cmp /tmp/expected5.csv /tmp/actual5.csv || { diff /tmp/expected5.csv /tmp/actual5.csv | head -5; return 1; }
+  cut -d, -f1-6 "$1" > /tmp/expected6.csv && cut -d, -f1-6 "$2" > /tmp/actual6.csv
+  cmp /tmp/expected6.csv /tmp/actual6.csv || { diff /tmp/expected6.csv /tmp/actual6.csv | head -5; return 1; }
 }
 
 wait_line() {  # wait_line TEXT FILE: polls up to 20 s for TEXT in FILE
@@ -121,6 +130,7 @@ run_link() {  # PREFIX LINK BACKEND
   check "$1-info" info_check "$3"
   check "$1-config-set-get" config_check "$3"
   check "$1-config-refused" refuse_check "$3"
+  check "$1-lens-set-get" lens_check "$3"
   check "$1-sim-exit" stop_sim
   check "$1-persist" persist_check "$2" "$3"
 }

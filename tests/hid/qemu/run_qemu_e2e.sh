@@ -103,6 +103,14 @@ rm -rf "$BUILD/rec"
 "$SIM" run "$BUILD/rec" -o "$ROOT/data/expected.csv" --plot "$BUILD/expected.svg" --quiet ||
   fail "lumavel-sim run $BUILD/rec failed"
 cp -r "$BUILD/rec" "$ROOT/data/rec" || fail "cannot copy the recording into $ROOT"
+# A lens configuration for the 40-column device, as `config set --file` reads
+# it: a cubic (barrel-like) correction of cam0's 41 column edges, up to 0.01 rad.
+{
+  echo "# lens check: cam0 gets a table, cam1 stays pinhole"
+  echo "width=40"; echo "cu0_px=19.5"; echo "cu1_px=19.5"
+  awk 'BEGIN { s = "lens_cam0="; for (u = 0; u <= 40; u++) { x = (u - 20) / 20; s = s (u ? "," : "") sprintf("%.5f", -0.01 * x * x * x) } print s }'
+  echo "lens_cam1=none"
+} > "$ROOT/data/lens.cfg"
 echo "recording: $(( $(wc -l < "$ROOT/data/expected.csv") - 1 )) estimates, $(du -sh "$BUILD/rec" | cut -f1)"
 
 # Feeder data (reconnect, live view, permission): a recording's estimates when
@@ -138,9 +146,10 @@ grep -q "LUMAVEL-GUEST-DONE" "$LOG" || { tail -30 "$LOG"; fail "the guest did no
 EXPECTED="uhid-list uhid-stream uhid-info uhid-config-set-get uhid-config-refused uhid-sim-exit uhid-persist
   uhid-reconnect uhid-live-view uhid-permission-denied no-device-message gadget-enumerated
   gadget-hidraw-list gadget-hidraw-stream gadget-hidraw-info gadget-hidraw-config-set-get
-  gadget-hidraw-config-refused gadget-hidraw-sim-exit gadget-hidraw-persist
+  gadget-hidraw-config-refused gadget-hidraw-lens-set-get gadget-hidraw-sim-exit gadget-hidraw-persist
   gadget-libusb-list gadget-libusb-stream gadget-libusb-info gadget-libusb-config-set-get
-  gadget-libusb-config-refused gadget-libusb-sim-exit gadget-libusb-persist"
+  gadget-libusb-config-refused gadget-libusb-lens-set-get gadget-libusb-sim-exit gadget-libusb-persist
+  uhid-lens-set-get"
 bad=0
 for t in $EXPECTED; do
   grep -q "^LUMAVEL-TEST $t PASS" "$LOG" || { echo "not passed: $t"; bad=1; }

@@ -1,18 +1,27 @@
-// `config get` and `config set KEY=VALUE...`.
+// `config get` and `config set [--file FILE] [KEY=VALUE...]`, lens tables included.
 #include <algorithm>
 #include <chrono>
-#include <thread>
 #include <cstdio>
+#include <stdexcept>
+#include <thread>
 
 #include "commands.hpp"
-#include "config_keys.hpp"
 #include "device.hpp"
+#include "lumavel/host/config_text.hpp"
+#include "lumavel/protocol/lens.hpp"
 
 namespace lumavel::read {
 
 namespace proto = lumavel::protocol;
+using host::DeviceSetup;
 
 namespace {
+
+// Some USB stacks (Linux gadget HID) acknowledge a SET_REPORT before the
+// device has read it and keep only the latest one: sets sent back to back can
+// overwrite each other. A short pause after each set lets the device take it;
+// what is still lost shows in the read-back and is sent again.
+void pause_after_set() { std::this_thread::sleep_for(std::chrono::milliseconds(10)); }
 
 proto::DeviceConfig read_config(Device& dev) {
   const auto raw = dev.get_feature(proto::kReportConfig, [](const uint8_t* b, size_t n) {
@@ -34,63 +43,126 @@ proto::DeviceInfo read_info(Device& dev) {
   return d;
 }
 
-}  // namespace
+// Sends lens pieces of `t` for camera `cam`, 24 values each, in order.
+void upload_lens(Device& dev, uint8_t cam, const std::vector<EdgeOffsetQ15>& t) {
+  for (size_t first = 0; first < t.size(); first += proto::kLensChunkEdges) {
+    proto::LensChunk c{};
+    c.camera = cam;
+    c.first = static_cast<uint8_t>(first);
+    c.count = static_cast<uint8_t>(std::min(proto::kLensChunkEdges, t.size() - first));
+    std::copy(t.begin() + static_cast<long>(first), t.begin() + static_cast<long>(first + c.count), c.offsets);
+    uint8_t buf[proto::kLensChunkSize];
+    proto::encode_lens_chunk(c, buf, sizeof buf);
+    dev.set_feature(buf, sizeof buf);
+    pause_after_set();
+  }
+}
 
-int cmd_config(const Common& c, const std::vector<std::string>& args) {
-  if (args.empty() || wants_help(args)) {
-    std::printf("usage: lumavel-read [--backend B] [--device PATH] config get\n"
-                "       lumavel-read [--backend B] [--device PATH] config set KEY=VALUE...\n"
-                "get prints the device's configuration as KEY=VALUE lines; set changes the\n"
-                "given keys, checks every range before sending, sends the whole configuration\n"
-                "(versioned, CRC-protected), then reads back and prints what is in force.\n"
-                "The device validates again, applies and stores it.\nKeys:\n%s",
-                config_keys_help());
-    return args.empty() ? kExitUsage : kExitOk;
+// One piece: select it, then get it. The answer must be the piece selected
+// (a select overwritten by the get's mailbox request is tried again).
+proto::LensChunk read_piece(Device& dev, uint8_t cam, uint8_t first) {
+  proto::LensChunk sel{};
+  sel.camera = cam;
+  sel.first = first;
+  uint8_t buf[proto::kLensChunkSize];
+  proto::encode_lens_chunk(sel, buf, sizeof buf);
+  constexpr int kTries = 3;
+  for (int attempt = 1;; ++attempt) {
+    try {
+      dev.set_feature(buf, sizeof buf);
+      pause_after_set();
+      const auto raw = dev.get_feature(proto::kReportLens, [&sel](const uint8_t* b, size_t n) {
+        proto::LensChunk c{};
+        proto::DecodeResult r = proto::decode_lens_chunk(b, n, c);
+        if (r.ok() && (c.camera != sel.camera || c.first != sel.first || c.count == 0))
+          r = proto::DecodeResult{proto::ReportError::kOutOfRange, "lens piece (not the one selected)"};
+        return r;
+      });
+      proto::LensChunk c{};
+      proto::decode_lens_chunk(raw.data(), raw.size(), c);
+      return c;
+    } catch (const DeviceError& e) {
+      if (e.kind() != DeviceErrorKind::kProtocol || attempt == kTries) throw;
+    }
   }
-  Device dev(load_hidapi(c.backend), c.device);
-  if (args[0] == "get" && args.size() == 1) {
-    std::fputs(format_config(read_config(dev)).c_str(), stdout);
-    return kExitOk;
+}
+
+// The device's table for camera `cam`, piece by piece.
+std::vector<EdgeOffsetQ15> read_lens(Device& dev, uint8_t cam, size_t edges) {
+  std::vector<EdgeOffsetQ15> out;
+  while (out.size() < edges) {
+    const proto::LensChunk c = read_piece(dev, cam, static_cast<uint8_t>(out.size()));
+    for (size_t i = 0; i < c.count && out.size() < edges; ++i) out.push_back(c.offsets[i]);
   }
-  if (args[0] != "set" || args.size() < 2) {
-    std::fprintf(stderr, "lumavel-read config: use `config get` or `config set KEY=VALUE...`\n");
-    return kExitUsage;
+  return out;
+}
+
+DeviceSetup read_setup(Device& dev) {
+  DeviceSetup s;
+  s.config = read_config(dev);
+  for (uint8_t cam = 0; cam < 2; ++cam)
+    if (s.config.lens & (1u << cam)) s.lens[cam] = read_lens(dev, cam, size_t{s.config.width} + 1);
+  return s;
+}
+
+bool same(const DeviceSetup& a, const DeviceSetup& b) {
+  uint8_t x[proto::kConfigSize], y[proto::kConfigSize];
+  proto::encode_config(a.config, x, sizeof x);
+  proto::encode_config(b.config, y, sizeof y);
+  return std::equal(x, x + sizeof x, y) && a.lens[0] == b.lens[0] && a.lens[1] == b.lens[1];
+}
+
+int set_config(Device& dev, const std::vector<std::string>& args) {
+  DeviceSetup want = read_setup(dev);
+  for (size_t i = 1; i < args.size(); ++i) {
+    if (args[i] == "--file") {
+      if (i + 1 >= args.size()) throw std::runtime_error("--file needs a file name");
+      host::apply_settings_file(want, args[++i]);
+    } else {
+      host::apply_setting(want, args[i]);
+    }
   }
-  proto::DeviceConfig cfg = read_config(dev);
-  for (size_t i = 1; i < args.size(); ++i) apply_setting(cfg, args[i]);
-  const proto::ConfigField f = proto::validate(cfg);
+  host::seal_lens(want);
+  const proto::ConfigField f = proto::validate(want.config);
   if (f != proto::ConfigField::kOk) {
-    std::fprintf(stderr, "lumavel-read config set: %s is out of range (nothing sent)\n",
-                 proto::to_string(f));
+    std::fprintf(stderr, "lumavel-read config set: %s is out of range (nothing sent)\n", proto::to_string(f));
     return kExitRefused;
   }
   uint8_t buf[proto::kConfigSize];
-  proto::encode_config(cfg, buf, sizeof buf);
+  proto::encode_config(want.config, buf, sizeof buf);
   // A set is idempotent: when the read-back shows it did not arrive (a lost
   // transfer was seen on the gadget link under emulation), send it again.
   constexpr int kAttempts = 3;
   for (int attempt = 1;; ++attempt) {
     bool refused_by_link = false;
     try {
+      for (uint8_t cam = 0; cam < 2; ++cam) upload_lens(dev, cam, want.lens[cam]);
       dev.set_feature(buf, sizeof buf);
+      pause_after_set();
     } catch (const DeviceError&) {
       refused_by_link = true;  // the reason is in the info report
     }
     const proto::DeviceInfo info = read_info(dev);
+    const auto status = static_cast<proto::ConfigField>(info.config_status);
+    // An incomplete table is what a lost piece looks like: send everything again.
+    const bool lost_piece = status == proto::ConfigField::kLens && want.config.lens != 0 && attempt < kAttempts;
+    if (lost_piece) {
+      std::fprintf(stderr, "lumavel-read config set: the device missed a lens piece, sending again (attempt %d of %d)\n",
+                   attempt + 1, kAttempts);
+      continue;
+    }
     if (refused_by_link || info.config_status != 0) {
       std::fprintf(stderr, "lumavel-read config set: the device refused the configuration: %s\n",
                    proto::to_string(static_cast<proto::ConfigField>(info.config_status)));
       return kExitRefused;
     }
-    const proto::DeviceConfig now = read_config(dev);
-    uint8_t back[proto::kConfigSize];
-    proto::encode_config(now, back, sizeof back);
-    if (std::equal(back, back + sizeof back, buf)) {
-      std::fputs(format_config(now).c_str(), stdout);
+    const DeviceSetup now = read_setup(dev);
+    if (same(now, want)) {
+      std::fputs(host::format_setup(now).c_str(), stdout);
       break;
     }
     if (attempt == kAttempts) {
-      std::fputs(format_config(now).c_str(), stdout);
+      std::fputs(host::format_setup(now).c_str(), stdout);
       std::fprintf(stderr, "lumavel-read config set: the device reports a different configuration "
                            "than the one sent (%d attempts)\n", kAttempts);
       return kExitRefused;
@@ -100,6 +172,46 @@ int cmd_config(const Common& c, const std::vector<std::string>& args) {
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
   }
   return kExitOk;
+}
+
+}  // namespace
+
+int cmd_config(const Common& c, const std::vector<std::string>& args) {
+  if (args.empty() || wants_help(args)) {
+    std::printf("usage: lumavel-read [--backend B] [--device PATH] config get\n"
+                "       lumavel-read [--backend B] [--device PATH] config set [--file FILE] [KEY=VALUE...]\n"
+                "get prints the device's configuration as KEY=VALUE lines; set changes the\n"
+                "given keys (from FILE, KEY=VALUE lines as get prints them, # comments allowed,\n"
+                "then from the command line), checks every range before sending, sends the lens\n"
+                "tables and the whole configuration (versioned, CRC-protected), then reads back\n"
+                "and prints what is in force. The device validates again, applies and stores it.\nKeys:\n%s",
+                host::config_keys_help());
+    return args.empty() ? kExitUsage : kExitOk;
+  }
+  if (args[0] == "get" && args.size() == 1) {
+    Device dev(load_hidapi(c.backend), c.device);
+    std::fputs(host::format_setup(read_setup(dev)).c_str(), stdout);
+    return kExitOk;
+  }
+  if (args[0] != "set" || args.size() < 2) {
+    std::fprintf(stderr, "lumavel-read config: use `config get` or `config set [--file FILE] [KEY=VALUE...]`\n");
+    return kExitUsage;
+  }
+  // The file and the keys are checked before any device is opened.
+  DeviceSetup dry;
+  dry.config = proto::default_device_config();
+  dry.config.width = 0;  // unknown until the device answers, unless given
+  for (size_t i = 1; i < args.size(); ++i) {
+    if (args[i] == "--file") {
+      if (i + 1 >= args.size()) throw std::runtime_error("--file needs a file name");
+      host::apply_settings_file(dry, args[++i]);
+    } else {
+      host::apply_setting(dry, args[i]);
+    }
+  }
+  if (dry.config.width != 0) host::seal_lens(dry);  // table lengths against the width given
+  Device dev(load_hidapi(c.backend), c.device);
+  return set_config(dev, args);
 }
 
 }  // namespace lumavel::read

@@ -117,7 +117,7 @@ int cmd_stream(const Common& c, const std::vector<std::string>& args) {
     std::printf(
         "usage: lumavel-read [--backend B] [--device PATH] stream [options]\n"
         "Reads input reports and writes them as CSV (header: timestamp_ns,v_xb_mps,distance_m,\n"
-        "heading_rad,status,frame_index,seq,overruns). When stdout is a terminal it shows a\n"
+        "heading_rad,status,gyro_offset_radps,frame_index,seq,overruns). When stdout is a terminal it shows a\n"
         "live line (rate, V, distance, heading, status) instead, unless --csv.\n"
         "  -o, --output FILE   write the CSV to FILE (live line on the terminal meanwhile)\n"
         "  -n, --count N       stop after N measurements\n"

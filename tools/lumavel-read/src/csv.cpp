@@ -1,6 +1,7 @@
 #include "csv.hpp"
 
 #include <charconv>
+#include <cmath>
 #include <initializer_list>
 #include <cstdio>
 
@@ -14,9 +15,10 @@ double distance_m(const protocol::Measurement& m) {
   return static_cast<double>(m.distance) / 4294967296.0;
 }
 double heading_rad(const protocol::Measurement& m) { return m.heading / 268435456.0; }
+double gyro_offset_radps(const protocol::Measurement& m) { return std::ldexp(m.gyro_offset, -fx::kRateFrac); }
 
 std::string csv_header() {
-  return "timestamp_ns,v_xb_mps,distance_m,heading_rad,status,frame_index,seq,overruns";
+  return "timestamp_ns,v_xb_mps,distance_m,heading_rad,status,gyro_offset_radps,frame_index,seq,overruns";
 }
 
 std::string csv_row(const protocol::Measurement& m) {
@@ -29,7 +31,11 @@ std::string csv_row(const protocol::Measurement& m) {
     *p++ = ',';
     p = std::to_chars(p, end, x, std::chars_format::general).ptr;
   }
-  for (const uint64_t n : {uint64_t{m.status}, uint64_t{m.frame_index}, uint64_t{m.seq}, uint64_t{m.overruns}}) {
+  *p++ = ',';
+  p = std::to_chars(p, end, m.status).ptr;
+  *p++ = ',';
+  p = std::to_chars(p, end, gyro_offset_radps(m), std::chars_format::general).ptr;
+  for (const uint64_t n : {uint64_t{m.frame_index}, uint64_t{m.seq}, uint64_t{m.overruns}}) {
     *p++ = ',';
     p = std::to_chars(p, end, n).ptr;
   }
@@ -43,7 +49,7 @@ std::string status_names(uint16_t status) {
   } kNames[] = {{kStatusConverging, "CONVERGING"}, {kStatusLowTexture, "LOW_TEXTURE"},
                 {kStatusSaturated, "SATURATED"},   {kStatusFrameGap, "FRAME_GAP"},
                 {kStatusGyroGap, "GYRO_GAP"},      {kStatusNoLight, "NO_LIGHT"},
-                {kStatusRestarted, "RESTARTED"}};
+                {kStatusRestarted, "RESTARTED"},   {kStatusStill, "STILL"}};
   if (status == 0) return "ok";
   std::string s;
   for (const auto& n : kNames) {

@@ -75,13 +75,16 @@ class App {
     return static_cast<protocol::ConfigField>(features_.info().config_status);
   }
   const Estimator& estimator() const { return estimator_; }
+  // The lens upload area (the running tables unless pieces came since).
+  const protocol::LensTables& lens_tables() const { return features_.lens(); }
 
   // Feature requests (ReportLink::FeatureHandler). Public for unit tests.
   size_t handle_feature(uint8_t id, bool is_set, uint8_t* buf, size_t len, size_t cap);
 
  private:
-  static protocol::ConfigField apply_hook(void* ctx, const protocol::DeviceConfig& c);
-  protocol::ConfigField apply(const protocol::DeviceConfig& c);
+  static protocol::ConfigField apply_hook(void* ctx, const protocol::DeviceConfig& c,
+                                          const EdgeOffsetQ15* const lens[2]);
+  protocol::ConfigField apply(const protocol::DeviceConfig& c, const EdgeOffsetQ15* const lens[2]);
   void push_gyro_until(uint64_t t_ns);
   void count_gap(uint64_t t_ns);
   void send_measurement(const Estimate& e);

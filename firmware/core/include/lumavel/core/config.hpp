@@ -40,12 +40,14 @@ struct EstimatorConfig {
   uint8_t options;              // ConfigOption bits
   LengthQ24 still_distance;     // image change since a reference below this counts as still
   uint32_t still_min_us;        // stillness needed before the gyro offset is taken
-  // Optional body-frame yaw of every column edge (width + 1 values) per
-  // camera, replacing the pinhole model: lens distortion is undistorted on
-  // the host and sent as this table, so the firmware stays integer only.
-  // Read by configure() only (the kernel bank keeps the edges); nullptr =
+  // Optional lens correction per camera: width + 1 values, each added to the
+  // pinhole column edge (column_edge_yaws in kernel_bank.hpp). Lens distortion
+  // is undistorted on the host and sent as this compact table (int16 instead
+  // of a Q28 edge table: 2 x 129 x 2 bytes on a 128-column board), so the
+  // firmware stays integer only. Read by configure() only, which builds the
+  // kernel tables from it (neither it nor the edges are kept); nullptr =
   // pinhole from fu, cu.
-  const AngleQ28* column_edges[2];
+  const EdgeOffsetQ15* edge_offsets[2];
 };
 
 enum ConfigOption : uint8_t {

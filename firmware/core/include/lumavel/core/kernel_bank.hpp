@@ -49,15 +49,21 @@ struct KernelBank {
   CameraKernels cam[2];
   ValueQ28 dc[2][kMaxKernels];  // F of a uniform image (sum K / sum N), per camera
   AngleQ28 sigma[kMaxKernels];
-  // Body-frame yaw of each column edge, width + 1 values, increasing with u
-  // for u_sign = +1 and decreasing otherwise.
-  AngleQ28 edge[2][kMaxColumns + 1];
+  // No edge table: the edges (column_edge_yaws) are computed while the
+  // tables are built, which saves 2 x (kMaxColumns + 1) x 4 bytes of RAM.
 };
 
 // Pinhole column edges: axis + u_sign * atan((u - 0.5 - cu) / fu), u = 0..width.
 void pinhole_column_edges(const CameraGeometry& g, uint16_t width, AngleQ28* edges);
 
-// Builds all tables of a validated configuration.
+// The edges the kernels use: pinhole edges plus the lens table
+// (EstimatorConfig::edge_offsets, Q15 -> Q28) when there is one. The sum is
+// not clamped: validate() refuses tables that leave [-pi, pi] (|pinhole| < 2 pi
+// and |offset| < 1 rad keep it far inside int32).
+void column_edge_yaws(const CameraGeometry& g, const EdgeOffsetQ15* offsets, uint16_t width, AngleQ28* edges);
+
+// Builds all tables of a validated configuration (cfg.edge_offsets are read
+// here and not kept).
 void build_kernel_bank(const EstimatorConfig& cfg, KernelBank& bank);
 
 // Gaussian-derivative kernel helpers (exposed for tests).

@@ -14,7 +14,7 @@ constexpr uint16_t kUsagePage = 0xFF00;
 constexpr uint16_t kUsage = 0x0001;
 
 // Protocol version carried in byte 1 of every report.
-constexpr uint8_t kProtocolVersion = 1;
+constexpr uint8_t kProtocolVersion = 2;
 
 // Report IDs. Byte 0 of every report is its ID.
 enum ReportId : uint8_t {
@@ -22,20 +22,22 @@ enum ReportId : uint8_t {
   kReportDeviceInfo = 0x02,   // feature, get only
   kReportConfig = 0x03,       // feature, get and set
   kReportMailbox = 0x04,      // feature, set only: "send feature report N as input chunks"
+  kReportLens = 0x05,         // feature, get and set: a piece of a lens table (lens.hpp)
   kReportFeatureChunk = 0x84, // input: a piece of a feature report sent through the mailbox
 };
 
 // Total lengths in bytes, report ID included. No input report is 64 bytes
 // long: a full-speed packet of exactly 64 is followed by a zero-length packet
 // on some stacks (Linux gadget HID), which hidapi-libusb returns as a read of 0.
-constexpr size_t kMeasurementSize = 38;
+constexpr size_t kMeasurementSize = 42;
 constexpr size_t kDeviceInfoSize = 36;
-constexpr size_t kConfigSize = 90;
+constexpr size_t kConfigSize = 102;
 constexpr size_t kMailboxSize = 4;
+constexpr size_t kLensChunkSize = 55;
 constexpr size_t kFeatureChunkSize = 62;
 constexpr size_t kFeatureChunkData = 56;    // payload bytes per chunk
 constexpr size_t kMaxInputReportSize = 62;  // largest input report (endpoint size)
-constexpr size_t kMaxReportSize = 90;       // largest report of any kind
+constexpr size_t kMaxReportSize = 102;      // largest report of any kind
 
 // Interrupt IN polling interval at full speed: one report per frame up to 1 kHz.
 constexpr uint8_t kFullSpeedIntervalMs = 1;

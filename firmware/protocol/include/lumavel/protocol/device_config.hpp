@@ -11,11 +11,12 @@
 
 #include "lumavel/core/config.hpp"
 #include "lumavel/core/fixed.hpp"
+#include "lumavel/protocol/lens.hpp"
 #include "lumavel/protocol/reports.hpp"
 
 namespace lumavel::protocol {
 
-constexpr uint8_t kConfigVersion = 1;
+constexpr uint8_t kConfigVersion = 2;
 // Kernel slots on the wire: fixed so that the layout does not depend on the
 // build's LUMAVEL_MAX_KERNELS (validate() refuses counts above kMaxKernels).
 constexpr int kWireKernels = 6;
@@ -27,6 +28,15 @@ enum Orientation : uint8_t {
   kCam1UpsideDown = 1u << 2,
 };
 constexpr uint8_t kKnownOrientationBits = 0x07u;
+
+// Lens bits: which cameras have a lens table (uploaded with report 0x05).
+enum LensBits : uint8_t {
+  kLensCam0 = 1u << 0,
+  kLensCam1 = 1u << 1,
+};
+constexpr uint8_t kKnownLensBits = 0x03u;
+// Estimator option bits the configuration may carry (lumavel/core/config.hpp).
+constexpr uint8_t kKnownOptionBits = kOptionBaselineCorrection | kOptionGyroOffsetLearning;
 
 struct KernelSetting {
   uint8_t order;   // 0..kMaxKernelOrder
@@ -50,6 +60,11 @@ struct DeviceConfig {
   uint32_t gyro_gap_us;     // [100 us, 1 s]
   ValueQ28 low_texture;     // [0, 1]
   uint16_t saturated_permille;  // 0..1000
+  uint8_t options;          // estimator ConfigOption bits (kKnownOptionBits)
+  LengthQ24 still_distance; // image change below which the rig counts as still, m, [0.1 mm, 10 cm]
+  uint32_t still_min_us;    // stillness before the gyro offset is taken, [0.1 s, 60 s]
+  uint8_t lens;             // LensBits: cameras with a lens table
+  uint16_t lens_crc;        // lens_crc() of those tables (width + 1 edges each); 0 without
 };
 
 // Which field of a DeviceConfig was refused (travels in DeviceInfo.config_status).
@@ -72,6 +87,11 @@ enum class ConfigField : uint8_t {
   kGyroGap,
   kLowTexture,
   kSaturatedPermille,
+  kOptions,
+  kStillDistance,
+  kStillDuration,
+  kLens,       // unknown lens bits, lens_crc set without tables, or a table incomplete / not matching lens_crc
+  kLensEdges,  // the estimator refused a lens table (edges not monotonic or outside [-pi, pi])
   kMalformed,  // the report itself was refused (length, id, version, CRC)
   kEstimator,  // passed these ranges but the estimator refused it (e.g. kernel outside the view)
   kStore,      // accepted but could not be persisted
@@ -94,7 +114,10 @@ ConfigField validate(const DeviceConfig& c);
 //   66  4    tau_us           70  4  frame_period_us
 //   74  4    max_gap_us       78  4  gyro_gap_us
 //   82  4    low_texture      86  2  saturated_permille
-//   88  2    crc16 of bytes 0..87
+//   88  1    options          89  4  still_distance (LengthQ24)
+//   93  4    still_min_us     97  1  lens (LensBits)
+//   98  2    lens_crc
+//   100 2    crc16 of bytes 0..99
 size_t encode_config(const DeviceConfig& c, uint8_t* buf, size_t cap);
 // Checks length, ID, version and CRC, then validate(): on kOutOfRange,
 // result.field names the field (to_string(ConfigField)).
@@ -104,8 +127,24 @@ DecodeResult decode_config(const uint8_t* buf, size_t len, DeviceConfig& out);
 ConfigField parse_config(const uint8_t* buf, size_t len, DeviceConfig& out);
 
 // Builds the estimator's configuration. False (out untouched) if validate()
-// refuses c. The estimator still runs its own validate() in configure().
-bool to_estimator_config(const DeviceConfig& c, EstimatorConfig& out);
+// refuses c, or c.lens names a camera whose entry in `lens` is null. The
+// estimator's edge_offsets point into `lens` (read by configure() only).
+// The estimator still runs its own validate() in configure().
+bool to_estimator_config(const DeviceConfig& c, EstimatorConfig& out,
+                         const EdgeOffsetQ15* const lens[2] = nullptr);
+
+// The blob kept in the ConfigStore: the configuration report (kConfigSize
+// bytes) followed by the lens tables it names (camera 0 first, width + 1
+// little-endian i16 each). Its length follows from the configuration.
+constexpr size_t kMaxStoredConfigSize = kConfigSize + 2 * 2 * kMaxLensEdges;
+size_t stored_config_size(const DeviceConfig& c);
+// 0 if cap is too small or c names a table that `lens` does not fill.
+size_t encode_stored_config(const DeviceConfig& c, const LensTables& lens, uint8_t* buf, size_t cap);
+// kMalformed for a bad report or a length that does not match; kLens when
+// the tables do not match lens_crc; else validate()'s outcome. On kOk, c and
+// the named tables of lens (filled = width + 1) are set; lens.filled is 0
+// for the others, and for both after a failure past the header.
+ConfigField decode_stored_config(const uint8_t* buf, size_t len, DeviceConfig& c, LensTables& lens);
 
 // A working configuration for a 40 x 30, 60 degree, 8 cm rig looking left:
 // what a device runs when its store is empty or invalid.

@@ -1,6 +1,7 @@
 // Device-side handling of the feature reports, ready to pass to
 // hal::ReportLink::poll_features: device info (get), configuration (get/set:
-// CRC, version, ranges, then the application's apply hook, then the store).
+// CRC, version, ranges, lens tables, then the application's apply hook, then
+// the store) and lens table pieces (set: upload or select; get).
 // Optional helper; integer only, no heap.
 #pragma once
 #include <cstddef>
@@ -8,39 +9,54 @@
 
 #include "lumavel/hal/config_store.hpp"
 #include "lumavel/protocol/device_config.hpp"
+#include "lumavel/protocol/lens.hpp"
 #include "lumavel/protocol/reports.hpp"
 
 namespace lumavel::protocol {
 
 class FeatureServer {
  public:
-  // Applies a range-checked configuration (e.g. rebuilds the estimator).
-  // Returns kOk, or kEstimator if the estimator refused it (nothing changes then).
-  using ApplyFn = ConfigField (*)(void* ctx, const DeviceConfig& cfg);
+  // Applies a range-checked configuration (e.g. rebuilds the estimator) with
+  // its lens tables (lens[i] is null unless cfg.lens names camera i; complete
+  // and matching cfg.lens_crc). Returns kOk, or the refusal (kEstimator,
+  // kLensEdges, ...) if it did not apply (nothing changes then).
+  using ApplyFn = ConfigField (*)(void* ctx, const DeviceConfig& cfg, const EdgeOffsetQ15* const lens[2]);
 
   // `identity` gives firmware version, board and capacities; the working
   // resolution and config status/source are kept up to date by the server.
   FeatureServer(const DeviceInfo& identity, hal::ConfigStore* store, ApplyFn apply, void* ctx);
 
-  // At boot: the stored configuration if it decodes and applies, else
-  // `defaults` (which must apply). Returns the status of `defaults` if even that fails.
+  // At boot: the stored configuration (with its lens tables) if it decodes
+  // and applies, else `defaults` (which must apply and have no lens).
+  // Returns the status of `defaults` if even that fails.
   ConfigField boot(const DeviceConfig& defaults);
 
   // hal::ReportLink::FeatureHandler; ctx is the FeatureServer.
   static size_t handle(void* ctx, uint8_t id, bool is_set, uint8_t* buf, size_t len, size_t cap);
 
-  // Set from the host: decode, validate, apply, persist. Returns the outcome,
-  // also reported in DeviceInfo.config_status.
+  // Set from the host: decode, validate, check the lens tables it names,
+  // apply, persist. Returns the outcome, also reported in DeviceInfo.config_status.
   ConfigField set_config(const uint8_t* buf, size_t len);
+  // A lens piece from the host (report 0x05): kMalformed if it does not
+  // decode, kLens if it breaks the upload order or the build's capacity.
+  // Also reported in config_status. Uploads take effect with the next
+  // configuration set that names the camera.
+  ConfigField set_lens(const uint8_t* buf, size_t len);
 
   const DeviceConfig& config() const { return config_; }
   const DeviceInfo& info() const { return info_; }
+  // The upload area: the running tables unless pieces were uploaded since
+  // (config().lens_crc identifies the running ones).
+  const LensTables& lens() const { return lens_; }
 
  private:
   ConfigField apply_and_keep(const DeviceConfig& c, uint8_t source);
+  bool load_stored(DeviceConfig& out);  // the stored blob into out and lens_
+  bool save_current();                  // config_ and its tables into the store
 
   DeviceInfo info_;
   DeviceConfig config_{};
+  LensTables lens_{};
   hal::ConfigStore* store_;
   ApplyFn apply_;
   void* ctx_;

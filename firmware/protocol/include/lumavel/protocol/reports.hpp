@@ -39,9 +39,10 @@ struct DecodeResult {
 //   16  4    v              SpeedQ16, m/s
 //   20  8    distance       DistQ32, m
 //   28  4    heading        AngleQ28, rad, in [-pi, pi)
-//   32  2    status         StatusFlag bits (bits 7..15 must be 0 in version 1)
+//   32  2    status         StatusFlag bits (bits 8..15 must be 0 in version 2)
 //   34  2    overruns       u16, frames dropped since start (saturates at 65535)
-//   36  2    crc16 of bytes 0..35
+//   36  4    gyro_offset    RateQ24, rad/s: zero-rate offset learned at standstill
+//   40  2    crc16 of bytes 0..39
 struct Measurement {
   uint16_t seq;
   uint64_t t_ns;
@@ -51,10 +52,11 @@ struct Measurement {
   AngleQ28 heading;
   uint16_t status;
   uint16_t overruns;
+  RateQ24 gyro_offset;
 };
 
-// Status bits defined in protocol version 1 (lumavel/core/status.hpp).
-constexpr uint16_t kKnownStatusBits = 0x007Fu;
+// Status bits defined in protocol version 2 (lumavel/core/status.hpp).
+constexpr uint16_t kKnownStatusBits = 0x00FFu;
 
 // Writes kMeasurementSize bytes; returns the size, or 0 if cap is too small.
 size_t encode_measurement(const Measurement& m, uint8_t* buf, size_t cap);
@@ -87,13 +89,13 @@ struct DeviceInfo {
 };
 enum ConfigSource : uint8_t { kConfigDefaults = 0, kConfigStored = 1, kConfigSetByHost = 2 };
 // Largest config_status value (ConfigField::kStore in device_config.hpp).
-constexpr uint8_t kMaxConfigStatus = 20;
+constexpr uint8_t kMaxConfigStatus = 25;
 
 size_t encode_device_info(const DeviceInfo& d, uint8_t* buf, size_t cap);
 DecodeResult decode_device_info(const uint8_t* buf, size_t len, DeviceInfo& out);
 
 // Feature report 0x04 (set): asks the device to send feature report
-// `report_id` (0x02 or 0x03) as input reports 0x84. For USB stacks whose
+// `report_id` (0x02, 0x03 or 0x05) as input reports 0x84. For USB stacks whose
 // application cannot answer GET_REPORT (Linux gadget HID before 6.13).
 //   0 id = 0x04, 1 version, 2 report_id, 3 reserved 0
 size_t encode_mailbox_request(uint8_t report_id, uint8_t* buf, size_t cap);

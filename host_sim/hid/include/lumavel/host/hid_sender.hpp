@@ -20,7 +20,8 @@ namespace lumavel::host {
 // Quantises an estimate in physical units to the report's fixed-point
 // formats (round to nearest; heading wrapped into [-pi, pi)).
 protocol::Measurement quantise_measurement(uint64_t t_ns, uint32_t frame_index, double v_mps,
-                                           double distance_m, double heading_rad, uint16_t status);
+                                           double distance_m, double heading_rad, uint16_t status,
+                                           double gyro_offset_radps = 0);
 
 struct HidSenderOptions {
   int first_wait_ms = 30000;  // how long the first report waits for a host to read
@@ -38,7 +39,8 @@ class HidSender {
   // report's resolution) unless the store holds a valid configuration.
   void set_resolution(uint16_t width, uint16_t height);
   // Sends one report; false if the host did not take it in time (counted as an overrun).
-  bool send(uint64_t t_ns, double v_mps, double distance_m, double heading_rad, uint16_t status);
+  bool send(uint64_t t_ns, double v_mps, double distance_m, double heading_rad, uint16_t status,
+            double gyro_offset_radps = 0);
   void poll();  // serves pending feature requests
   uint32_t sent() const { return sent_; }
   uint16_t overruns() const { return overruns_; }

@@ -47,11 +47,17 @@ std::vector<KernelModel> default_kernels(double hfov);
 
 // Quantises to the firmware configuration. Throws std::invalid_argument
 // naming the field when a value does not fit its fixed-point format. Column
-// edge tables are checked too but not attached (column_edges stay nullptr):
-// attach to_fixed_edges() of each camera before configure().
+// edge tables are checked too but not attached (edge_offsets stay nullptr):
+// attach to_fixed_edge_offsets() of each camera before configure().
 EstimatorConfig to_fixed_config(const EstimatorSettings& s);
 
 // A camera's column-edge table in Q3.28 (empty for a pinhole camera).
 std::vector<AngleQ28> to_fixed_edges(const CameraModel& c, int width);
+
+// The same table as the firmware takes it: per-edge corrections (Q15 rad) to
+// the pinhole edges of `fixed` (the quantised geometry, to_fixed_config's
+// cam[i]). Empty for a pinhole camera; throws naming the edge whose
+// correction does not fit [-1, 1) rad.
+std::vector<EdgeOffsetQ15> to_fixed_edge_offsets(const CameraModel& c, const CameraGeometry& fixed, int width);
 
 }  // namespace lumavel::host

@@ -12,6 +12,7 @@
 #include "lumavel/hal/report_link.hpp"
 #include "lumavel/hal/watchdog.hpp"
 #include "lumavel/protocol/descriptor.hpp"
+#include "lumavel/protocol/device_config.hpp"
 #include "lumavel/stream/byte_io.hpp"
 
 namespace lumavel::stream {
@@ -128,7 +129,7 @@ class RamConfigStore final : public hal::ConfigStore {
   bool save(const uint8_t* buf, size_t len) override;
 
  private:
-  uint8_t blob_[protocol::kMaxReportSize]{};
+  uint8_t blob_[protocol::kMaxStoredConfigSize]{};  // configuration report + lens tables
   size_t len_ = 0;
 };
 

@@ -1,12 +1,14 @@
-#include "config_keys.hpp"
+#include "lumavel/host/config_text.hpp"
 
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
+#include <sstream>
 #include <limits>
 #include <stdexcept>
 
-namespace lumavel::read {
+namespace lumavel::host {
 
 namespace proto = lumavel::protocol;
 
@@ -88,6 +90,33 @@ void parse_kernels(proto::DeviceConfig& c, const std::string& v) {
   c = n;
 }
 
+std::string format_lens(const std::vector<EdgeOffsetQ15>& t) {
+  if (t.empty()) return "none";
+  std::string s;
+  for (size_t i = 0; i < t.size(); ++i) s += (i ? "," : "") + num_q(t[i], fx::kEdgeOffsetFrac);
+  return s;
+}
+
+// Comma-separated corrections in rad, each to Q15 ("none" or empty: no table).
+std::vector<EdgeOffsetQ15> parse_lens(const std::string& key, const std::string& v) {
+  std::vector<EdgeOffsetQ15> out;
+  if (v.empty() || v == "none") return out;
+  size_t start = 0;
+  for (;;) {
+    const size_t comma = v.find(',', start);
+    const std::string item = v.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    const std::string where = key + " value " + std::to_string(out.size() + 1);
+    const int32_t q = to_q(where, item, fx::kEdgeOffsetFrac);
+    if (q < -32768 || q > 32767) throw std::runtime_error(where + ": " + item + " rad is outside [-1, 1)");
+    out.push_back(static_cast<EdgeOffsetQ15>(q));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return out;
+}
+
+bool flag(const std::string& k, const std::string& v) { return parse_int(k, v, 0, 1) != 0; }
+
 }  // namespace
 
 const char* config_keys_help() {
@@ -102,10 +131,16 @@ const char* config_keys_help() {
          "  tau_us                   observer time constant (gain 1/tau), us\n"
          "  frame_period_us, max_gap_us, gyro_gap_us   timing, us\n"
          "  low_texture              rms of F1-F0 below which V is held\n"
-         "  saturated_permille       clipped pixels that raise SATURATED, per mille\n";
+         "  saturated_permille       clipped pixels that raise SATURATED, per mille\n"
+         "  baseline_correction, gyro_offset_learning   estimator options, 0 | 1\n"
+         "  still_distance_m         image change below which the rig counts as still, m\n"
+         "  still_min_us             stillness before the gyro offset is taken, us\n"
+         "  lens_cam0, lens_cam1     lens correction of each column edge (width + 1 values,\n"
+         "                           rad, comma-separated, added to the pinhole edges) or none\n";
 }
 
-std::string format_config(const proto::DeviceConfig& c) {
+std::string format_setup(const DeviceSetup& d) {
+  const proto::DeviceConfig& c = d.config;
   std::string s;
   auto line = [&s](const char* k, const std::string& v) { s += std::string(k) + "=" + v + "\n"; };
   line("width", std::to_string(c.width));
@@ -127,16 +162,26 @@ std::string format_config(const proto::DeviceConfig& c) {
   line("gyro_gap_us", std::to_string(c.gyro_gap_us));
   line("low_texture", num_q(c.low_texture, 28));
   line("saturated_permille", std::to_string(c.saturated_permille));
+  line("baseline_correction", (c.options & kOptionBaselineCorrection) ? "1" : "0");
+  line("gyro_offset_learning", (c.options & kOptionGyroOffsetLearning) ? "1" : "0");
+  line("still_distance_m", num_q(c.still_distance, fx::kLengthFrac));
+  line("still_min_us", std::to_string(c.still_min_us));
+  line("lens_cam0", format_lens(d.lens[0]));
+  line("lens_cam1", format_lens(d.lens[1]));
   return s;
 }
 
-void apply_setting(proto::DeviceConfig& c, const std::string& kv) {
+void apply_setting(DeviceSetup& d, const std::string& kv) {
+  proto::DeviceConfig& c = d.config;
   const size_t eq = kv.find('=');
   if (eq == std::string::npos || eq == 0) {
     throw std::runtime_error("\"" + kv + "\" is not KEY=VALUE (keys: `lumavel-read config --help`)");
   }
   const std::string k = kv.substr(0, eq), v = kv.substr(eq + 1);
   const long long u32 = 4294967295LL;
+  auto option = [&](uint8_t b) {
+    c.options = static_cast<uint8_t>(flag(k, v) ? (c.options | b) : (c.options & ~b));
+  };
   auto bit = [&](uint8_t b) {
     const bool on = parse_int(k, v, 0, 1) != 0;
     c.orientation = static_cast<uint8_t>(on ? (c.orientation | b) : (c.orientation & ~b));
@@ -163,7 +208,54 @@ void apply_setting(proto::DeviceConfig& c, const std::string& kv) {
   else if (k == "gyro_gap_us") c.gyro_gap_us = static_cast<uint32_t>(parse_int(k, v, 0, u32));
   else if (k == "low_texture") c.low_texture = to_q(k, v, 28);
   else if (k == "saturated_permille") c.saturated_permille = static_cast<uint16_t>(parse_int(k, v, 0, 65535));
+  else if (k == "baseline_correction") option(kOptionBaselineCorrection);
+  else if (k == "gyro_offset_learning") option(kOptionGyroOffsetLearning);
+  else if (k == "still_distance_m") c.still_distance = to_q(k, v, fx::kLengthFrac);
+  else if (k == "still_min_us") c.still_min_us = static_cast<uint32_t>(parse_int(k, v, 0, u32));
+  else if (k == "lens_cam0") d.lens[0] = parse_lens(k, v);
+  else if (k == "lens_cam1") d.lens[1] = parse_lens(k, v);
   else throw std::runtime_error("unknown configuration key \"" + k + "\"; keys:\n" + config_keys_help());
 }
 
-}  // namespace lumavel::read
+void apply_settings_text(DeviceSetup& s, const std::string& text, const std::string& name) {
+  std::istringstream in(text);
+  std::string line;
+  for (size_t n = 1; std::getline(in, line); ++n) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    const size_t start = line.find_first_not_of(" \t");
+    if (start == std::string::npos || line[start] == '#') continue;
+    try {
+      apply_setting(s, line.substr(start));
+    } catch (const std::runtime_error& e) {
+      throw std::runtime_error(name + ":" + std::to_string(n) + ": " + e.what());
+    }
+  }
+}
+
+void apply_settings_file(DeviceSetup& s, const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(path + ": cannot open configuration file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  apply_settings_text(s, text.str(), path);
+}
+
+void seal_lens(DeviceSetup& s) {
+  proto::DeviceConfig& c = s.config;
+  const size_t want = size_t{c.width} + 1;
+  c.lens = 0;
+  const EdgeOffsetQ15* tables[2] = {nullptr, nullptr};
+  for (int i = 0; i < 2; ++i) {
+    if (s.lens[i].empty()) continue;
+    if (s.lens[i].size() != want) {
+      throw std::runtime_error("lens_cam" + std::to_string(i) + ": " + std::to_string(s.lens[i].size()) +
+                               " values, but width " + std::to_string(c.width) + " needs " + std::to_string(want) +
+                               " (one per column edge)");
+    }
+    c.lens = static_cast<uint8_t>(c.lens | (1u << i));
+    tables[i] = s.lens[i].data();
+  }
+  c.lens_crc = proto::lens_crc(tables, c.lens, static_cast<uint16_t>(want));
+}
+
+}  // namespace lumavel::host
