@@ -4,7 +4,13 @@
 // reads the device info and configuration, sets a new configuration, sends a
 // corrupt one, asks for the configuration through the mailbox, and three
 // frames are missing (an overrun). Deterministic for a given seed.
-//   lumavel_make_test_stream <out.lvs> <width> <height> <frames> [seed]
+// With --lens, both cameras see the wall through barrel lenses
+// (barrel_lens.hpp) and, at 7/10 of the frames (after every read-back, so
+// that only the estimates can tell the modes apart), the host uploads lens
+// tables and a configuration naming them, then gets the device info:
+// `barrel` tables that describe the lenses, or `flat` ones (all zero: a
+// pinhole, what a device that ignored the tables would run).
+//   lumavel_make_test_stream <out.lvs> <width> <height> <frames> [seed] [--lens barrel|flat]
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -16,6 +22,7 @@
 #include "lumavel/protocol/device_config.hpp"
 #include "lumavel/protocol/reports.hpp"
 #include "lumavel/stream/format.hpp"
+#include "barrel_lens.hpp"
 #include "stream_writer.hpp"
 #include "lumavel/stream/run_stream.hpp"
 
@@ -36,14 +43,16 @@ double texture(double x) {
          20 * std::sin(2 * kPi * x / 0.051);
 }
 
-void render(double t, double cam_x, int w, int h, uint32_t& rng, uint8_t* px) {
+// k1: the camera's radial distortion (0: pinhole).
+void render(double t, double cam_x, double k1, int w, int h, uint32_t& rng, uint8_t* px) {
   const double th = heading(t);
   const double fu = 34.64 * w / 40.0;
   const double cu = (w - 1) / 2.0;
   const double cx = distance(t) + cam_x * std::cos(th);
   const double cy = cam_x * std::sin(th);
   for (int u = 0; u < w; ++u) {
-    const double dir = th + kPi / 2 - std::atan((u - cu) / fu);  // looking left, upright
+    const double x_u = k1 == 0 ? (u - cu) / fu : lumavel::stream::undistort((u - cu) / fu, k1);
+    const double dir = th + kPi / 2 - std::atan(x_u);  // looking left, upright
     const double r = (kWall - cy) / std::sin(dir);
     const double x = cx + r * std::cos(dir);
     for (int v = 0; v < h; ++v) {
@@ -67,11 +76,39 @@ void get_feature(lumavel::stream::StreamWriter& o, uint8_t id) {
   o.u8(id);
 }
 
+enum class Lens { kNone, kBarrel, kFlat };
+
+// The lens sets (barrel_lens.hpp) for a w x h stream: tables of the device's
+// pinhole geometry in the configuration it will run.
+std::vector<std::vector<uint8_t>> lens_sets(Lens lens, int w, int h) {
+  lumavel::protocol::DeviceConfig c = lumavel::stream::defaults_for(static_cast<uint16_t>(w), static_cast<uint16_t>(h));
+  c.tau_us = 250000;
+  lumavel::EstimatorConfig geometry{};
+  if (!lumavel::protocol::to_estimator_config(c, geometry)) std::abort();
+  std::vector<lumavel::EdgeOffsetQ15> tables[2];
+  for (int i = 0; i < 2; ++i) {
+    tables[i] = lens == Lens::kBarrel
+                    ? lumavel::stream::barrel_edge_offsets(geometry.cam[i], c.width, lumavel::stream::kBarrelK1[i])
+                    : std::vector<lumavel::EdgeOffsetQ15>(static_cast<size_t>(w) + 1, 0);
+  }
+  return lumavel::stream::lens_upload_reports(c, tables);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  Lens lens = Lens::kNone;
+  if (argc >= 7 && std::string(argv[argc - 2]) == "--lens") {
+    const std::string mode = argv[argc - 1];
+    lens = mode == "barrel" ? Lens::kBarrel : mode == "flat" ? Lens::kFlat : Lens::kNone;
+    if (lens == Lens::kNone) {
+      std::fprintf(stderr, "%s: --lens takes barrel or flat, not '%s'\n", argv[0], mode.c_str());
+      return 1;
+    }
+    argc -= 2;
+  }
   if (argc < 5 || argc > 6) {
-    std::fprintf(stderr, "usage: %s <out.lvs> <width> <height> <frames> [seed]\n", argv[0]);
+    std::fprintf(stderr, "usage: %s <out.lvs> <width> <height> <frames> [seed] [--lens barrel|flat]\n", argv[0]);
     return 1;
   }
   const int w = std::atoi(argv[2]);
@@ -82,6 +119,10 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "%s: width 16..2048, height 1..2048, frames >= 1\n", argv[0]);
     return 1;
   }
+  if (lens != Lens::kNone && w + 1 > 255) {  // report 0x05 numbers edges with one byte
+    std::fprintf(stderr, "%s: --lens needs width <= 254\n", argv[0]);
+    return 1;
+  }
   lumavel::stream::StreamWriter o{std::fopen(argv[1], "wb")};
   if (o.f == nullptr) {
     std::fprintf(stderr, "%s: cannot open for writing\n", argv[1]);
@@ -90,6 +131,10 @@ int main(int argc, char** argv) {
   o.header(w, h);
 
   std::vector<uint8_t> px(static_cast<size_t>(w) * static_cast<size_t>(h));
+  const double k1[2] = {lens == Lens::kNone ? 0.0 : lumavel::stream::kBarrelK1[0],
+                        lens == Lens::kNone ? 0.0 : lumavel::stream::kBarrelK1[1]};
+  std::vector<std::vector<uint8_t>> pending;  // lens sets still to send
+  size_t next_set = 0;
   int gyro_k = 0;
   for (int k = 0; k < frames; ++k) {
     const double t = 0.1 + k * kFramePeriod;
@@ -114,14 +159,25 @@ int main(int argc, char** argv) {
       set_feature(o, mailbox, m);
       get_feature(o, lumavel::protocol::kReportDeviceInfo);
     }
+    if (lens != Lens::kNone && k == frames * 7 / 10) pending = lens_sets(lens, w, h);
+    // The device serves at most StreamReader::kRequestQueue requests per
+    // frame: 3 sets per frame, then the info get after the last one.
+    for (int n = 0; n < 3 && next_set < pending.size(); ++n, ++next_set) {
+      set_feature(o, pending[next_set].data(), pending[next_set].size());
+      if (next_set + 1 == pending.size()) get_feature(o, lumavel::protocol::kReportDeviceInfo);
+    }
     const bool dropped = k >= frames * 6 / 10 && k < frames * 6 / 10 + 3;
     if (dropped) continue;
     o.u8(lumavel::stream::kTagFrame);
     o.u64(static_cast<uint64_t>(std::llround(t * 1e9)));
-    render(t, 0.0, w, h, rng, px.data());
+    render(t, 0.0, k1[0], w, h, rng, px.data());
     o.bytes(px.data(), px.size());
-    render(t, kBaseline, w, h, rng, px.data());
+    render(t, kBaseline, k1[1], w, h, rng, px.data());
     o.bytes(px.data(), px.size());
+  }
+  if (next_set < pending.size() || (lens != Lens::kNone && pending.empty())) {
+    std::fprintf(stderr, "%s: %d frames are too few to upload the lens\n", argv[0], frames);
+    return 1;
   }
   if (std::fclose(o.f) != 0) {
     std::fprintf(stderr, "%s: write failed\n", argv[1]);

@@ -47,7 +47,7 @@ __attribute__((noipa)) lumavel::Estimate do_step(uint64_t t_ns, uint16_t w) {
   return estimator.step(lumavel::FramePair{t_ns, {frame[0], frame[1]}, w});
 }
 __attribute__((noipa)) void do_report(const lumavel::Estimate& e, uint16_t seq) {
-  lumavel::protocol::Measurement m{seq, e.t_ns, e.frame_index, e.v, e.distance, e.heading, e.status, 0};
+  lumavel::protocol::Measurement m{seq, e.t_ns, e.frame_index, e.v, e.distance, e.heading, e.status, 0, e.gyro_offset};
   lumavel::protocol::encode_measurement(m, report, sizeof report);
 }
 __attribute__((noipa)) void do_nothing() {}

@@ -5,6 +5,11 @@
 #   cmake -DGEN=<lumavel_make_test_stream> -DHOST_APP=<lumavel_app_host> -DELF=<image>
 #         -DMACHINE=mps2-an385 -DWORK=<dir> -DWIDTH=40 -DHEIGHT=30 -DFRAMES=200 -P qemu_matches_host.cmake
 #   (or -DRENDER=... -DSCENARIO=<yaml> -DCONVERT=... instead of -DGEN, FRAMES = a lower bound)
+# -DLENS=ON (with GEN): the stream uploads barrel lens tables (GEN --lens
+# barrel). The host also runs the same stream with all-zero tables (--lens
+# flat: what a device that ignored the tables would report); the test then
+# requires the lens configuration accepted, and the estimates with the lens
+# to differ from those without it, on the host and on the target.
 find_program(QEMU qemu-system-arm)
 if(NOT QEMU)
   message("SKIP: qemu-system-arm not found (apt-get install --no-install-recommends qemu-system-arm)")
@@ -30,6 +35,10 @@ if(SCENARIO)
   run("render" ${RENDER} render ${SCENARIO} ${WORK}/rec --resolution ${WIDTH}x${HEIGHT} --duration 2
       --seed 3 --quiet --force)
   run("convert" ${CONVERT} ${WORK}/rec ${stream} ${WIDTH} ${HEIGHT})
+elseif(LENS)
+  run("generate" ${GEN} ${stream} ${WIDTH} ${HEIGHT} ${FRAMES} 7 --lens barrel)
+  run("generate flat lens" ${GEN} ${WORK}/flat.lvs ${WIDTH} ${HEIGHT} ${FRAMES} 7 --lens flat)
+  run("host app, flat lens" ${HOST_APP} ${WORK}/flat.lvs ${WORK}/host_flat.lvr)
 else()
   run("generate" ${GEN} ${stream} ${WIDTH} ${HEIGHT} ${FRAMES} 7)
 endif()
@@ -47,3 +56,51 @@ if(NOT rc EQUAL 0)
   message(FATAL_ERROR "QEMU (${MACHINE}) and host report streams differ")
 endif()
 message("QEMU (${MACHINE}) and host report streams are bit-identical (${host_size} bytes)")
+
+if(LENS)
+  include(${CMAKE_CURRENT_LIST_DIR}/report_file.cmake)
+  read_report_file(${WORK}/host.lvr host)
+  read_report_file(${WORK}/host_flat.lvr flat)
+  read_report_file(${WORK}/qemu.lvr qemu)
+  # The info get after the lens configuration: accepted (config_status 0), set by the host (source 2).
+  foreach(run host flat)
+    if(NOT ${run}_INFO)
+      message(FATAL_ERROR "${run}: no device-info reply after the lens configuration")
+    endif()
+    report_byte(${${run}_INFO} 30 status)
+    report_byte(${${run}_INFO} 31 source)
+    if(NOT status EQUAL 0 OR NOT source EQUAL 2)
+      message(FATAL_ERROR "${run}: lens configuration not applied (config_status ${status}, source ${source})")
+    endif()
+  endforeach()
+  # Same frames, same requests: the estimates may differ only once the tables apply.
+  list(LENGTH host_MEASUREMENTS count)
+  set(same_before 0)
+  set(differ 0)
+  set(qemu_differ 0)
+  math(EXPR last "${count} - 1")
+  foreach(i RANGE ${last})
+    list(GET host_MEASUREMENTS ${i} a)
+    list(GET flat_MEASUREMENTS ${i} b)
+    list(GET qemu_MEASUREMENTS ${i} q)
+    if(NOT a STREQUAL b)
+      math(EXPR differ "${differ} + 1")
+    elseif(differ EQUAL 0)
+      math(EXPR same_before "${same_before} + 1")
+    endif()
+    if(NOT q STREQUAL b)
+      math(EXPR qemu_differ "${qemu_differ} + 1")
+    endif()
+  endforeach()
+  math(EXPR upload_frame "${FRAMES} * 7 / 10 - 3")  # 3 dropped frames before it
+  if(same_before LESS upload_frame)
+    message(FATAL_ERROR "estimates with and without the lens differ from report ${same_before} on, "
+                        "before the lens upload (report ${upload_frame})")
+  endif()
+  if(differ EQUAL 0 OR qemu_differ EQUAL 0)
+    message(FATAL_ERROR "the lens changed no estimate (host: ${differ}, QEMU: ${qemu_differ} of ${count} "
+                        "reports differ from the flat-lens run)")
+  endif()
+  message("lens: ${differ} of ${count} measurement reports differ from the flat-lens run "
+          "(host; QEMU ${qemu_differ}), the first ${same_before} are identical")
+endif()
