@@ -7,6 +7,7 @@
 #include <memory>
 #include <vector>
 
+#include "app_env.hpp"
 #include "fake_hal.hpp"
 #include "lumavel/app/app.hpp"
 #include "lumavel/protocol/device_config.hpp"
@@ -17,19 +18,6 @@ using lumavel::app::RunState;
 namespace protocol = lumavel::protocol;
 
 namespace {
-
-constexpr uint64_t kPeriod = 16667000;  // default frame_period_us, in ns
-
-struct Env {
-  fake::Camera camera;
-  fake::Gyro gyro;
-  fake::Clock clock;
-  fake::Link link;
-  fake::Store store;
-  fake::Watchdog watchdog;
-  App app{lumavel::app::Hal{camera, gyro, clock, link, store, watchdog},
-          lumavel::app::Board{"test-board", protocol::default_device_config()}};
-};
 
 std::vector<uint8_t> encoded(const protocol::DeviceConfig& c) {
   std::vector<uint8_t> b(protocol::kConfigSize);

@@ -13,6 +13,7 @@
 #include <memory>
 #include <vector>
 
+#include "app_env.hpp"
 #include "fake_hal.hpp"
 #include "lumavel/app/app.hpp"
 #include "lumavel/core/estimator.hpp"
@@ -27,19 +28,6 @@ namespace protocol = lumavel::protocol;
 namespace host = lumavel::host;
 
 namespace {
-
-constexpr uint64_t kPeriod = 16667000;
-
-struct Env {
-  fake::Camera camera;
-  fake::Gyro gyro;
-  fake::Clock clock;
-  fake::Link link;
-  fake::Store store;
-  fake::Watchdog watchdog;
-  App app{lumavel::app::Hal{camera, gyro, clock, link, store, watchdog},
-          lumavel::app::Board{"test-board", protocol::default_device_config()}};
-};
 
 // Barrel-distorted edges (k1 = -0.14) of one camera of the device's
 // default 40-column configuration, as the host derives them from sensor.yaml.
