@@ -128,7 +128,7 @@ TEST(Cli, RunWritesCsvSummaryAndPlot) {
     fixture::write_text(dir.path() + "/copy.csv", r.out);
     return fixture::read_lines(dir.path() + "/copy.csv");
   }();
-  STRCMP_EQUAL("timestamp_ns,v_xb_mps,distance_m,heading_rad,status,v_direct_mps,texture", lines[0].c_str());
+  STRCMP_EQUAL("timestamp_ns,v_xb_mps,distance_m,heading_rad,status,gyro_offset_radps,v_direct_mps,texture", lines[0].c_str());
   LONGS_EQUAL(o.frames, lines.size());  // header + 11 frames (one dropped)
   CHECK(lines[1].rfind("1000000000,", 0) == 0);
   CHECK(lines[4].rfind("1030000000,", 0) == 0);
@@ -179,4 +179,39 @@ TEST(Cli, WorkingSizeLargerThanTheSensorIsRefused) {
   const Outcome r = sim("run rec --width 64");
   LONGS_EQUAL(1, r.code);
   STRCMP_CONTAINS("cam0/sensor.yaml: cannot bin the 40x30 sensor up to the working resolution 64x30", r.err.c_str());
+}
+
+// The fixture's cameras carry a small radial-tangential distortion: corrected
+// by default, read as pinhole with --ignore-distortion (other estimates).
+TEST(Cli, IgnoreDistortionIsSaidAndChangesTheEstimates) {
+  rec();
+  Outcome r = sim("run --help");
+  STRCMP_CONTAINS("--ignore-distortion", r.out.c_str());
+  r = sim("run rec -o corrected.csv");
+  LONGS_EQUAL(0, r.code);
+  STRCMP_CONTAINS("lens: radial-tangential distortion corrected", r.err.c_str());
+  r = sim("run rec -o ignored.csv --ignore-distortion");
+  LONGS_EQUAL(0, r.code);
+  STRCMP_CONTAINS("lens: distortion IGNORED (--ignore-distortion)", r.err.c_str());
+  const std::vector<std::string> a = fixture::read_lines(dir.path() + "/corrected.csv"),
+                                 b = fixture::read_lines(dir.path() + "/ignored.csv");
+  LONGS_EQUAL(a.size(), b.size());
+  CHECK(a != b);
+}
+
+// The summary ends with the gyro offset: the fixture's images move on every
+// frame, so no standstill is seen and none is learned; the option says so.
+TEST(Cli, GyroOffsetLearningIsReportedAndCanBeTurnedOff) {
+  rec();
+  Outcome r = sim("run --help");
+  STRCMP_CONTAINS("--no-gyro-offset-learning", r.out.c_str());
+  r = sim("run rec -o learning.csv");
+  LONGS_EQUAL(0, r.code);
+  STRCMP_CONTAINS("gyro offset: not learned (no standstill seen)", r.err.c_str());
+  r = sim("run rec -o raw.csv --no-gyro-offset-learning");
+  LONGS_EQUAL(0, r.code);
+  STRCMP_CONTAINS("gyro offset: not learned (--no-gyro-offset-learning)", r.err.c_str());
+  r = sim("run rec -o quiet.csv --quiet --no-gyro-offset-learning");
+  LONGS_EQUAL(0, r.code);
+  STRCMP_EQUAL("", r.err.c_str());
 }

@@ -115,14 +115,14 @@ TEST(RunRecording, CsvHasTheHeaderAndOneRowPerFrame) {
   run_recording(rec, derive_settings(rec, {}), engine, 2, f);
   std::fclose(f);
   const std::vector<std::string> lines = fixture::read_lines(out);
-  STRCMP_EQUAL("timestamp_ns,v_xb_mps,distance_m,heading_rad,status,v_direct_mps,texture", lines[0].c_str());
+  STRCMP_EQUAL("timestamp_ns,v_xb_mps,distance_m,heading_rad,status,gyro_offset_radps,v_direct_mps,texture", lines[0].c_str());
   LONGS_EQUAL(o.frames + 1, lines.size());
   const std::string& row = lines[3];
   STRCMP_CONTAINS("1020000000,", row.c_str());
   STRCMP_CONTAINS(",9,", row.c_str());  // status as an integer
   size_t commas = 0;
   for (char c : row) commas += c == ',';
-  LONGS_EQUAL(6, commas);
+  LONGS_EQUAL(7, commas);
 }
 
 TEST(RunRecording, BothEnginesRunARecording) {

@@ -9,8 +9,10 @@
 #include <memory>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "cli_args.hpp"
+#include "lumavel/core/status.hpp"
 #include "output_file.hpp"
 #include "lumavel/host/file_config_store.hpp"
 #include "lumavel/host/hid_link.hpp"
@@ -26,7 +28,7 @@ const char* const kRunHelp =
     "\n"
     "Runs the estimator over the recording REC (EuRoC/ASL layout, REC or REC/mav0)\n"
     "and writes the estimates CSV (docs/estimates-csv.md): one row per frame pair,\n"
-    "  timestamp_ns,v_xb_mps,distance_m,heading_rad,status,v_direct_mps,texture\n"
+    "  timestamp_ns,v_xb_mps,distance_m,heading_rad,status,gyro_offset_radps,v_direct_mps,texture\n"
     "\n"
     "options:\n"
     "  --engine fixed|float   estimator engine: the firmware's fixed-point core (default)\n"
@@ -34,6 +36,14 @@ const char* const kRunHelp =
     "  -o, --output FILE      write the CSV to FILE instead of standard output ('-')\n"
     "  --width W              working resolution width, 16..160 (default 40)\n"
     "  --height H             working resolution height, 1..128 (default 30; 1 for line-scan input)\n"
+    "  --ignore-distortion    estimate as if the lenses were pinhole, ignoring the\n"
+    "                         distortion_model and coefficients of sensor.yaml (by\n"
+    "                         default the column angles come from the undistorted\n"
+    "                         geometry); for comparisons or doubtful calibrations\n"
+    "  --no-gyro-offset-learning\n"
+    "                         take the gyro as it reads: do not learn its zero-rate\n"
+    "                         offset while the images show the rig standing still\n"
+    "                         (learned by default); for comparisons\n"
     "  --plot FILE.svg        plot file (default: REC_estimates.svg next to the -o file,\n"
     "                         or in the current folder); written when the recording has\n"
     "                         ground truth or when --plot is given\n"
@@ -53,9 +63,11 @@ const char* const kRunHelp =
     "  --quiet                no progress and no summary on standard error\n"
     "  -h, --help             this help\n"
     "\n"
-    "With ground truth (state_groundtruth_estimate0), a summary goes to standard error:\n"
-    "frames, gaps, the paper's error E (eq. 22), L1 and RMS errors, worst and mean error\n"
-    "after the first second.\n"
+    "A summary goes to standard error: frames, gaps, whether the lens distortion was\n"
+    "corrected or ignored (when sensor.yaml has one or --ignore-distortion is given) and,\n"
+    "with ground truth (state_groundtruth_estimate0), the paper's error E (eq. 22), L1\n"
+    "and RMS errors, worst and mean error after the first second; last, the gyro\n"
+    "zero-rate offset learned at standstill (or why none was).\n"
     "\n"
     "exit status: 0 done, 1 bad recording or failure (the message names the file and\n"
     "line or frame), 2 usage error\n";
@@ -72,6 +84,8 @@ struct RunArgs {
   WorkingSize size;
   bool quiet = false;
   bool help = false;
+  bool ignore_distortion = false;
+  bool gyro_offset_learning = true;
 };
 
 RunArgs parse(int argc, char** argv) {
@@ -83,6 +97,10 @@ RunArgs parse(int argc, char** argv) {
       a.help = true;
     } else if (arg == "--quiet" || arg == "-q") {
       a.quiet = true;
+    } else if (arg == "--ignore-distortion") {
+      a.ignore_distortion = true;
+    } else if (arg == "--no-gyro-offset-learning") {
+      a.gyro_offset_learning = false;
     } else if (option_value(argc, argv, i, "--engine", v)) {
       if (v != "fixed" && v != "float") throw UsageError("--engine must be 'fixed' or 'float', not '" + v + "'");
       a.engine = v;
@@ -157,6 +175,28 @@ std::string gaps_line(const Recording& rec) {
   return buf;
 }
 
+const char* lens_line(bool distorted, bool ignored) {
+  if (!distorted) return "lens: no distortion in sensor.yaml (--ignore-distortion changes nothing)";
+  return ignored ? "lens: distortion IGNORED (--ignore-distortion): columns read as pinhole"
+                 : "lens: radial-tangential distortion corrected (column angles from sensor.yaml)";
+}
+
+// The offset the run ended with, and for how long the images showed the rig
+// still (status bit kStatusStill: the offset was being learned).
+constexpr double kDegPerRad = 57.29577951308232;
+
+std::string gyro_offset_line(bool learning, const std::vector<TrackPoint>& track, double last_offset) {
+  if (!learning) return "gyro offset: not learned (--no-gyro-offset-learning)";
+  double still_s = 0;
+  for (size_t i = 1; i < track.size(); ++i)
+    if (track[i].status & kStatusStill) still_s += static_cast<double>(track[i].t_ns - track[i - 1].t_ns) * 1e-9;
+  if (still_s == 0) return "gyro offset: not learned (no standstill seen)";
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "gyro offset learned: %+.4f deg/s (%+.3e rad/s), rig still for %.2f s",
+                last_offset * kDegPerRad, last_offset, still_s);
+  return buf;
+}
+
 volatile std::sig_atomic_t g_stop_linger = 0;
 void on_linger_signal(int) { g_stop_linger = 1; }
 
@@ -181,6 +221,8 @@ int run(const RunArgs& a) {
   RunOptions options;
   options.engine = parse_engine_kind(a.engine);
   options.size = a.size;
+  options.ignore_distortion = a.ignore_distortion;
+  options.gyro_offset_learning = a.gyro_offset_learning;
 
   std::unique_ptr<HidSender> hid;
   if (!a.hid.empty()) {
@@ -191,8 +233,14 @@ int run(const RunArgs& a) {
     hid = std::make_unique<HidSender>(open_host_link(a.hid), hid_options, std::move(store));
     const EstimatorSettings settings = derive_settings(rec, options.size);
     hid->set_resolution(static_cast<uint16_t>(settings.width), static_cast<uint16_t>(settings.height));
-    options.sink = [&hid](const EngineEstimate& e) { hid->send(e.t_ns, e.v, e.distance, e.heading, e.status); };
+    options.sink = [&hid](const EngineEstimate& e) { hid->send(e.t_ns, e.v, e.distance, e.heading, e.status, e.gyro_offset); };
   }
+
+  double last_offset = 0;  // for the summary
+  options.sink = [&last_offset, hid_sink = options.sink](const EngineEstimate& e) {
+    last_offset = e.gyro_offset;
+    if (hid_sink) hid_sink(e);
+  };
 
   OutputFile out(a.output);
   static char out_buf[1 << 16];
@@ -228,8 +276,11 @@ int run(const RunArgs& a) {
                  result.width, result.height,
                  result.wall_s > 0 ? static_cast<double>(result.frames) / result.wall_s : 0.0);
     std::fprintf(stderr, "%s\n", gaps_line(rec).c_str());
+    if (result.lens_distorted || a.ignore_distortion)
+      std::fprintf(stderr, "%s\n", lens_line(result.lens_distorted, a.ignore_distortion));
     if (result.has_truth) std::fprintf(stderr, "%s\n", format_metrics(compute_metrics(result.track)).c_str());
     else std::fprintf(stderr, "no ground truth (state_groundtruth_estimate0/data.csv): no error figures\n");
+    std::fprintf(stderr, "%s\n", gyro_offset_line(a.gyro_offset_learning, result.track, last_offset).c_str());
     if (want_plot) std::fprintf(stderr, "plot: %s\n", plot.c_str());
     if (hid) std::fprintf(stderr, "hid: %u reports sent through %s, %u overruns\n", hid->sent(), a.hid.c_str(), hid->overruns());
     if (hid && a.hid_linger_s != 0) {

@@ -26,6 +26,8 @@ void write_row(std::FILE* f, const EngineEstimate& e, uint64_t t_ns) {
   *p++ = ',';
   p = std::to_chars(p, end, e.status).ptr;
   *p++ = ',';
+  p = put_double(p, end, e.gyro_offset);
+  *p++ = ',';
   p = put_double(p, end, e.v_direct);
   *p++ = ',';
   p = put_double(p, end, e.texture);
@@ -35,13 +37,25 @@ void write_row(std::FILE* f, const EngineEstimate& e, uint64_t t_ns) {
 
 }  // namespace
 
-const char* const kEstimatesHeader = "timestamp_ns,v_xb_mps,distance_m,heading_rad,status,v_direct_mps,texture";
+const char* const kEstimatesHeader = "timestamp_ns,v_xb_mps,distance_m,heading_rad,status,gyro_offset_radps,v_direct_mps,texture";
+
+bool has_lens_distortion(const EstimatorSettings& s) { return !s.cam[0].edges.empty() || !s.cam[1].edges.empty(); }
+
+EstimatorSettings run_settings(const Recording& rec, const RunOptions& options) {
+  EstimatorSettings s = derive_settings(rec, options.size);
+  if (options.ignore_distortion)
+    for (CameraModel& c : s.cam) c.edges.clear();  // no edge table: the engines use the pinhole columns
+  s.gyro_offset_learning = options.gyro_offset_learning;
+  return s;
+}
 
 RunResult run_recording(const Recording& rec, const RunOptions& options, std::FILE* csv,
                         const std::function<void(size_t, size_t)>& progress) {
-  const EstimatorSettings settings = derive_settings(rec, options.size);
+  const EstimatorSettings settings = run_settings(rec, options);
   std::unique_ptr<Engine> engine = make_engine(options.engine, settings);
-  return run_recording(rec, settings, *engine, options.decode_threads, csv, progress, options.sink);
+  RunResult r = run_recording(rec, settings, *engine, options.decode_threads, csv, progress, options.sink);
+  r.lens_distorted = has_lens_distortion(derive_settings(rec, options.size));
+  return r;
 }
 
 RunResult run_recording(const Recording& rec, const EstimatorSettings& settings, Engine& engine,

@@ -22,6 +22,12 @@ struct RunOptions {
   WorkingSize size;
   int decode_threads = 2;
   EstimateSink sink;  // optional
+  // Estimate as if the lenses were pinhole, whatever sensor.yaml says about
+  // distortion: for comparisons, or for real data with doubtful coefficients.
+  bool ignore_distortion = false;
+  // Learn the gyro's zero-rate offset while the images show the rig still
+  // (the default); off: the gyro is taken as is (run --no-gyro-offset-learning).
+  bool gyro_offset_learning = true;
 };
 
 struct RunResult {
@@ -29,11 +35,20 @@ struct RunResult {
   bool has_truth = false;
   size_t frames = 0;
   int width = 0, height = 0;      // working resolution used
+  bool lens_distorted = false;    // sensor.yaml gives a distortion (corrected unless ignored)
   double wall_s = 0;              // time spent in the frame loop
 };
 
 // Header of the estimates CSV (docs/estimates-csv.md).
 extern const char* const kEstimatesHeader;
+
+// The settings `run_recording` uses for `rec`: derive_settings, with the
+// distortion tables dropped when options.ignore_distortion is set and the
+// gyro offset learning as options.gyro_offset_learning says.
+EstimatorSettings run_settings(const Recording& rec, const RunOptions& options);
+
+// Whether either camera has a column-edge table from a lens distortion.
+bool has_lens_distortion(const EstimatorSettings& s);
 
 // Runs the engine over `rec`. For each frame pair, pushes every gyro sample up
 // to and including the first one at or after the frame time, then steps.
