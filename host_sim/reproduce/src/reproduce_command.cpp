@@ -17,6 +17,7 @@
 #include "lumavel/host/run_recording.hpp"
 #include "lumavel/host/track_plot.hpp"
 #include "results_markdown.hpp"
+#include "sections.hpp"
 #include "studies.hpp"
 
 #ifndef LUMAVEL_SOURCE_DIR
@@ -35,34 +36,46 @@ struct Options {
   std::string doc = "docs/results.md";
   std::string scenarios = std::string(LUMAVEL_SOURCE_DIR) + "/host_sim/scenarios";
   int threads = 2;
+  std::string only;       // run only the studies whose title contains this
+  std::string slider_data = std::string(LUMAVEL_SOURCE_DIR) + "/../shared/data/slider_depth";
+  bool doc_given = false;
 };
 
 void usage(std::FILE* f) {
   std::fputs(
-      "usage: lumavel-sim reproduce [--quick] [--out DIR] [--doc FILE] [--scenarios DIR] [--threads N]\n"
+      "usage: lumavel-sim reproduce [--quick] [--only TEXT] [--out DIR] [--doc FILE] [--scenarios DIR] [--threads N]\n"
       "\n"
       "Renders the paper's studies (Section IV-B simulations, Table I resolutions,\n"
       "Table II exposures, the trolley, a turning run, untextured/dark/dropped\n"
-      "frames), runs the fixed-point and the double-precision engines on each and\n"
-      "writes the paper's figures and ours side by side to FILE, with plots in a\n"
-      "folder next to it. Renders are cached in DIR between runs.\n"
+      "frames, lens distortion, gyro offset), runs the fixed-point and the double-precision\n"
+      "engines on each and writes the paper's figures and ours side by side to FILE,\n"
+      "with plots in a folder next to it; then calibrates the misalignment of\n"
+      "rendered rigs and runs the real slider_depth recording when its data is\n"
+      "there. Renders are cached in DIR between runs.\n"
       "\n"
       "  --quick          a small subset (40x30 and below, short runs) for CI\n"
+      "  --only TEXT      only the studies whose title contains TEXT (e.g. Lens); the\n"
+      "                   page then goes to DIR/results.md unless --doc is given\n"
       "  --out DIR        recordings and plots (default out/reproduce)\n"
       "  --doc FILE       results page (default docs/results.md; plots in docs/results/)\n"
       "  --scenarios DIR  scenario folder (default the source tree's host_sim/scenarios)\n"
-      "  --threads N      render threads (default 2)\n",
+      "  --threads N      render threads (default 2)\n"
+      "  --slider-data D  the slider_depth dataset (default ../shared/data/slider_depth next to\n"
+      "                   the source tree; its section is skipped when it is missing)\n",
       f);
 }
 
 // Renders a case unless an identical render is already cached; adds the
 // render time to *render_s, or counts the reuse in *reused.
 std::string render_case(const Case& c, const Options& o, double* render_s, int* reused) {
-  const std::string dir = o.out + "/rec/" + c.id;
+  const LensVariant lens = lens_variant(c);
+  const GyroVariant gyro = gyro_variant(c);  // its render_id is lens's for other cases
+  const std::string dir = o.out + "/rec/" + gyro.render_id;
   std::ostringstream stamp;
   const std::string scen = o.scenarios + "/" + c.scenario;
   stamp << scen << " " << fs::last_write_time(scen).time_since_epoch().count() << " " << c.render_w << "x"
-        << c.render_h << " e" << c.exposure << " d" << c.duration << "\n";
+        << c.render_h << " e" << c.exposure << " d" << c.duration << (lens.no_lens ? " no-lens" : "")
+        << (gyro.no_offset ? " no-gyro-offset" : "") << "\n";
   const std::string stamp_path = dir + "/.render-stamp";
   {
     std::ifstream in(stamp_path);
@@ -81,6 +94,8 @@ std::string render_case(const Case& c, const Options& o, double* render_s, int* 
   ov.exposure_frames = c.exposure;
   ov.duration_s = c.duration;
   render::apply_overrides(s, ov);
+  if (lens.no_lens) s.camera.distortion = {};  // same seed and motion, pinhole camera
+  if (gyro.no_offset) s.imu.gyro_bias_z = 0;    // same seed, images and gyro noise
   render::RenderOptions ro;
   ro.threads = o.threads;
   const render::RenderSummary sum = render::render_recording(s, dir, ro);
@@ -90,9 +105,27 @@ std::string render_case(const Case& c, const Options& o, double* render_s, int* 
   return dir;
 }
 
+// The paper's studies, the lens and the gyro offset studies, filtered by --only.
+std::vector<Study> selected_studies(const Options& o) {
+  std::vector<Study> all = paper_studies(o.quick), kept;
+  all.push_back(lens_study(o.quick));
+  all.push_back(gyro_offset_study(o.quick));
+  for (const Study& st : all)
+    if (st.title.find(o.only) != std::string::npos) kept.push_back(st);
+  return kept;
+}
+
+// The sections after the studies (sections.hpp), filtered by --only.
+std::vector<Section (*)(const SectionContext&)> selected_sections(const Options& o) {
+  std::vector<Section (*)(const SectionContext&)> kept;
+  if (std::string(kCalibrationTitle).find(o.only) != std::string::npos) kept.push_back(calibration_section);
+  if (std::string(kRealRecordingTitle).find(o.only) != std::string::npos) kept.push_back(real_recording_section);
+  return kept;
+}
+
 int run(const Options& o) {
   const auto t0 = std::chrono::steady_clock::now();
-  const std::vector<Study> studies = paper_studies(o.quick);
+  const std::vector<Study> studies = selected_studies(o);
   const fs::path doc(o.doc);
   const fs::path plot_dir = doc.parent_path() / doc.stem();
   fs::create_directories(plot_dir);
@@ -113,6 +146,10 @@ int run(const Options& o) {
           RunOptions ro;
           ro.engine = kind;
           ro.size = {w.width, w.height};
+          ro.ignore_distortion = lens_variant(c).ignore_distortion;
+          ro.gyro_offset_learning = gyro_variant(c).learning;
+          double gyro_offset = 0;  // as learned by the end of the run
+          ro.sink = [&gyro_offset](const EngineEstimate& e) { gyro_offset = e.gyro_offset; };
           const RunResult r = run_recording(rec, ro, nullptr);
           CaseResult cr;
           cr.c = c;
@@ -124,6 +161,8 @@ int run(const Options& o) {
           cr.rms_after = rms_after(r.track);
           cr.gaps = rec.gaps;
           cr.run_s = r.wall_s;
+          cr.gyro_offset = gyro_offset;
+          cr.track = r.track;
           if (kind == EngineKind::kFixed && &w == &c.work.front()) {
             const std::string name = c.id + "_" + std::to_string(w.width) + "x" + std::to_string(w.height) + ".svg";
             write_track_svg((plot_dir / name).string(), r.track,
@@ -136,10 +175,13 @@ int run(const Options& o) {
     }
     results.push_back(sr);
   }
+  std::vector<Section> sections;
+  const SectionContext ctx{o.out, o.scenarios, o.slider_data, o.threads, o.quick};
+  for (auto* make : selected_sections(o)) sections.push_back(make(ctx));
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::ofstream out(o.doc);
   if (!out) throw std::runtime_error(o.doc + ": cannot write");
-  out << results_markdown(results, o.quick, secs, render_s, reused);
+  out << results_markdown(results, sections, o.quick, secs, render_s, reused);
   std::fprintf(stderr, "wrote %s (%.0f s)\n", o.doc.c_str(), secs);
   return 0;
 }
@@ -162,10 +204,15 @@ int reproduce_main(int argc, char** argv) {
         o.quick = true;
       } else if (a == "--out") {
         o.out = value("--out");
+      } else if (a == "--only") {
+        o.only = value("--only");
       } else if (a == "--doc") {
         o.doc = value("--doc");
+        o.doc_given = true;
       } else if (a == "--scenarios") {
         o.scenarios = value("--scenarios");
+      } else if (a == "--slider-data") {
+        o.slider_data = value("--slider-data");
       } else if (a == "--threads") {
         o.threads = std::stoi(value("--threads"));
         if (o.threads < 1 || o.threads > 64) throw std::invalid_argument("--threads must be 1..64");
@@ -177,6 +224,12 @@ int reproduce_main(int argc, char** argv) {
       return 2;
     }
   }
+  if (selected_studies(o).empty() && selected_sections(o).empty()) {
+    std::fprintf(stderr, "lumavel-sim reproduce: --only '%s': no study title contains it\n(see lumavel-sim reproduce --help)\n",
+                 o.only.c_str());
+    return 2;
+  }
+  if (!o.only.empty() && !o.doc_given) o.doc = o.out + "/results.md";  // a partial page never replaces the full one
   try {
     return run(o);
   } catch (const std::exception& e) {

@@ -95,8 +95,8 @@ FlagBehaviour flag_behaviour(const std::vector<TrackPoint>& track) {
   return b;
 }
 
-std::string results_markdown(const std::vector<StudyResult>& results, bool quick, double seconds,
-                             double render_seconds, int renders_reused) {
+std::string results_markdown(const std::vector<StudyResult>& results, const std::vector<Section>& sections,
+                             bool quick, double seconds, double render_seconds, int renders_reused) {
   std::ostringstream md, body;
   std::vector<Target> targets;
   const EngineKind F = EngineKind::kFixed, D = EngineKind::kFloat;
@@ -104,6 +104,16 @@ std::string results_markdown(const std::vector<StudyResult>& results, bool quick
   for (const StudyResult& sr : results) {
     const Study& st = sr.study;
     body << "\n## " << st.title << "\n\n" << st.what << "\n\n";
+    if (st.metric == "lens") {
+      body << lens_table(sr);
+      continue;
+    }
+    if (st.metric == "gyro") {
+      std::vector<SectionTarget> gyro_targets;
+      body << gyro_offset_table(sr, gyro_targets);
+      for (const SectionTarget& t : gyro_targets) targets.push_back({t.what, t.target, t.measured, t.met});
+      continue;
+    }
     if (st.metric == "flags") {
       body << "| case | frames | low texture | no light | frame gaps flagged | gaps in the recording | restarts | longest hold | V drift while held | recovery |\n"
               "|---|---|---|---|---|---|---|---|---|---|\n";
@@ -184,6 +194,10 @@ std::string results_markdown(const std::vector<StudyResult>& results, bool quick
         "of |V_est - V| / |V|, samples with |V| < 0.05 m/s left out), from the first frame on: "
         "convergence is included, as in the paper.\n\n";
   if (quick) md << "**Quick subset** (CI): resolutions of 40x30 and below, shortened runs. Run without `--quick` for the full tables.\n\n";
+  for (const Section& sec : sections) {
+    body << sec.markdown;
+    for (const SectionTarget& t : sec.targets) targets.push_back({t.what, t.target, t.measured, t.met});
+  }
   int met = 0;
   for (const Target& t : targets) met += t.met;
   md << "## Targets\n\n" << met << " of " << targets.size() << " targets met.\n\n| target | wanted | measured (fixed engine) | |\n|---|---|---|---|\n";

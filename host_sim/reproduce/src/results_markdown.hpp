@@ -6,6 +6,7 @@
 #include "lumavel/host/engine.hpp"
 #include "lumavel/host/recording.hpp"
 #include "lumavel/host/run_metrics.hpp"
+#include "sections.hpp"
 #include "studies.hpp"
 
 namespace lumavel::host::reproduce {
@@ -35,6 +36,8 @@ struct CaseResult {
   double bias_percent = 0;  // mean signed error after 1 s over mean |V| after 1 s
   double rms_after = 0;     // RMS error after 1 s, m/s
   std::string plot;  // relative to the results page, fixed engine only
+  double gyro_offset = 0;         // learned zero-rate offset at the end of the run, rad/s
+  std::vector<TrackPoint> track;  // the estimates, for studies with their own figures
 };
 
 struct StudyResult {
@@ -42,7 +45,15 @@ struct StudyResult {
   std::vector<CaseResult> cases;
 };
 
-std::string results_markdown(const std::vector<StudyResult>& results, bool quick, double seconds,
-                             double render_seconds, int renders_reused);
+// The lens study's table (study_lens.cpp): per scene and working size, the
+// undistorted, corrected and ignored runs side by side.
+std::string lens_table(const StudyResult& sr);
+
+// The gyro offset study's table (study_gyro_offset.cpp); adds its targets.
+std::string gyro_offset_table(const StudyResult& sr, std::vector<SectionTarget>& targets);
+
+// `sections` (sections.hpp) follow the studies; their targets join the table.
+std::string results_markdown(const std::vector<StudyResult>& results, const std::vector<Section>& sections,
+                             bool quick, double seconds, double render_seconds, int renders_reused);
 
 }  // namespace lumavel::host::reproduce

@@ -24,10 +24,37 @@ struct Case {
 struct Study {
   std::string title;
   std::string what;       // one paragraph: what is compared and how
-  std::string metric;     // "E", "worst", "L1", "flags"
+  std::string metric;     // "E", "worst", "L1", "flags", "lens", "gyro"
   std::vector<Case> cases;
 };
 
 std::vector<Study> paper_studies(bool quick);
+
+// Lens distortion: undistorted vs corrected vs ignored (study_lens.cpp).
+Study lens_study(bool quick);
+
+// How a case of the lens study is rendered and run: with the scenario's lens
+// removed, as if the lens were pinhole (run --ignore-distortion), and the
+// folder of the render it shares. Other cases: no_lens and
+// ignore_distortion false, render_id the case id.
+struct LensVariant {
+  bool no_lens = false, ignore_distortion = false;
+  std::string render_id;
+};
+LensVariant lens_variant(const Case& c);
+
+// Gyro zero-rate offset: learned vs not, with and without an offset
+// (study_gyro_offset.cpp).
+Study gyro_offset_study(bool quick);
+
+// How a case of the gyro offset study is rendered and run: with the
+// scenario's gyro offset removed, with offset learning (off: run
+// --no-gyro-offset-learning), and the folder of the render it shares. Other
+// cases: no_offset false, learning true, render_id lens_variant's.
+struct GyroVariant {
+  bool no_offset = false, learning = true;
+  std::string render_id;
+};
+GyroVariant gyro_variant(const Case& c);
 
 }  // namespace lumavel::host::reproduce

@@ -1,0 +1,123 @@
+// Lens distortion study: each lens scenario rendered once through its lens
+// and once without it (same seed), the lens render run twice (corrected, and
+// read as pinhole with --ignore-distortion), at the product's 40x30 and at
+// 160x120.
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "results_markdown.hpp"
+#include "studies.hpp"
+
+namespace lumavel::host::reproduce {
+namespace {
+
+struct LensScene {
+  const char* id;
+  const char* file;
+  const char* label;
+};
+
+// distorted_wall: straight pass, hfov 50, mild lens (the correction cannot
+// show there: the geometry cancels for a pure translation); the wide_lens
+// scenes: hfov 90, strong barrel, turning hard.
+const LensScene kScenes[] = {
+    {"lens_slalom", "wide_lens_slalom.yaml", "slalom, hfov 90, k1 -0.22"},
+    {"lens_spin", "wide_lens_spin.yaml", "spin in place, hfov 90, k1 -0.22"},
+    {"lens_wall", "distorted_wall.yaml", "straight wall pass, hfov 50, k1 -0.14"},
+};
+
+// Case ids: scene id + variant suffix.
+constexpr const char* kUndistorted = "_undistorted";
+constexpr const char* kCorrected = "_corrected";
+constexpr const char* kIgnored = "_ignored";
+
+bool ends_with(const std::string& s, const std::string& end) {
+  return s.size() >= end.size() && s.compare(s.size() - end.size(), end.size(), end) == 0;
+}
+
+bool is_lens_case(const std::string& id) {
+  for (const LensScene& s : kScenes)
+    if (id.rfind(s.id, 0) == 0) return true;
+  return false;
+}
+
+std::string cell(const CaseResult* c, bool e_defined) {
+  if (!c) return "-";
+  const RunMetrics& m = c->metrics;
+  char b[96];
+  if (e_defined)
+    std::snprintf(b, sizeof b, "%.2f %% / %.3f / %+.3f", m.e_percent, m.worst_after, m.mean_after);
+  else
+    std::snprintf(b, sizeof b, "- / %.3f / %+.3f", m.worst_after, m.mean_after);
+  return b;
+}
+
+}  // namespace
+
+Study lens_study(bool quick) {
+  Study st{"Lens distortion",
+           "Each scene rendered at 160x120 (quick: 80x60, 3 s) through its radial-tangential lens and, from the same seed, "
+           "without it; the lens render is run with the correction (column angles from the undistorted "
+           "geometry, the default) and read as pinhole (`run --ignore-distortion`). Cells: E (eq. 22) / "
+           "worst |err| after 1 s (m/s) / mean error after 1 s (m/s), fixed engine; E is undefined for "
+           "the spin in place (V = 1 mm/s). Read as pinhole, a lens leaves a spurious V in the rotation "
+           "term, proportional to the yaw rate.",
+           "lens",
+           {}};
+  const std::vector<WorkSize> work = quick ? std::vector<WorkSize>{{40, 30}} : std::vector<WorkSize>{{40, 30}, {160, 120}};
+  // Quick (CI): 3 s rendered at 80x60, enough for 40x30 (the lens render is the slow part).
+  const double duration = quick ? 3 : -1;
+  const int rw = quick ? 80 : 160, rh = quick ? 60 : 120;
+  for (const LensScene& s : kScenes) {
+    const std::string id = s.id;
+    st.cases.push_back({id + kUndistorted, s.file, rw, rh, -1, duration, work, s.label, -1});
+    st.cases.push_back({id + kCorrected, s.file, rw, rh, -1, duration, work, s.label, -1});
+    st.cases.push_back({id + kIgnored, s.file, rw, rh, -1, duration, work, s.label, -1});
+  }
+  return st;
+}
+
+LensVariant lens_variant(const Case& c) {
+  LensVariant v;
+  v.render_id = c.id;
+  if (!is_lens_case(c.id)) return v;
+  v.no_lens = ends_with(c.id, kUndistorted);
+  if (ends_with(c.id, kIgnored)) {
+    v.ignore_distortion = true;  // the corrected case's frames, estimated as pinhole
+    v.render_id = c.id.substr(0, c.id.size() - std::string(kIgnored).size()) + kCorrected;
+  }
+  return v;
+}
+
+std::string lens_table(const StudyResult& sr) {
+  auto find = [&](const std::string& id, const WorkSize& w, EngineKind k) -> const CaseResult* {
+    for (const CaseResult& c : sr.cases)
+      if (c.c.id == id && c.work.width == w.width && c.work.height == w.height && c.engine == k) return &c;
+    return nullptr;
+  };
+  std::ostringstream md;
+  md << "| scene | working | undistorted | distorted, corrected | distorted, ignored | float: corrected E |\n"
+        "|---|---|---|---|---|---|\n";
+  for (const LensScene& s : kScenes) {
+    const std::string id = s.id;
+    for (const CaseResult& c : sr.cases)
+      if (c.c.id == id + kCorrected && c.engine == EngineKind::kFixed) {
+        const WorkSize w = c.work;
+        const bool e_defined = c.metrics.samples > c.metrics.excluded_slow;
+        const CaseResult* fc = find(id + kCorrected, w, EngineKind::kFloat);
+        char fe[32] = "-";
+        if (fc && e_defined) std::snprintf(fe, sizeof fe, "%.2f %%", fc->metrics.e_percent);
+        md << "| " << s.label << " | " << w.width << "x" << w.height << " | "
+           << cell(find(id + kUndistorted, w, EngineKind::kFixed), e_defined) << " | " << cell(&c, e_defined)
+           << " | " << cell(find(id + kIgnored, w, EngineKind::kFixed), e_defined) << " | " << fe << " |\n";
+      }
+  }
+  md << "\nPlots (fixed engine, first working size):";
+  for (const CaseResult& c : sr.cases)
+    if (c.engine == EngineKind::kFixed && !c.plot.empty()) md << " [" << c.c.id << "](" << c.plot << ")";
+  md << "\n";
+  return md.str();
+}
+
+}  // namespace lumavel::host::reproduce
