@@ -12,10 +12,10 @@
 
 #include "lumavel/core/status.hpp"
 #include "lumavel/host/recording.hpp"
-#include "lumavel/host/render/recording_renderer.hpp"
 #include "lumavel/host/render/scenario_loader.hpp"
 #include "lumavel/host/run_recording.hpp"
 #include "lumavel/host/track_plot.hpp"
+#include "render_cache.hpp"
 #include "results_markdown.hpp"
 #include "sections.hpp"
 #include "studies.hpp"
@@ -71,37 +71,25 @@ std::string render_case(const Case& c, const Options& o, double* render_s, int* 
   const LensVariant lens = lens_variant(c);
   const GyroVariant gyro = gyro_variant(c);  // its render_id is lens's for other cases
   const std::string dir = o.out + "/rec/" + gyro.render_id;
-  std::ostringstream stamp;
-  const std::string scen = o.scenarios + "/" + c.scenario;
-  stamp << scen << " " << fs::last_write_time(scen).time_since_epoch().count() << " " << c.render_w << "x"
-        << c.render_h << " e" << c.exposure << " d" << c.duration << (lens.no_lens ? " no-lens" : "")
-        << (gyro.no_offset ? " no-gyro-offset" : "") << "\n";
-  const std::string stamp_path = dir + "/.render-stamp";
-  {
-    std::ifstream in(stamp_path);
-    std::stringstream have;
-    have << in.rdbuf();
-    if (in && have.str() == stamp.str()) {
-      ++*reused;
-      return dir;
-    }
+  std::ostringstream key;
+  key << c.render_w << "x" << c.render_h << " e" << c.exposure << " d" << c.duration
+      << (lens.no_lens ? " no-lens" : "") << (gyro.no_offset ? " no-gyro-offset" : "");
+  const CachedRender r = render_cached(o.scenarios + "/" + c.scenario, dir, key.str(), [&](render::Scenario& s) {
+    render::Overrides ov;
+    ov.width = c.render_w;
+    ov.height = c.render_h;
+    ov.exposure_frames = c.exposure;
+    ov.duration_s = c.duration;
+    render::apply_overrides(s, ov);
+    if (lens.no_lens) s.camera.distortion = {};  // same seed and motion, pinhole camera
+    if (gyro.no_offset) s.imu.gyro_bias_z = 0;    // same seed, images and gyro noise
+  }, o.threads);
+  if (r.reused) {
+    ++*reused;
+  } else {
+    std::fprintf(stderr, "    rendered %d frame pairs in %.1f s\n", r.frames, r.seconds);
+    *render_s += r.seconds;
   }
-  fs::remove_all(dir);
-  render::Scenario s = render::load_scenario(scen);
-  render::Overrides ov;
-  ov.width = c.render_w;
-  ov.height = c.render_h;
-  ov.exposure_frames = c.exposure;
-  ov.duration_s = c.duration;
-  render::apply_overrides(s, ov);
-  if (lens.no_lens) s.camera.distortion = {};  // same seed and motion, pinhole camera
-  if (gyro.no_offset) s.imu.gyro_bias_z = 0;    // same seed, images and gyro noise
-  render::RenderOptions ro;
-  ro.threads = o.threads;
-  const render::RenderSummary sum = render::render_recording(s, dir, ro);
-  std::fprintf(stderr, "    rendered %d frame pairs in %.1f s\n", sum.frames, sum.seconds);
-  *render_s += sum.seconds;
-  std::ofstream(stamp_path) << stamp.str();
   return dir;
 }
 

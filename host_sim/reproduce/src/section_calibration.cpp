@@ -3,20 +3,16 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <sstream>
 
 #include "lumavel/host/calibrate.hpp"
 #include "lumavel/host/recording.hpp"
 #include "lumavel/host/rig.hpp"
-#include "lumavel/host/render/recording_renderer.hpp"
 #include "lumavel/host/render/scenario_loader.hpp"
+#include "render_cache.hpp"
 #include "sections.hpp"
 
 namespace lumavel::host::reproduce {
-namespace fs = std::filesystem;
-
 const char* const kCalibrationTitle = "Misalignment self-calibration";
 
 namespace {
@@ -30,33 +26,18 @@ struct CalibrationCase {
 };
 
 // Renders at 160x120 unless an identical render is cached.
-std::string render_cached(const SectionContext& ctx, const CalibrationCase& c, double* seconds) {
+std::string render_case(const SectionContext& ctx, const CalibrationCase& c, double* seconds) {
   const std::string dir = ctx.out + "/rec/calib_" + c.id;
-  const std::string scen = ctx.scenarios + "/" + c.scenario;
-  std::ostringstream stamp;
-  stamp << scen << " " << fs::last_write_time(scen).time_since_epoch().count() << " 160x120 d" << c.duration_s
-        << " m" << c.misalignment_deg << "\n";
-  const std::string stamp_path = dir + "/.render-stamp";
-  {
-    std::ifstream in(stamp_path);
-    std::stringstream have;
-    have << in.rdbuf();
-    if (in && have.str() == stamp.str()) return dir;
-  }
-  const auto t0 = std::chrono::steady_clock::now();
-  fs::remove_all(dir);
-  render::Scenario s = render::load_scenario(scen);
-  render::Overrides ov;
-  ov.width = 160;
-  ov.height = 120;
-  ov.duration_s = c.duration_s;
-  render::apply_overrides(s, ov);
-  if (!std::isnan(c.misalignment_deg)) s.camera.misalignment_deg = c.misalignment_deg;
-  render::RenderOptions ro;
-  ro.threads = ctx.threads;
-  render::render_recording(s, dir, ro);
-  std::ofstream(stamp_path) << stamp.str();
-  *seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::ostringstream key;
+  key << "160x120 d" << c.duration_s << " m" << c.misalignment_deg;
+  *seconds += render_cached(ctx.scenarios + "/" + c.scenario, dir, key.str(), [&](render::Scenario& s) {
+                render::Overrides ov;
+                ov.width = 160;
+                ov.height = 120;
+                ov.duration_s = c.duration_s;
+                render::apply_overrides(s, ov);
+                if (!std::isnan(c.misalignment_deg)) s.camera.misalignment_deg = c.misalignment_deg;
+              }, ctx.threads).seconds;
   return dir;
 }
 
@@ -92,7 +73,7 @@ Section calibration_section(const SectionContext& ctx) {
   double render_s = 0, calib_s = 0;
   for (const CalibrationCase& c : cases) {
     std::fprintf(stderr, "[calibrate] %s\n", c.id);
-    const std::string dir = render_cached(ctx, c, &render_s);
+    const std::string dir = render_case(ctx, c, &render_s);
     const Recording rec = load_recording(dir);
     const auto t0 = std::chrono::steady_clock::now();
     const Calibration cal = calibrate_misalignment(rec);

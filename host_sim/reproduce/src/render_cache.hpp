@@ -1,0 +1,23 @@
+// Renders kept between reproduce runs: a render is redone only when its
+// scenario file or the way it is rendered changed.
+#pragma once
+#include <functional>
+#include <string>
+
+#include "lumavel/host/render/scenario.hpp"
+
+namespace lumavel::host::reproduce {
+
+struct CachedRender {
+  bool reused = false;
+  int frames = 0;        // frame pairs rendered (0 when reused)
+  double seconds = 0;    // time spent rendering (0 when reused)
+};
+
+// Loads `scenario_path`, applies `tweak` and renders it into `dir`, unless
+// `dir` holds a render stamped with the same scenario file (path and
+// modification time) and `key`, which must name everything `tweak` does.
+CachedRender render_cached(const std::string& scenario_path, const std::string& dir, const std::string& key,
+                           const std::function<void(render::Scenario&)>& tweak, int threads);
+
+}  // namespace lumavel::host::reproduce
