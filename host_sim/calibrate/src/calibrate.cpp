@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
-#include <cstdio>
-#include <cstdlib>
 #include <stdexcept>
 #include <vector>
 
@@ -73,15 +71,24 @@ Profile resample(const std::vector<double>& sums, const std::vector<double>& yaw
   return p;
 }
 
+// Hann weights over n grid points: a tapered window keeps features that
+// cross its edge from pulling its shift.
+std::vector<double> hann(int n) {
+  std::vector<double> w(static_cast<size_t>(n));
+  for (int k = 0; k < n; ++k) {
+    const double s = std::sin(M_PI * (k + 0.5) / n);
+    w[static_cast<size_t>(k)] = s * s;
+  }
+  return w;
+}
+
 // Normalised correlation of a[i] with b[i + shift] for i in [lo, hi),
-// optionally weighted by a taper over that range.
-double correlation(const Profile& a, const Profile& b, int shift, int lo, int hi, bool taper) {
+// weighted by taper[i - lo] when a taper is given (hi - lo values).
+double correlation(const Profile& a, const Profile& b, int shift, int lo, int hi, const std::vector<double>* taper) {
   double sw = 0, sa = 0, sb = 0, saa = 0, sbb = 0, sab = 0;
-  const double len = hi - lo;
   for (int i = lo; i < hi; ++i) {
     const double x = a.v[static_cast<size_t>(i)], y = b.v[static_cast<size_t>(i + shift)];
-    // A Hann taper keeps features that cross a window's edge from pulling its shift.
-    const double s = std::sin(M_PI * (i - lo + 0.5) / len), w = taper ? s * s : 1.0;
+    const double w = taper ? (*taper)[static_cast<size_t>(i - lo)] : 1.0;
     sw += w;
     sa += w * x;
     sb += w * y;
@@ -103,7 +110,8 @@ struct Match {
 // With a stride, coarse to fine: over the whole view the correlation peak
 // is about a column (10 grid steps) wide, so every third shift finds it and
 // its neighbourhood refines it. Windows need every shift (side lobes).
-Match best_shift(const Profile& a, const Profile& b, int lo, int hi, int s_lo, int s_hi, int stride, bool taper) {
+Match best_shift(const Profile& a, const Profile& b, int lo, int hi, int s_lo, int s_hi, int stride,
+                 const std::vector<double>* taper) {
   std::vector<double> c(static_cast<size_t>(s_hi - s_lo + 1), -2.0);
   auto at = [&](int s) -> double& { return c[static_cast<size_t>(s - s_lo)]; };
   int best = s_lo;
@@ -130,7 +138,7 @@ Match best_shift(const Profile& a, const Profile& b, int lo, int hi, int s_lo, i
 }
 
 Match best_shift(const Profile& a, const Profile& b, int max_shift) {
-  return best_shift(a, b, max_shift, static_cast<int>(a.v.size()) - max_shift, -max_shift, max_shift, 3, false);
+  return best_shift(a, b, max_shift, static_cast<int>(a.v.size()) - max_shift, -max_shift, max_shift, 3, nullptr);
 }
 
 // Where the two cameras stood at the same place the images differ by a pure
@@ -280,12 +288,13 @@ Calibration calibrate_misalignment(const Recording& rec, const CalibrationOption
   const int lo_all = max_shift, hi_all = g.n - max_shift;
   // Tapered windows overlapping by half.
   const int window_step = (hi_all - lo_all) / (kWindows + 1), window_len = 2 * window_step;
+  const std::vector<double> taper = hann(window_len);
   const int window_slack = 30;
   Calibration out;
   std::vector<FrameShifts> shifts;
   for (size_t i = 0; i + 1 < p0.size(); ++i) {
     // Standing still: every lag matches; such frames say nothing.
-    if (correlation(p0[i], p0[i + 1], 0, lo_all, hi_all, false) > 0.99995) continue;
+    if (correlation(p0[i], p0[i + 1], 0, lo_all, hi_all, nullptr) > 0.99995) continue;
     ++out.candidates;
     // Whole-view registration at every lag and both directions: cam1 at i
     // with cam0 at j (moving towards cam1's side), or cam0 at i with cam1 at
@@ -319,7 +328,7 @@ Calibration calibrate_misalignment(const Recording& rec, const CalibrationOption
       for (int w = 0; w < kWindows; ++w) {
         const int w_lo = lo_all + w * window_step, w_hi = w_lo + window_len;
         const Match wm = best_shift(before, after, w_lo, w_hi, std::max(centre - window_slack, -w_lo),
-                                    std::min(centre + window_slack, g.n - w_hi), 1, true);
+                                    std::min(centre + window_slack, g.n - w_hi), 1, &taper);
         // The misalignment this window says, were the translation zero
         // (NaN: the window did not register, e.g. near clutter or no texture).
         const bool ok = wm.interior && wm.corr >= opt.min_correlation;
