@@ -1,7 +1,7 @@
 #include "lumavel/protocol/device_config.hpp"
 
 #include "lumavel/core/limits.hpp"
-#include "lumavel/protocol/crc.hpp"
+#include "frame.hpp"
 #include "wire.hpp"
 
 namespace lumavel::protocol {
@@ -20,7 +20,6 @@ constexpr AngleQ28 kHalfPi = 421657428;        // pi/2
 constexpr ValueQ28 kMaxLowTexture = ValueQ28{1} << fx::kValueFrac;
 constexpr size_t kKernelOffset = 36;
 constexpr size_t kKernelStride = 5;
-constexpr size_t kCrcAt = kConfigSize - 2;
 constexpr LengthQ24 kMinStillDistance = 1678;     // 0.1 mm (the estimator's own limits)
 constexpr LengthQ24 kMaxStillDistance = 1677722;  // 10 cm
 
@@ -129,18 +128,14 @@ size_t encode_config(const DeviceConfig& c, uint8_t* buf, size_t cap) {
   put_u32(buf, 93, c.still_min_us);
   put_u8(buf, 97, c.lens);
   put_u16(buf, 98, c.lens_crc);
-  put_u16(buf, kCrcAt, crc16(buf, kCrcAt));
+  frame::seal(buf, kConfigSize);
   return kConfigSize;
 }
 
 namespace {
 
 ReportError check_frame(const uint8_t* buf, size_t len) {
-  if (buf == nullptr || len < kConfigSize) return ReportError::kShort;
-  if (buf[0] != kReportConfig) return ReportError::kWrongId;
-  if (buf[1] != kConfigVersion) return ReportError::kBadVersion;
-  if (crc16(buf, kCrcAt) != get_u16(buf, kCrcAt)) return ReportError::kBadCrc;
-  return ReportError::kOk;
+  return frame::check(buf, len, kReportConfig, kConfigVersion, kConfigSize, true).error;
 }
 
 DeviceConfig unpack(const uint8_t* buf) {
@@ -274,7 +269,7 @@ size_t encode_stored_config(const DeviceConfig& c, const LensTables& lens, uint8
   for (int cam = 0; cam < 2; ++cam) {
     if ((c.lens & (1u << cam)) == 0) continue;
     if (lens.filled[cam] != c.width + 1u) return 0;
-    for (uint16_t u = 0; u <= c.width; ++u, off += 2) put_u16(buf, off, static_cast<uint16_t>(lens.offsets[cam][u]));
+    for (uint16_t u = 0; u <= c.width; ++u, off += 2) put_i16(buf, off, lens.offsets[cam][u]);
   }
   return n;
 }
@@ -289,10 +284,7 @@ ConfigField decode_stored_config(const uint8_t* buf, size_t len, DeviceConfig& c
   size_t off = kConfigSize;
   for (int cam = 0; cam < 2; ++cam) {
     if ((d.lens & (1u << cam)) == 0) continue;
-    for (uint16_t u = 0; u <= d.width; ++u, off += 2) {
-      const uint16_t raw = get_u16(buf, off);
-      lens.offsets[cam][u] = static_cast<EdgeOffsetQ15>(raw <= 0x7FFF ? int32_t{raw} : int32_t{raw} - 65536);
-    }
+    for (uint16_t u = 0; u <= d.width; ++u, off += 2) lens.offsets[cam][u] = get_i16(buf, off);
     lens.filled[cam] = static_cast<uint16_t>(d.width + 1u);
   }
   const EdgeOffsetQ15* const tables[2] = {lens.offsets[0], lens.offsets[1]};

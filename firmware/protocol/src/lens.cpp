@@ -1,18 +1,19 @@
 #include "lumavel/protocol/lens.hpp"
 
 #include "lumavel/protocol/crc.hpp"
+#include "frame.hpp"
 #include "wire.hpp"
 
 namespace lumavel::protocol {
 
 using namespace wire;
+using frame::fail;
 
 namespace {
 constexpr size_t kOffsets = 5;
 constexpr size_t kCrcAt = kLensChunkSize - 2;
 static_assert(kOffsets + 2 * kLensChunkEdges == kCrcAt, "lens report layout");
 
-DecodeResult fail(ReportError e, const char* field = "") { return DecodeResult{e, field}; }
 }  // namespace
 
 size_t encode_lens_chunk(const LensChunk& c, uint8_t* buf, size_t cap) {
@@ -24,17 +25,15 @@ size_t encode_lens_chunk(const LensChunk& c, uint8_t* buf, size_t cap) {
   put_u8(buf, 4, c.count);
   for (size_t i = 0; i < kLensChunkEdges; ++i) {
     const EdgeOffsetQ15 v = i < c.count ? c.offsets[i] : EdgeOffsetQ15{0};
-    put_u16(buf, kOffsets + 2 * i, static_cast<uint16_t>(v));
+    put_i16(buf, kOffsets + 2 * i, v);
   }
-  put_u16(buf, kCrcAt, crc16(buf, kCrcAt));
+  frame::seal(buf, kLensChunkSize);
   return kLensChunkSize;
 }
 
 DecodeResult decode_lens_chunk(const uint8_t* buf, size_t len, LensChunk& out) {
-  if (buf == nullptr || len < kLensChunkSize) return fail(ReportError::kShort);
-  if (buf[0] != kReportLens) return fail(ReportError::kWrongId);
-  if (buf[1] != kProtocolVersion) return fail(ReportError::kBadVersion);
-  if (crc16(buf, kCrcAt) != get_u16(buf, kCrcAt)) return fail(ReportError::kBadCrc);
+  const DecodeResult r = frame::check(buf, len, kReportLens, kProtocolVersion, kLensChunkSize, true);
+  if (!r.ok()) return r;
   LensChunk c{};
   c.camera = buf[2];
   c.first = buf[3];
@@ -43,10 +42,8 @@ DecodeResult decode_lens_chunk(const uint8_t* buf, size_t len, LensChunk& out) {
   if (c.count > kLensChunkEdges) return fail(ReportError::kOutOfRange, "count");
   if (size_t{c.first} + c.count > 255) return fail(ReportError::kOutOfRange, "first");
   for (size_t i = 0; i < kLensChunkEdges; ++i) {
-    const uint16_t raw = get_u16(buf, kOffsets + 2 * i);
-    if (i >= c.count && raw != 0) return fail(ReportError::kOutOfRange, "padding");
-    // Two's complement reinterpretation without implementation-defined casts.
-    c.offsets[i] = static_cast<EdgeOffsetQ15>(raw <= 0x7FFF ? int32_t{raw} : int32_t{raw} - 65536);
+    c.offsets[i] = get_i16(buf, kOffsets + 2 * i);
+    if (i >= c.count && c.offsets[i] != 0) return fail(ReportError::kOutOfRange, "padding");
   }
   out = c;
   return fail(ReportError::kOk);

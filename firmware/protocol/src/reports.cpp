@@ -1,29 +1,18 @@
 #include "lumavel/protocol/reports.hpp"
 
-#include "lumavel/protocol/crc.hpp"
+#include "frame.hpp"
 #include "wire.hpp"
 
 namespace lumavel::protocol {
 
 using namespace wire;
+using frame::fail;
+using frame::seal;
 
 namespace {
 
 // Feature reports the mailbox can send.
 bool mailbox_id(uint8_t id) { return id == kReportDeviceInfo || id == kReportConfig || id == kReportLens; }
-
-DecodeResult fail(ReportError e, const char* field = "") { return DecodeResult{e, field}; }
-
-// Length, ID, version and (when crc) CRC checks shared by every report.
-DecodeResult check_frame(const uint8_t* buf, size_t len, uint8_t id, size_t size, bool crc) {
-  if (buf == nullptr || len < size) return fail(ReportError::kShort);
-  if (buf[0] != id) return fail(ReportError::kWrongId);
-  if (buf[1] != kProtocolVersion) return fail(ReportError::kBadVersion);
-  if (crc && crc16(buf, size - 2) != get_u16(buf, size - 2)) return fail(ReportError::kBadCrc);
-  return fail(ReportError::kOk);
-}
-
-void seal(uint8_t* buf, size_t size) { put_u16(buf, size - 2, crc16(buf, size - 2)); }
 
 }  // namespace
 
@@ -57,7 +46,7 @@ size_t encode_measurement(const Measurement& m, uint8_t* buf, size_t cap) {
 }
 
 DecodeResult decode_measurement(const uint8_t* buf, size_t len, Measurement& out) {
-  const DecodeResult r = check_frame(buf, len, kReportMeasurement, kMeasurementSize, true);
+  const DecodeResult r = frame::check(buf, len, kReportMeasurement, kProtocolVersion, kMeasurementSize, true);
   if (!r.ok()) return r;
   Measurement m{};
   m.seq = get_u16(buf, 2);
@@ -98,7 +87,7 @@ size_t encode_device_info(const DeviceInfo& d, uint8_t* buf, size_t cap) {
 }
 
 DecodeResult decode_device_info(const uint8_t* buf, size_t len, DeviceInfo& out) {
-  const DecodeResult r = check_frame(buf, len, kReportDeviceInfo, kDeviceInfoSize, true);
+  const DecodeResult r = frame::check(buf, len, kReportDeviceInfo, kProtocolVersion, kDeviceInfoSize, true);
   if (!r.ok()) return r;
   DeviceInfo d{};
   d.fw_major = buf[2];
@@ -142,7 +131,7 @@ size_t encode_mailbox_request(uint8_t report_id, uint8_t* buf, size_t cap) {
 }
 
 DecodeResult decode_mailbox_request(const uint8_t* buf, size_t len, uint8_t& report_id) {
-  const DecodeResult r = check_frame(buf, len, kReportMailbox, kMailboxSize, false);
+  const DecodeResult r = frame::check(buf, len, kReportMailbox, kProtocolVersion, kMailboxSize, false);
   if (!r.ok()) return r;
   if (!mailbox_id(buf[2])) return fail(ReportError::kOutOfRange, "report_id");
   if (buf[3] != 0) return fail(ReportError::kOutOfRange, "reserved");
@@ -164,7 +153,7 @@ size_t encode_feature_chunk(const FeatureChunk& c, uint8_t* buf, size_t cap) {
 }
 
 DecodeResult decode_feature_chunk(const uint8_t* buf, size_t len, FeatureChunk& out) {
-  const DecodeResult r = check_frame(buf, len, kReportFeatureChunk, kFeatureChunkSize, false);
+  const DecodeResult r = frame::check(buf, len, kReportFeatureChunk, kProtocolVersion, kFeatureChunkSize, false);
   if (!r.ok()) return r;
   FeatureChunk c{};
   c.report_id = buf[2];
