@@ -137,6 +137,8 @@ TEST(RecordingContract, CommandLine) {
   CHECK_EQUAL(2, run_render({"render"}));
   CHECK_EQUAL(2, run_render({"render", "a.yaml", "out", "--bogus"}));
   CHECK_EQUAL(2, run_render({"render", "a.yaml", "out", "--resolution", "40by30"}));
+  CHECK_EQUAL(2, run_render({"render", "a.yaml", "out", "--camera-mismatch", "twins"}));
+  CHECK_EQUAL(2, run_render({"render", "a.yaml", "out", "--camera-mismatch"}));
   CHECK_EQUAL(1, run_render({"render", "/nonexistent/a.yaml", temp_dir("cli_missing")}));
   // A real scenario, shortened and shrunk through the overrides.
   const std::string out = temp_dir("cli_render");
@@ -148,6 +150,13 @@ TEST(RecordingContract, CommandLine) {
   // An existing recording is not overwritten without --force.
   CHECK_EQUAL(1, run_render({"render", scen, out, "--resolution", "20x15", "--duration", "0.1", "--quiet"}));
   CHECK_EQUAL(0, run_render({"render", scen, out, "--resolution", "20x15", "--duration", "0.1", "--quiet", "--force"}));
+  // A photometric preset reaches the images and sensor.yaml's comment.
+  const std::string mm = temp_dir("cli_mismatch");
+  CHECK_EQUAL(0, run_render({"render", scen, mm, "--resolution", "20x15", "--duration", "0.1", "--quiet",
+                             "--camera-mismatch", "cheap_pair"}));
+  STRCMP_CONTAINS("photometric (cheap_pair): gain 1.2", read_text(mm + "/mav0/cam1/sensor.yaml").c_str());
+  CHECK(read_text(out + "/mav0/cam1/sensor.yaml").find("photometric") == std::string::npos);
+  CHECK(read_text(mm + "/mav0/cam1/data/1000000000.png") != read_text(out + "/mav0/cam1/data/1000000000.png"));
 }
 
 TEST(RecordingContract, ShippedScenariosLoad) {

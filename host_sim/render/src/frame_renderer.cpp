@@ -29,7 +29,12 @@ FrameRenderer::FrameRenderer(const Scenario& s, const Scene& scene)
       scene_(scene),
       rig_(s.camera),
       traj_(s.trajectory),
-      period_ns_(static_cast<int64_t>(std::llround(1e9 / s.camera.rate_hz))) {}
+      period_ns_(static_cast<int64_t>(std::llround(1e9 / s.camera.rate_hz))) {
+  for (int cam = 0; cam < 2; ++cam)
+    response_[static_cast<size_t>(cam)] =
+        CameraResponse(s.camera.photometric[static_cast<size_t>(cam)], s.seed, cam, s.camera.width,
+                       s.camera.height, frame_time(0), s.duration_s);
+}
 
 int64_t FrameRenderer::frame_stamp_ns(int i) const {
   return s_.start_ns + static_cast<int64_t>(std::llround(s_.camera.first_frame_s * 1e9)) +
@@ -104,6 +109,7 @@ FrameStats FrameRenderer::render_radiance(int i, int cam, std::vector<double>& o
 FrameStats FrameRenderer::render(int i, int cam, std::vector<uint8_t>& out) const {
   std::vector<double> radiance;
   const FrameStats st = render_radiance(i, cam, radiance);
+  response(cam).apply(frame_time(i), radiance);
   out.resize(radiance.size());
   const double sigma = s_.pixel_noise_sigma;
   Rng rng(stream_seed(s_.seed, 1, static_cast<uint64_t>(i), static_cast<uint64_t>(cam)));

@@ -7,13 +7,14 @@
 #include <filesystem>
 #include <string>
 
+#include "lumavel/host/render/photometric_presets.hpp"
 #include "lumavel/host/render/recording_renderer.hpp"
 #include "lumavel/host/render/scenario_loader.hpp"
 
 namespace lumavel::host {
 namespace {
 
-const char* const kHelp =
+const char* const kHelpTop =
     "Usage: lumavel-sim render SCENARIO.yaml OUT [options]\n"
     "\n"
     "Renders a synthetic stereo camera + gyro recording from a scenario file into\n"
@@ -24,12 +25,18 @@ const char* const kHelp =
     "Options:\n"
     "  --resolution WxH  camera resolution (the field of view is kept), e.g. 40x30\n"
     "  --exposure F      exposure time as a fraction of the frame period (0 = instant)\n"
-    "  --seed N          seed of pixel noise, gyro noise and random frame drops\n"
+    "  --seed N          seed of pixel noise, fixed patterns, gyro noise and frame drops\n"
     "  --duration S      length in seconds (the last segment continues if longer)\n"
+    "  --camera-mismatch NAME\n"
+    "                    photometric preset for cam0 and cam1, replacing the\n"
+    "                    scenario's photometric block (presets below)\n"
     "  --threads N       worker threads (default 2)\n"
     "  --force           replace an existing OUT/mav0\n"
     "  --quiet           no progress bar and no summary\n"
     "  -h, --help        this text\n"
+    "\n";
+
+const char* const kHelpBottom =
     "\n"
     "Exit status: 0 done, 1 bad scenario or write error (message names the file and\n"
     "line), 2 bad usage.\n";
@@ -56,7 +63,11 @@ int render_main(int argc, char** argv) {
     const std::string a = argv[k];
     auto value = [&]() -> const char* { return k + 1 < argc ? argv[++k] : nullptr; };
     if (a == "-h" || a == "--help") {
-      std::fputs(kHelp, stdout);
+      std::fputs(kHelpTop, stdout);
+      std::fputs("Photometric presets:\n", stdout);
+      for (const auto& p : render::photometric_presets())
+        std::printf("  %-16s %s\n", p.name, p.what);
+      std::fputs(kHelpBottom, stdout);
       return 0;
     } else if (a == "--resolution") {
       const char* v = value();
@@ -83,6 +94,11 @@ int render_main(int argc, char** argv) {
       double d = 0;
       if (!v || !parse_number(v, d) || d <= 0 || d > 1e6) return usage_error("--duration needs seconds > 0");
       ov.duration_s = d;
+    } else if (a == "--camera-mismatch") {
+      const char* v = value();
+      if (!v || !render::find_photometric_preset(v))
+        return usage_error("--camera-mismatch needs one of: " + render::photometric_preset_names());
+      ov.camera_mismatch = v;
     } else if (a == "--threads") {
       const char* v = value();
       double n = 0;

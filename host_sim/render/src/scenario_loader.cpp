@@ -3,10 +3,12 @@
 #include "lumavel/host/render/scenario_loader.hpp"
 
 #include "lumavel/host/render/lens_distortion.hpp"
+#include "lumavel/host/render/photometric_presets.hpp"
 #include "lumavel/host/render/view_renderer.hpp"
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <initializer_list>
@@ -138,10 +140,61 @@ void read_distortion(const Reader& r, const YAML::Node& d, CameraSpec& c) {
   }
 }
 
+// Keys not given keep the preset's value (or the ideal camera's).
+void read_camera_response(const Reader& r, const YAML::Node& n, const std::string& where, PhotometricSpec& p) {
+  r.check_keys(n, where, {"gain", "black_level", "vignetting", "prnu", "dsnu", "column_gain", "column_offset",
+                          "gamma", "auto_exposure"});
+  p.gain = r.num(n, "gain", p.gain, 0.05, 20);
+  p.black_level = r.num(n, "black_level", p.black_level, 0, 128);
+  if (const YAML::Node v = n["vignetting"]) {
+    const auto c = r.list(v, "vignetting", 2, -2, 2);
+    // 1 + v1 x + v2 x^2 over x = r^2 in [0, 1]: extremes at the ends or the vertex.
+    double lo = std::min(1.0, 1 + c[0] + c[1]), hi = std::max(1.0, 1 + c[0] + c[1]);
+    if (c[1] != 0.0) {
+      const double x = -c[0] / (2 * c[1]);
+      if (x > 0 && x < 1) {
+        lo = std::min(lo, 1 + c[0] * x + c[1] * x * x);
+        hi = std::max(hi, 1 + c[0] * x + c[1] * x * x);
+      }
+    }
+    if (lo < 0.05 || hi > 2) {
+      std::ostringstream os;
+      os << "'vignetting' = [" << c[0] << ", " << c[1] << "] gives 1 + v1 r^2 + v2 r^4 from " << lo << " to " << hi
+         << " over the image; it must stay within [0.05, 2]";
+      r.fail(v, os.str());
+    }
+    p.vignetting[0] = c[0];
+    p.vignetting[1] = c[1];
+  }
+  p.prnu = r.num(n, "prnu", p.prnu, 0, 0.2);
+  p.dsnu = r.num(n, "dsnu", p.dsnu, 0, 20);
+  p.column_gain = r.num(n, "column_gain", p.column_gain, 0, 0.2);
+  p.column_offset = r.num(n, "column_offset", p.column_offset, 0, 20);
+  p.gamma = r.num(n, "gamma", p.gamma, 0.2, 5);
+  if (const YAML::Node ae = n["auto_exposure"]) {
+    r.check_keys(ae, "auto_exposure", {"sigma", "interval_s"});
+    p.auto_exposure.sigma = r.num(ae, "sigma", p.auto_exposure.sigma, 0, 1);
+    p.auto_exposure.interval_s = r.num(ae, "interval_s", p.auto_exposure.interval_s, 0.05, 1e4);
+  }
+}
+
+void read_photometric(const Reader& r, const YAML::Node& n, CameraSpec& c) {
+  r.check_keys(n, "photometric", {"preset", "cam0", "cam1"});
+  if (const YAML::Node pn = n["preset"]) {
+    if (!pn.IsScalar()) r.fail(pn, "'preset' must be a word");
+    const PhotometricPreset* p = find_photometric_preset(pn.Scalar());
+    if (!p) r.fail(pn, "'preset' = '" + pn.Scalar() + "' is not one of: " + photometric_preset_names());
+    c.photometric = p->cams;
+    c.photometric_preset = p->name;
+  }
+  if (const YAML::Node c0 = n["cam0"]) read_camera_response(r, c0, "cam0", c.photometric[0]);
+  if (const YAML::Node c1 = n["cam1"]) read_camera_response(r, c1, "cam1", c.photometric[1]);
+}
+
 void read_camera(const Reader& r, const YAML::Node& n, Scenario& s) {
   r.check_keys(n, "camera", {"resolution", "fov_deg", "rate_hz", "exposure", "baseline_m",
                              "misalignment_deg", "look", "ahead", "rig_yaw_deg", "first_frame_s",
-                             "noise_sigma", "distortion"});
+                             "noise_sigma", "distortion", "photometric"});
   CameraSpec& c = s.camera;
   if (n["resolution"]) {
     const auto v = r.list(n["resolution"], "resolution", 2, 1, 8192);
@@ -165,6 +218,7 @@ void read_camera(const Reader& r, const YAML::Node& n, Scenario& s) {
   c.first_frame_s = r.num(n, "first_frame_s", c.first_frame_s, -kInf, kInf);
   s.pixel_noise_sigma = r.num(n, "noise_sigma", s.pixel_noise_sigma, 0, 255);
   if (const YAML::Node d = n["distortion"]) read_distortion(r, d, c);
+  if (const YAML::Node p = n["photometric"]) read_photometric(r, p, c);
 }
 
 void read_segment(const Reader& r, const YAML::Node& n, SegmentSpec& g) {
@@ -406,6 +460,14 @@ void apply_overrides(Scenario& s, const Overrides& o) {
   if (o.exposure_frames >= 0) s.camera.exposure_frames = o.exposure_frames;
   if (o.seed >= 0) s.seed = static_cast<uint64_t>(o.seed);
   if (o.duration_s > 0) s.duration_s = o.duration_s;
+  if (!o.camera_mismatch.empty()) {
+    const PhotometricPreset* p = find_photometric_preset(o.camera_mismatch);
+    if (!p)
+      throw ScenarioError("camera mismatch preset '" + o.camera_mismatch +
+                          "' is not one of: " + photometric_preset_names());
+    s.camera.photometric = p->cams;
+    s.camera.photometric_preset = p->name;
+  }
 }
 
 }  // namespace lumavel::host::render

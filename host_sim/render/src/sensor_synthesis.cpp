@@ -1,6 +1,7 @@
 #include "lumavel/host/render/sensor_synthesis.hpp"
 
 #include <cmath>
+#include <sstream>
 
 #include "lumavel/host/render/random.hpp"
 
@@ -94,6 +95,17 @@ CameraSensor camera_sensor(const Scenario& s, const StereoRig& rig, int cam) {
   c.T_BS[15] = 1;
   c.exposure_s = s.camera.exposure_frames / s.camera.rate_hz;
   c.comment = "lumavel-sim render: " + s.file + " cam" + std::to_string(cam);
+  // The renderer's truth, for a reader of the file; nothing reads it back.
+  const PhotometricSpec& ph = s.camera.photometric[static_cast<size_t>(cam)];
+  if (!ph.ideal()) {
+    std::ostringstream os;
+    os << "; photometric" << (s.camera.photometric_preset.empty() ? "" : " (" + s.camera.photometric_preset + ")")
+       << ": gain " << ph.gain << ", black level " << ph.black_level << ", vignetting [" << ph.vignetting[0]
+       << ", " << ph.vignetting[1] << "], prnu " << ph.prnu << ", dsnu " << ph.dsnu << ", column "
+       << ph.column_gain << " / " << ph.column_offset << ", gamma " << ph.gamma << ", auto-exposure "
+       << ph.auto_exposure.sigma;
+    c.comment += os.str();
+  }
   return c;
 }
 

@@ -1,12 +1,14 @@
 // One camera image of the recording: exposure blur (average of sub-frames
 // spread over the exposure, enough that the scene moves at most 0.5 px
 // between two and a moving edge is within 0.5 % of its exact profile),
-// lighting (flicker, lights off), Gaussian pixel noise and
-// 8-bit rounding with clipping.
+// lighting (flicker, lights off), each camera's photometric response,
+// Gaussian pixel noise and 8-bit rounding with clipping.
 #pragma once
+#include <array>
 #include <cstdint>
 #include <vector>
 
+#include "lumavel/host/render/photometric_response.hpp"
 #include "lumavel/host/render/scenario.hpp"
 #include "lumavel/host/render/scene.hpp"
 #include "lumavel/host/render/stereo_rig.hpp"
@@ -32,8 +34,10 @@ class FrameRenderer {
   const Trajectory& trajectory() const { return traj_; }
   // Renders camera `cam` of frame `i` into `out` (width*height bytes).
   FrameStats render(int i, int cam, std::vector<uint8_t>& out) const;
-  // The same before noise and rounding (gray levels, may exceed 0..255).
+  // The scene's radiance, before the camera's response, noise and rounding
+  // (gray levels, may exceed 0..255).
   FrameStats render_radiance(int i, int cam, std::vector<double>& out) const;
+  const CameraResponse& response(int cam) const { return response_[static_cast<size_t>(cam)]; }
 
  private:
   int subframes(double t_mid, int cam) const;
@@ -42,6 +46,7 @@ class FrameRenderer {
   StereoRig rig_;
   Trajectory traj_;
   int64_t period_ns_;
+  std::array<CameraResponse, 2> response_;  // fixed patterns drawn once per camera
 };
 
 }  // namespace lumavel::host::render

@@ -12,6 +12,35 @@ namespace lumavel::host::render {
 
 enum class LookSide { Left, Right };
 
+// A free-running auto-exposure: the camera's gain wanders slowly, on its own,
+// as exp(sigma g(t)); g interpolates (raised cosine) independent unit normal
+// values drawn every `interval_s`, per camera. sigma = 0: fixed exposure.
+struct AutoExposureSpec {
+  double sigma = 0;       // rms of the log gain
+  double interval_s = 2;  // time between independent values
+};
+
+// One camera's photometric response, applied to the radiance before pixel
+// noise, rounding and clipping (photometric_response.hpp has the formula).
+// These defaults are an ideal camera: the renderer's output is then the
+// radiance itself, byte for byte.
+struct PhotometricSpec {
+  double gain = 1;             // relative exposure x analog gain
+  double black_level = 0;      // gray levels added
+  double vignetting[2] = {0, 0};  // v1, v2: 1 + v1 r^2 + v2 r^4, r = 1 at the image corner
+  double prnu = 0;             // per-pixel gain, sigma (relative)
+  double dsnu = 0;             // per-pixel offset, sigma (gray levels)
+  double column_gain = 0;      // per-column gain, sigma (relative)
+  double column_offset = 0;    // per-column offset, sigma (gray levels)
+  double gamma = 1;            // response 255 (x / 255)^gamma
+  AutoExposureSpec auto_exposure;
+  bool ideal() const {
+    return gain == 1.0 && black_level == 0.0 && vignetting[0] == 0.0 && vignetting[1] == 0.0 &&
+           prnu == 0.0 && dsnu == 0.0 && column_gain == 0.0 && column_offset == 0.0 && gamma == 1.0 &&
+           auto_exposure.sigma == 0.0;
+  }
+};
+
 struct CameraSpec {
   int width = 640, height = 480;
   double hfov_deg = 50, vfov_deg = 40;
@@ -24,6 +53,8 @@ struct CameraSpec {
   double rig_yaw_deg = 0;       // yaw of both cameras away from orthogonal
   double first_frame_s = 0;     // mid-exposure time of frame 0
   std::array<double, 4> distortion{};  // radial-tangential k1, k2, p1, p2; 0 = pinhole
+  std::array<PhotometricSpec, 2> photometric{};  // cam0, cam1
+  std::string photometric_preset;  // name it started from ("" = none); for messages only
 };
 
 enum class PatternKind { Uniform, Sinusoid, Checker, Photo };

@@ -25,6 +25,9 @@ struct Overrides {
   double exposure_frames = -1;
   long long seed = -1;
   double duration_s = -1;
+  // Photometric preset for both cameras (photometric_presets.hpp), replacing
+  // the scenario's photometric block; unknown names throw ScenarioError.
+  std::string camera_mismatch;
 };
 void apply_overrides(Scenario& s, const Overrides& o);
 
