@@ -99,6 +99,14 @@ TEST(ScenarioErrors, BadPlaneGeometry) {
   STRCMP_CONTAINS("bad.yaml:11:", error_of(replace(kGood, "to: [5, 2]", "to: [0, 2]")).c_str());
 }
 
+TEST(ScenarioErrors, TooManyPlanes) {
+  std::string text = kGood;
+  for (int i = 0; i < 256; ++i) text += "    - {from: [0, 3], to: [1, 3], z: [0, 1], pattern: {type: uniform}}\n";
+  const std::string e = error_of(text);
+  STRCMP_CONTAINS("bad.yaml:10:", e.c_str());
+  STRCMP_CONTAINS("at most 256 planes", e.c_str());
+}
+
 TEST(ScenarioErrors, MissingRequiredKeys) {
   STRCMP_CONTAINS("duration_s", error_of(replace(kGood, "duration_s: 2\n", "")).c_str());
   CHECK(contains(error_of("duration_s: 2\n"), "trajectory"));

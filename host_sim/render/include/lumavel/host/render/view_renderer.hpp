@@ -13,7 +13,10 @@
 
 namespace lumavel::host::render {
 
-constexpr int kMaxScenePlanes = 64;  // planes a scenario may have
+// Planes a scenario may have (a street with parked cars of several planes
+// each needs over 100); the renderer keeps per-pixel candidate lists of
+// this size on the stack (sample_rect: 64 bytes per plane and level).
+constexpr int kMaxScenePlanes = 256;
 
 // Adds gain * radiance to `accum` (width*height, row-major). Returns the
 // fraction of the image that shows the background.
