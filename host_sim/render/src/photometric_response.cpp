@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "lumavel/host/render/random.hpp"
 
@@ -73,6 +74,8 @@ double CameraResponse::exposure_gain(double t) const {
 
 void CameraResponse::apply(double t, std::vector<double>& image) const {
   if (ideal_) return;
+  if (image.size() != pixel_gain_.size())
+    throw std::invalid_argument("CameraResponse::apply: image size differs from the camera's");
   const double gain = exposure_gain(t);
   const bool curve = spec_.gamma != 1.0;
   for (size_t k = 0; k < image.size(); ++k) {

@@ -95,7 +95,7 @@ CameraSensor camera_sensor(const Scenario& s, const StereoRig& rig, int cam) {
   c.T_BS[15] = 1;
   c.exposure_s = s.camera.exposure_frames / s.camera.rate_hz;
   c.comment = "lumavel-sim render: " + s.file + " cam" + std::to_string(cam);
-  // The renderer's truth, for a reader of the file; nothing reads it back.
+  // The renderer's truth, for a person reading the file; no tool uses it.
   const PhotometricSpec& ph = s.camera.photometric[static_cast<size_t>(cam)];
   if (!ph.ideal()) {
     std::ostringstream os;
