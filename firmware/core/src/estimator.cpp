@@ -67,7 +67,11 @@ Estimate Estimator::step(const FramePair& frames) {
   const int64_t dtheta = frame_index_ > 1 ? angle - prev_gyro_angle_ - gyro_offset_.angle_over(since_prev_ns) : 0;
   heading_ = frame_index_ > 1 ? heading_ + dtheta : angle;
   est.heading = fx::wrap_pi(heading_);
-  if (gyro_.take_max_spacing() > uint64_t{cfg_.gyro_gap_us} * 1000) status |= kStatusGyroGap;
+  // Every frame whose interval [previous frame, this frame] the samples do not cover.
+  const uint64_t gyro_gap_ns = uint64_t{cfg_.gyro_gap_us} * 1000;
+  const uint64_t interval_start = frame_index_ > 1 ? prev_t_ns_ : frames.t_ns;
+  if (gyro_.take_max_spacing() > gyro_gap_ns || !gyro_.covers(interval_start, frames.t_ns, gyro_gap_ns))
+    status |= kStatusGyroGap;
 
   if (m.no_light) {
     // Unusable frame: hold V, and pair the next good frame with nothing.

@@ -25,6 +25,7 @@ void GyroIntegrator::push(uint64_t t_ns, RateQ24 rate) {
     t_[1] = t_ns;
     r_[1] = rate;
     angle_[1] = 0;
+    t_first_ = t_ns;
     count_ = 1;
     return;
   }
@@ -60,6 +61,21 @@ int64_t GyroIntegrator::angle_q32(uint64_t t_ns) const {
   const int64_t frac_q16 = fx::div_q(static_cast<int64_t>(dt), static_cast<int64_t>(span), 16);
   const int64_t rate_t = r_[0] + fx::shr_round((int64_t{r_[1]} - r_[0]) * frac_q16, 16);
   return angle_[0] + angle_of((int64_t{r_[0]} + rate_t) / 2, dt);
+}
+
+bool GyroIntegrator::covers(uint64_t from_ns, uint64_t to_ns, uint64_t gap_ns) const {
+  if (count_ == 0) return false;
+  if (from_ns > to_ns) {
+    const uint64_t t = from_ns;
+    from_ns = to_ns;
+    to_ns = t;
+  }
+  if (t_first_ > from_ns + gap_ns) return false;  // the stream starts inside the interval
+  if (to_ns > t_[1] + gap_ns) return false;       // held at the last rate beyond the stream
+  const uint64_t oldest = count_ < 2 ? t_[1] : t_[0];
+  if (to_ns + gap_ns < oldest) return false;      // held backwards before the window
+  const bool hole = count_ >= 2 && t_[1] - t_[0] > gap_ns;
+  return !(hole && t_[0] < to_ns && t_[1] > from_ns);
 }
 
 uint64_t GyroIntegrator::take_max_spacing() {

@@ -99,7 +99,7 @@ FloatBank build_float_bank(const EstimatorSettings& s) {
 }
 
 FloatEstimator::FloatEstimator(const EstimatorSettings& s) : s_(s) {
-  to_fixed_config(s);  // same validation as the fixed engine; throws
+  gyro_gap_ns_ = uint64_t{to_fixed_config(s).gyro_gap_us} * 1000;  // same validation as the fixed engine; throws
   bank_ = build_float_bank(s_);
 }
 
@@ -109,12 +109,13 @@ void FloatEstimator::push_gyro(uint64_t t_ns, double rate) {
     gt_[1] = t_ns;
     gr_[1] = rate;
     ga_[1] = 0;
+    gfirst_ = t_ns;
     gcount_ = 1;
     return;
   }
   if (t_ns <= gt_[1]) return;
   const double dt = static_cast<double>(t_ns - gt_[1]) * 1e-9;
-  gmax_spacing_ = std::max(gmax_spacing_, dt);
+  gmax_spacing_ = std::max(gmax_spacing_, t_ns - gt_[1]);
   gt_[0] = gt_[1];
   gr_[0] = gr_[1];
   ga_[0] = ga_[1];
@@ -133,6 +134,17 @@ double FloatEstimator::angle_at(uint64_t t) const {
   const double span = secs(gt_[1], gt_[0]), dt = secs(t, gt_[0]);
   const double rate_t = gr_[0] + (gr_[1] - gr_[0]) * dt / span;
   return ga_[0] + (gr_[0] + rate_t) / 2 * dt;
+}
+
+bool FloatEstimator::gyro_covers(uint64_t from, uint64_t to) const {
+  if (gcount_ == 0) return false;
+  if (from > to) std::swap(from, to);
+  const uint64_t gap = gyro_gap_ns_;
+  if (gfirst_ > from + gap || to > gt_[1] + gap) return false;
+  const uint64_t oldest = gcount_ < 2 ? gt_[1] : gt_[0];
+  if (to + gap < oldest) return false;
+  const bool hole = gcount_ >= 2 && gt_[1] - gt_[0] > gap;
+  return !(hole && gt_[0] < to && gt_[1] > from);
 }
 
 FloatMeasurement measure_float(const FloatBank& bank, const EstimatorSettings& s,
@@ -203,7 +215,7 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
   heading_ = first ? angle : heading_ + dtheta;
   est.heading = std::remainder(heading_, 2 * M_PI);
   if (est.heading >= M_PI) est.heading -= 2 * M_PI;
-  if (gmax_spacing_ > s_.gyro_gap) status |= kStatusGyroGap;
+  if (gmax_spacing_ > gyro_gap_ns_ || !gyro_covers(first ? t_ns : prev_t_, t_ns)) status |= kStatusGyroGap;
   gmax_spacing_ = 0;
   auto converging = [&] { return !started_ || since_start_ < 3 * s_.tau; };
   if (m.no_light) {

@@ -17,6 +17,13 @@ class GyroIntegrator {
   bool has_samples() const { return count_ > 0; }
   // Longest spacing between samples seen since the last call (ns).
   uint64_t take_max_spacing();
+  // Whether the samples cover the interval [from, to] to within `gap_ns`:
+  // there are samples, the stream started no later than from + gap, the
+  // angle at `to` is not extrapolated more than gap past the newest sample
+  // (or before the older one of the window), and the window's two samples
+  // are not a hole (spaced more than gap) overlapping the interval. Holes
+  // among samples pushed since the last frame are take_max_spacing()'s.
+  bool covers(uint64_t from_ns, uint64_t to_ns, uint64_t gap_ns) const;
 
  private:
   int64_t angle_q32(uint64_t t_ns) const;
@@ -26,6 +33,7 @@ class GyroIntegrator {
   int64_t angle_[2]{};  // integrated angle at t_[i], Q32 (16x finer than the result:
                         // 1000 rounded steps a second stay below 1e-8 rad)
   uint32_t count_ = 0;
+  uint64_t t_first_ = 0;  // time of the first sample since reset
   uint64_t max_spacing_ = 0;
 };
 

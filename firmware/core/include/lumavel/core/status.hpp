@@ -10,7 +10,7 @@ enum StatusFlag : uint16_t {
   kStatusLowTexture = 1u << 1,  // dF/dx too weak to observe V: V is held
   kStatusSaturated = 1u << 2,   // clipped pixels or a saturated fixed-point step
   kStatusFrameGap = 1u << 3,    // frame interval longer than 1.5 nominal periods
-  kStatusGyroGap = 1u << 4,     // gyro samples missing over the frame interval
+  kStatusGyroGap = 1u << 4,     // gyro samples do not cover the frame interval (GyroIntegrator::covers)
   kStatusNoLight = 1u << 5,     // normaliser (mean brightness) is zero: frame unusable
   kStatusRestarted = 1u << 6,   // gap too long to bridge: the observer restarted here
   kStatusStill = 1u << 7,       // images static: the gyro's zero-rate offset is being learned

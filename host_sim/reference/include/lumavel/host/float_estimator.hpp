@@ -46,6 +46,7 @@ class FloatEstimator {
 
  private:
   double angle_at(uint64_t t_ns) const;
+  bool gyro_covers(uint64_t from_ns, uint64_t to_ns) const;  // GyroIntegrator::covers
   void learn_offset(const FloatMeasurement& m, uint64_t t_ns, double angle, bool textured);
 
   EstimatorSettings s_;
@@ -54,7 +55,9 @@ class FloatEstimator {
   uint64_t gt_[2]{};
   double gr_[2]{}, ga_[2]{};
   int gcount_ = 0;
-  double gmax_spacing_ = 0;
+  uint64_t gfirst_ = 0;         // first sample since the start
+  uint64_t gmax_spacing_ = 0;   // ns, since the last frame
+  uint64_t gyro_gap_ns_ = 0;    // the configuration's gyro gap, whole microseconds as the core has it
   // observer
   FloatMeasurement prev_;
   bool have_prev_ = false, started_ = false;
