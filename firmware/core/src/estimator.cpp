@@ -72,6 +72,9 @@ Estimate Estimator::step(const FramePair& frames) {
   const uint64_t interval_start = frame_index_ > 1 ? prev_t_ns_ : frames.t_ns;
   if (gyro_.take_max_spacing() > gyro_gap_ns || !gyro_.covers(interval_start, frames.t_ns, gyro_gap_ns))
     status |= kStatusGyroGap;
+  // A railed gyro sample: the interval's rotation is unknown, V is held over it.
+  const bool gyro_saturated = gyro_.saturated_since(interval_start);
+  if (gyro_saturated) status |= kStatusSaturated;
 
   if (m.no_light) {
     // Unusable frame: hold V, and pair the next good frame with nothing.
@@ -96,8 +99,8 @@ Estimate Estimator::step(const FramePair& frames) {
       in.tau_us = cfg_.tau_us;
       in.low_texture = cfg_.low_texture;
       in.baseline_correction = (cfg_.options & kOptionBaselineCorrection) != 0;
-      const ObserverOutput o = observer_.update(in);
-      if (!o.updated) status |= kStatusLowTexture;
+      const ObserverOutput o = gyro_saturated ? observer_.hold() : observer_.update(in);
+      if (!o.updated && !gyro_saturated) status |= kStatusLowTexture;
       if (cfg_.options & kOptionGyroOffsetLearning) {
         gyro_offset_.update({&m, frames.t_ns, angle, o.updated, cfg_.baseline, cfg_.still_distance, cfg_.still_min_us});
         if (gyro_offset_.still()) status |= kStatusStill;

@@ -40,6 +40,15 @@ void GyroIntegrator::push(uint64_t t_ns, RateQ24 rate) {
   // Trapezoid between the two samples.
   angle_[1] = angle_[0] + angle_of((int64_t{r_[0]} + r_[1]) / 2, dt);
   ++count_;
+  if (fx::rate_at_rail(r_[0]) || fx::rate_at_rail(r_[1])) {
+    railed_ = true;
+    railed_end_ = t_ns;
+  }
+}
+
+bool GyroIntegrator::saturated_since(uint64_t from_ns) const {
+  if (count_ == 0) return false;
+  return fx::rate_at_rail(r_[1]) || (railed_ && railed_end_ > from_ns);
 }
 
 int64_t GyroIntegrator::angle_at(uint64_t t_ns) const { return fx::shr_round(angle_q32(t_ns), 4); }

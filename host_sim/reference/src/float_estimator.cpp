@@ -104,10 +104,14 @@ FloatEstimator::FloatEstimator(const EstimatorSettings& s) : s_(s) {
 }
 
 void FloatEstimator::push_gyro(uint64_t t_ns, double rate) {
-  if (!std::isfinite(rate)) throw std::invalid_argument("gyro rate is not a finite number");
+  // What the fixed engine cannot represent is clipped to its range, as there.
+  const RateQ24 q = to_fixed_rate(rate);  // throws if not finite
+  const bool rail = fx::rate_at_rail(q);
+  if (rail) rate = std::ldexp(static_cast<double>(q), -fx::kRateFrac);
   if (gcount_ == 0) {
     gt_[1] = t_ns;
     gr_[1] = rate;
+    grail_[1] = rail;
     ga_[1] = 0;
     gfirst_ = t_ns;
     gcount_ = 1;
@@ -119,9 +123,15 @@ void FloatEstimator::push_gyro(uint64_t t_ns, double rate) {
   gt_[0] = gt_[1];
   gr_[0] = gr_[1];
   ga_[0] = ga_[1];
+  grail_[0] = grail_[1];
   gt_[1] = t_ns;
   gr_[1] = rate;
+  grail_[1] = rail;
   ga_[1] = ga_[0] + (gr_[0] + gr_[1]) / 2 * dt;
+  if (grail_[0] || grail_[1]) {
+    grailed_ = true;
+    grailed_end_ = t_ns;
+  }
   ++gcount_;
 }
 
@@ -145,6 +155,10 @@ bool FloatEstimator::gyro_covers(uint64_t from, uint64_t to) const {
   if (to + gap < oldest) return false;
   const bool hole = gcount_ >= 2 && gt_[1] - gt_[0] > gap;
   return !(hole && gt_[0] < to && gt_[1] > from);
+}
+
+bool FloatEstimator::gyro_saturated_since(uint64_t from) const {
+  return gcount_ > 0 && (grail_[1] || (grailed_ && grailed_end_ > from));
 }
 
 FloatMeasurement measure_float(const FloatBank& bank, const EstimatorSettings& s,
@@ -217,6 +231,8 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
   if (est.heading >= M_PI) est.heading -= 2 * M_PI;
   if (gmax_spacing_ > gyro_gap_ns_ || !gyro_covers(first ? t_ns : prev_t_, t_ns)) status |= kStatusGyroGap;
   gmax_spacing_ = 0;
+  const bool gyro_saturated = gyro_saturated_since(first ? t_ns : prev_t_);  // V held over the interval
+  if (gyro_saturated) status |= kStatusSaturated;
   auto converging = [&] { return !started_ || since_start_ < 3 * s_.tau; };
   if (m.no_light) {
     status |= kStatusNoLight | kStatusLowTexture;
@@ -246,9 +262,13 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
       const double ss_min = std::min(m.diff.squaredNorm(), prev_.diff.squaredNorm());
       est.texture = s_bar.size() ? std::sqrt(ss_min / static_cast<double>(s_bar.size())) : 0;
       const double den = a.squaredNorm();
-      if (den <= 0 || s_bar.squaredNorm() <= 0 || est.texture < s_.low_texture) {
+      bool textured = false;
+      if (gyro_saturated) {
+        est.texture = 0;
+      } else if (den <= 0 || s_bar.squaredNorm() <= 0 || est.texture < s_.low_texture) {
         status |= kStatusLowTexture;
       } else {
+        textured = true;
         const double d = s_.baseline * e.dot(a) / den;
         est.v_direct = d / dt;
         if (!started_) {
@@ -262,7 +282,7 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
       }
       distance_ += v_ * dt;
       if (s_.gyro_offset_learning) {
-        learn_offset(m, t_ns, angle, !(status & kStatusLowTexture));
+        learn_offset(m, t_ns, angle, textured);
         if (still_) status |= kStatusStill;
       }
     }

@@ -24,6 +24,10 @@ class GyroIntegrator {
   // are not a hole (spaced more than gap) overlapping the interval. Holes
   // among samples pushed since the last frame are take_max_spacing()'s.
   bool covers(uint64_t from_ns, uint64_t to_ns, uint64_t gap_ns) const;
+  // Whether the angle since `from` rests on a sample at the RateQ24 rail
+  // (fx::rate_at_rail): a trapezoid with a railed end after `from`, or the
+  // hold beyond a railed newest sample.
+  bool saturated_since(uint64_t from_ns) const;
 
  private:
   int64_t angle_q32(uint64_t t_ns) const;
@@ -34,6 +38,8 @@ class GyroIntegrator {
                         // 1000 rounded steps a second stay below 1e-8 rad)
   uint32_t count_ = 0;
   uint64_t t_first_ = 0;  // time of the first sample since reset
+  bool railed_ = false;   // a trapezoid has had a railed end
+  uint64_t railed_end_ = 0;  // end of the latest such trapezoid
   uint64_t max_spacing_ = 0;
 };
 

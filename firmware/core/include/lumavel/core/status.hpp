@@ -8,7 +8,7 @@ namespace lumavel {
 enum StatusFlag : uint16_t {
   kStatusConverging = 1u << 0,  // observer (re)started less than 3 time constants ago
   kStatusLowTexture = 1u << 1,  // dF/dx too weak to observe V: V is held
-  kStatusSaturated = 1u << 2,   // clipped pixels or a saturated fixed-point step
+  kStatusSaturated = 1u << 2,   // clipped pixels, a saturated fixed-point step or a railed gyro sample
   kStatusFrameGap = 1u << 3,    // frame interval longer than 1.5 nominal periods
   kStatusGyroGap = 1u << 4,     // gyro samples do not cover the frame interval (GyroIntegrator::covers)
   kStatusNoLight = 1u << 5,     // normaliser (mean brightness) is zero: frame unusable

@@ -47,6 +47,7 @@ class FloatEstimator {
  private:
   double angle_at(uint64_t t_ns) const;
   bool gyro_covers(uint64_t from_ns, uint64_t to_ns) const;  // GyroIntegrator::covers
+  bool gyro_saturated_since(uint64_t from_ns) const;          // GyroIntegrator::saturated_since
   void learn_offset(const FloatMeasurement& m, uint64_t t_ns, double angle, bool textured);
 
   EstimatorSettings s_;
@@ -56,6 +57,9 @@ class FloatEstimator {
   double gr_[2]{}, ga_[2]{};
   int gcount_ = 0;
   uint64_t gfirst_ = 0;         // first sample since the start
+  bool grail_[2]{};             // the sample was clipped to the firmware's RateQ24 range
+  bool grailed_ = false;        // a trapezoid has had a clipped end ...
+  uint64_t grailed_end_ = 0;    // ... ending here
   uint64_t gmax_spacing_ = 0;   // ns, since the last frame
   uint64_t gyro_gap_ns_ = 0;    // the configuration's gyro gap, whole microseconds as the core has it
   // observer
