@@ -76,9 +76,10 @@ Estimate Estimator::step(const FramePair& frames) {
   const bool gyro_saturated = gyro_.saturated_since(interval_start);
   if (gyro_saturated) status |= kStatusSaturated;
 
-  if (m.no_light) {
+  const bool no_stereo = same_textured_profile(p[0], p[1]);
+  if (m.no_light || no_stereo) {
     // Unusable frame: hold V, and pair the next good frame with nothing.
-    status |= kStatusNoLight | kStatusLowTexture;
+    status |= (m.no_light ? kStatusNoLight : kStatusNoStereo) | kStatusLowTexture;
     have_prev_ = false;
   } else if (!have_prev_) {
     have_prev_ = true;

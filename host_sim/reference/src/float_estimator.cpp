@@ -168,8 +168,10 @@ FloatMeasurement measure_float(const FloatBank& bank, const EstimatorSettings& s
   const size_t n = s.kernels.size();
   Eigen::VectorXd f[2], r[2], c[2];
   const uint8_t* img[2] = {cam0, cam1};
+  Eigen::VectorXd cols[2];
   for (int i = 0; i < 2; ++i) {
-    Eigen::VectorXd col = Eigen::VectorXd::Zero(w);
+    Eigen::VectorXd& col = cols[i];
+    col = Eigen::VectorXd::Zero(w);
     for (int y = 0; y < h; ++y)
       for (int u = 0; u < w; ++u) col[u] += img[i][y * w + u];
     for (int y = 0; y < h; y += 8)
@@ -195,6 +197,8 @@ FloatMeasurement measure_float(const FloatBank& bank, const EstimatorSettings& s
       c[i][jj] = k.t[j].dot(col) / nrm;  // derivatives of N neglected: a correction term
     }
   }
+  // Sums of integers: exact in double, so equal exactly where the core's are.
+  m.no_stereo = cols[0] == cols[1] && (cols[0].array() != cols[0][0]).any();
   m.mid = (f[0] + f[1]) / 2;
   m.diff = f[1] - f[0];
   m.rot = (r[0] + r[1]) / 2;
@@ -234,8 +238,8 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
   const bool gyro_saturated = gyro_saturated_since(first ? t_ns : prev_t_);  // V held over the interval
   if (gyro_saturated) status |= kStatusSaturated;
   auto converging = [&] { return !started_ || since_start_ < 3 * s_.tau; };
-  if (m.no_light) {
-    status |= kStatusNoLight | kStatusLowTexture;
+  if (m.no_light || m.no_stereo) {
+    status |= (m.no_light ? kStatusNoLight : kStatusNoStereo) | kStatusLowTexture;
     have_prev_ = false;
   } else if (!have_prev_) {
     have_prev_ = true;

@@ -14,6 +14,12 @@ enum StatusFlag : uint16_t {
   kStatusNoLight = 1u << 5,     // normaliser (mean brightness) is zero: frame unusable
   kStatusRestarted = 1u << 6,   // gap too long to bridge: the observer restarted here
   kStatusStill = 1u << 7,       // images static: the gyro's zero-rate offset is being learned
+  kStatusNoStereo = 1u << 8,    // both cameras delivered the same image: no stereo difference,
+                                // V not observable, frame unusable (with kStatusLowTexture: V held)
 };
+
+// Every bit defined above (a decoder refuses the others).
+constexpr uint16_t kKnownStatusFlags = 0x01FFu;
+
 
 }  // namespace lumavel

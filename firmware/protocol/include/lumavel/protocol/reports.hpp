@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "lumavel/core/fixed.hpp"
+#include "lumavel/core/status.hpp"
 #include "lumavel/protocol/descriptor.hpp"
 
 namespace lumavel::protocol {
@@ -39,7 +40,7 @@ struct DecodeResult {
 //   16  4    v              SpeedQ16, m/s
 //   20  8    distance       DistQ32, m
 //   28  4    heading        AngleQ28, rad, in [-pi, pi)
-//   32  2    status         StatusFlag bits (bits 8..15 must be 0 in version 2)
+//   32  2    status         StatusFlag bits (bits 9..15 must be 0: kKnownStatusFlags)
 //   34  2    overruns       u16, frames dropped since start (saturates at 65535)
 //   36  4    gyro_offset    RateQ24, rad/s: zero-rate offset learned at standstill
 //   40  2    crc16 of bytes 0..39
@@ -55,8 +56,8 @@ struct Measurement {
   RateQ24 gyro_offset;
 };
 
-// Status bits defined in protocol version 2 (lumavel/core/status.hpp).
-constexpr uint16_t kKnownStatusBits = 0x00FFu;
+// Status bits defined in this protocol version (lumavel/core/status.hpp).
+constexpr uint16_t kKnownStatusBits = kKnownStatusFlags;
 
 // Writes kMeasurementSize bytes; returns the size, or 0 if cap is too small.
 size_t encode_measurement(const Measurement& m, uint8_t* buf, size_t cap);

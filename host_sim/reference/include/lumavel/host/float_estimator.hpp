@@ -29,6 +29,7 @@ struct FloatMeasurement {
   Eigen::VectorXd mid, diff, rot;
   Eigen::VectorXd half_phase;            // x = k h / 2 per kernel, from the cameras' phases
   bool no_light = false;
+  bool no_stereo = false;  // same textured column profile in both cameras (same_textured_profile)
   double clipped = 0, sampled = 0;
 };
 
