@@ -81,6 +81,7 @@ Estimate Estimator::step(const FramePair& frames) {
     // Unusable frame: hold V, and pair the next good frame with nothing.
     status |= (m.no_light ? kStatusNoLight : kStatusNoStereo) | kStatusLowTexture;
     have_prev_ = false;
+    gyro_offset_.drop_reference();
   } else if (!have_prev_) {
     have_prev_ = true;
     cur_ = next;
@@ -89,6 +90,7 @@ Estimate Estimator::step(const FramePair& frames) {
     if (frames.t_ns <= prev_t_ns_ || dt_ns > int64_t{cfg_.max_gap_us} * 1000) {
       status |= kStatusFrameGap | kStatusRestarted;
       observer_.restart();
+      gyro_offset_.drop_reference();
     } else {
       if (dt_ns * 2 > int64_t{cfg_.frame_period_us} * 3000) status |= kStatusFrameGap;
       ObserverInput in{};
@@ -103,6 +105,7 @@ Estimate Estimator::step(const FramePair& frames) {
       const ObserverOutput o = gyro_saturated ? observer_.hold() : observer_.update(in);
       if (!o.updated && !gyro_saturated) status |= kStatusLowTexture;
       if (cfg_.options & kOptionGyroOffsetLearning) {
+        if (status & (kStatusFrameGap | kStatusGyroGap)) gyro_offset_.drop_reference();
         gyro_offset_.update({&m, frames.t_ns, angle, o.updated, cfg_.baseline, cfg_.still_distance, cfg_.still_min_us});
         if (gyro_offset_.still()) status |= kStatusStill;
       }

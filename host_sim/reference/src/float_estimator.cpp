@@ -241,6 +241,7 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
   if (m.no_light || m.no_stereo) {
     status |= (m.no_light ? kStatusNoLight : kStatusNoStereo) | kStatusLowTexture;
     have_prev_ = false;
+    have_ref_ = still_ = false;  // GyroOffset::drop_reference
   } else if (!have_prev_) {
     have_prev_ = true;
     prev_ = m;
@@ -250,6 +251,7 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
       status |= kStatusFrameGap | kStatusRestarted;
       started_ = false;  // V held; the next interval re-initialises it
       since_start_ = 0;
+      have_ref_ = still_ = false;
     } else {
       if (dt > 1.5 * s_.frame_period) status |= kStatusFrameGap;
       const Eigen::VectorXd s_bar = (m.diff + prev_.diff) / 2;
@@ -286,6 +288,7 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
       }
       distance_ += v_ * dt;
       if (s_.gyro_offset_learning) {
+        if (status & (kStatusFrameGap | kStatusGyroGap)) have_ref_ = still_ = false;
         learn_offset(m, t_ns, angle, textured);
         if (still_) status |= kStatusStill;
       }
@@ -326,10 +329,7 @@ void FloatEstimator::learn_offset(const FloatMeasurement& m, uint64_t t_ns, doub
   still_ = span >= s_.still_min;
   if (still_) {
     offset_ = (angle - angle_ref_) / span;
-    if (span > 20) {
-      anchor();
-      still_ = true;
-    }
+    if (span > 20) anchor();  // as the core: not still again until still_min has passed
   }
 }
 
