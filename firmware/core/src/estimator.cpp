@@ -40,6 +40,7 @@ void Estimator::reset() {
   prev_t_ns_ = 0;
   prev_gyro_angle_ = 0;
   frame_index_ = 0;
+  have_prev_frame_ = false;
   distance_ = 0;
 }
 
@@ -62,14 +63,14 @@ Estimate Estimator::step(const FramePair& frames) {
     status |= kStatusSaturated;
 
   const int64_t angle = gyro_.angle_at(frames.t_ns);
-  const int64_t since_prev_ns = frame_index_ > 1 ? static_cast<int64_t>(frames.t_ns - prev_t_ns_) : 0;
+  const int64_t since_prev_ns = have_prev_frame_ ? static_cast<int64_t>(frames.t_ns - prev_t_ns_) : 0;
   // Gyro angle of the interval with the learned offset removed.
-  const int64_t dtheta = frame_index_ > 1 ? angle - prev_gyro_angle_ - gyro_offset_.angle_over(since_prev_ns) : 0;
-  heading_ = frame_index_ > 1 ? heading_ + dtheta : angle;
+  const int64_t dtheta = have_prev_frame_ ? angle - prev_gyro_angle_ - gyro_offset_.angle_over(since_prev_ns) : 0;
+  heading_ = have_prev_frame_ ? heading_ + dtheta : angle;
   est.heading = fx::wrap_pi(heading_);
   // Every frame whose interval [previous frame, this frame] the samples do not cover.
   const uint64_t gyro_gap_ns = uint64_t{cfg_.gyro_gap_us} * 1000;
-  const uint64_t interval_start = frame_index_ > 1 ? prev_t_ns_ : frames.t_ns;
+  const uint64_t interval_start = have_prev_frame_ ? prev_t_ns_ : frames.t_ns;
   if (gyro_.take_max_spacing() > gyro_gap_ns || !gyro_.covers(interval_start, frames.t_ns, gyro_gap_ns))
     status |= kStatusGyroGap;
   // A railed gyro sample: the interval's rotation is unknown, V is held over it.
@@ -119,6 +120,7 @@ Estimate Estimator::step(const FramePair& frames) {
   if (observer_.converging_now()) status |= kStatusConverging;
   prev_t_ns_ = frames.t_ns;
   prev_gyro_angle_ = angle;
+  have_prev_frame_ = true;
   est.v = observer_.v();
   est.distance = distance_;
   est.status = status;

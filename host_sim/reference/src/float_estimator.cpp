@@ -226,8 +226,8 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
   uint16_t status = 0;
   if (m.clipped * 1000 > s_.saturated_permille * m.sampled) status |= kStatusSaturated;
   const double angle = angle_at(t_ns);
-  const bool first = frames_ == 0;
-  ++frames_;
+  const bool first = !have_prev_frame_;
+  have_prev_frame_ = true;
   const double since_prev = first ? 0 : (static_cast<double>(t_ns) - static_cast<double>(prev_t_)) * 1e-9;
   const double dtheta = first ? 0 : angle - prev_angle_ - offset_ * since_prev;
   heading_ = first ? angle : heading_ + dtheta;

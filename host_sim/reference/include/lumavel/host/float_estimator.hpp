@@ -70,7 +70,8 @@ class FloatEstimator {
   uint64_t prev_t_ = 0;
   // gyro offset learning and the corrected heading
   double offset_ = 0, heading_ = 0, angle_ref_ = 0;
-  uint64_t frames_ = 0, t_ref_ = 0;
+  bool have_prev_frame_ = false;
+  uint64_t t_ref_ = 0;
   FloatMeasurement ref_;
   bool have_ref_ = false, still_ = false;
 };
