@@ -127,7 +127,7 @@ void FloatEstimator::push_gyro(uint64_t t_ns, double rate) {
   gt_[1] = t_ns;
   gr_[1] = rate;
   grail_[1] = rail;
-  ga_[1] = ga_[0] + (gr_[0] + gr_[1]) / 2 * dt;
+  ga_[1] = ga_[0] + (gr_[0] + gr_[1]) / 2 * std::min(dt, 4.0);  // one piece at most 4 s, as the core
   if (grail_[0] || grail_[1]) {
     grailed_ = true;
     grailed_end_ = t_ns;

@@ -34,8 +34,11 @@ class GyroIntegrator {
 
   uint64_t t_[2]{};
   RateQ24 r_[2]{};
-  int64_t angle_[2]{};  // integrated angle at t_[i], Q32 (16x finer than the result:
-                        // 1000 rounded steps a second stay below 1e-8 rad)
+  int64_t angle_[2]{};  // integrated angle at t_[i], Q32 (16x finer than the result), rounded
+  // The exact integral at t_[1]: sum_ + sum_rem_ / 7812500 in Q32 (sum_rem_
+  // in [0, 7812500)), so that no rounding adds up over a day of samples.
+  int64_t sum_ = 0;
+  int64_t sum_rem_ = 0;
   uint32_t count_ = 0;
   uint64_t t_first_ = 0;  // time of the first sample since reset
   bool railed_ = false;   // a trapezoid has had a railed end
