@@ -65,7 +65,7 @@ Estimate Estimator::step(const FramePair& frames) {
   const int64_t angle = gyro_.angle_at(frames.t_ns);
   const int64_t since_prev_ns = have_prev_frame_ ? static_cast<int64_t>(frames.t_ns - prev_t_ns_) : 0;
   // Gyro angle of the interval with the learned offset removed.
-  const int64_t dtheta = have_prev_frame_ ? angle - prev_gyro_angle_ - gyro_offset_.angle_over(since_prev_ns) : 0;
+  const int64_t dtheta = have_prev_frame_ ? angle - prev_gyro_angle_ - gyro_offset_.take_angle_over(since_prev_ns) : 0;
   heading_ = have_prev_frame_ ? heading_ + dtheta : angle;
   est.heading = fx::wrap_pi(heading_);
   // Every frame whose interval [previous frame, this frame] the samples do not cover.
