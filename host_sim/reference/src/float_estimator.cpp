@@ -99,7 +99,14 @@ FloatBank build_float_bank(const EstimatorSettings& s) {
 }
 
 FloatEstimator::FloatEstimator(const EstimatorSettings& s) : s_(s) {
-  gyro_gap_ns_ = uint64_t{to_fixed_config(s).gyro_gap_us} * 1000;  // same validation as the fixed engine; throws
+  // Same validation as the fixed engine (throws), and its timing thresholds
+  // in integer nanoseconds, so that both flag on the same frames even at a tie.
+  const EstimatorConfig c = to_fixed_config(s);
+  gyro_gap_ns_ = uint64_t{c.gyro_gap_us} * 1000;
+  frame_period_ns_ = uint64_t{c.frame_period_us} * 1000;
+  max_gap_ns_ = uint64_t{c.max_gap_us} * 1000;
+  converging_ns_ = 3 * uint64_t{c.tau_us} * 1000;
+  still_min_ns_ = uint64_t{c.still_min_us} * 1000;
   bank_ = build_float_bank(s_);
 }
 
@@ -237,7 +244,7 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
   gmax_spacing_ = 0;
   const bool gyro_saturated = gyro_saturated_since(first ? t_ns : prev_t_);  // V held over the interval
   if (gyro_saturated) status |= kStatusSaturated;
-  auto converging = [&] { return !started_ || since_start_ < 3 * s_.tau; };
+  auto converging = [&] { return !started_ || since_start_ns_ < converging_ns_; };
   if (m.no_light || m.no_stereo) {
     status |= (m.no_light ? kStatusNoLight : kStatusNoStereo) | kStatusLowTexture;
     have_prev_ = false;
@@ -247,13 +254,13 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
     prev_ = m;
   } else {
     const double dt = (static_cast<double>(t_ns) - static_cast<double>(prev_t_)) * 1e-9;
-    if (t_ns <= prev_t_ || dt > s_.max_gap) {
+    if (t_ns <= prev_t_ || t_ns - prev_t_ > max_gap_ns_) {
       status |= kStatusFrameGap | kStatusRestarted;
       started_ = false;  // V held; the next interval re-initialises it
-      since_start_ = 0;
+      since_start_ns_ = 0;
       have_ref_ = still_ = false;
     } else {
-      if (dt > 1.5 * s_.frame_period) status |= kStatusFrameGap;
+      if ((t_ns - prev_t_) * 2 > frame_period_ns_ * 3) status |= kStatusFrameGap;
       const Eigen::VectorXd s_bar = (m.diff + prev_.diff) / 2;
       const Eigen::VectorXd r_bar = (m.rot + prev_.rot) / 2;
       const Eigen::VectorXd e = (m.mid - prev_.mid) - dtheta * r_bar;
@@ -280,10 +287,10 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
         if (!started_) {
           v_ = est.v_direct;
           started_ = true;
-          since_start_ = 0;
+          since_start_ns_ = 0;
         } else {
           v_ += (est.v_direct - v_) * dt / (s_.tau + dt);
-          since_start_ += dt;
+          since_start_ns_ += t_ns - prev_t_;
         }
       }
       distance_ += v_ * dt;
@@ -325,11 +332,11 @@ void FloatEstimator::learn_offset(const FloatMeasurement& m, uint64_t t_ns, doub
   }
   const double d = s_.baseline * (m.mid - ref_.mid).dot(m.diff) / den;
   if (std::fabs(d) > s_.still_distance) return anchor();
-  const double span = (static_cast<double>(t_ns) - static_cast<double>(t_ref_)) * 1e-9;
-  still_ = span >= s_.still_min;
+  const uint64_t span_ns = t_ns - t_ref_;  // compared in integer ns, as the core
+  still_ = span_ns >= still_min_ns_;
   if (still_) {
-    offset_ = (angle - angle_ref_) / span;
-    if (span > 20) anchor();  // as the core: not still again until still_min has passed
+    offset_ = (angle - angle_ref_) / (static_cast<double>(span_ns) * 1e-9);
+    if (span_ns > 20000000000ull) anchor();  // renewed as the core: not still again until still_min has passed
   }
 }
 

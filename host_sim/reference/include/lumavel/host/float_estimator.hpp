@@ -62,11 +62,13 @@ class FloatEstimator {
   bool grailed_ = false;        // a trapezoid has had a clipped end ...
   uint64_t grailed_end_ = 0;    // ... ending here
   uint64_t gmax_spacing_ = 0;   // ns, since the last frame
-  uint64_t gyro_gap_ns_ = 0;    // the configuration's gyro gap, whole microseconds as the core has it
+  uint64_t gyro_gap_ns_ = 0;    // the configuration's timing, whole microseconds as the core has it
+  uint64_t frame_period_ns_ = 0, max_gap_ns_ = 0, converging_ns_ = 0, still_min_ns_ = 0;
   // observer
   FloatMeasurement prev_;
   bool have_prev_ = false, started_ = false;
-  double v_ = 0, since_start_ = 0, distance_ = 0, prev_angle_ = 0;
+  double v_ = 0, distance_ = 0, prev_angle_ = 0;
+  uint64_t since_start_ns_ = 0;
   uint64_t prev_t_ = 0;
   // gyro offset learning and the corrected heading
   double offset_ = 0, heading_ = 0, angle_ref_ = 0;
