@@ -7,13 +7,21 @@
 namespace lumavel {
 namespace {
 
-// distance += v * dt: Q16 m/s * ns -> Q32 m, split to stay inside int64.
-DistQ32 advance(DistQ32 s, SpeedQ16 v, int64_t dt_ns) {
+// distance += v * dt: Q16 m/s * ns -> Q32 m, split to stay inside int64. The
+// division's remainder is carried to the next frame (floor division), so that
+// no truncation adds up (0.2 mm a day at 60 Hz, 3 mm at 1 kHz, before).
+DistQ32 advance(DistQ32 s, SpeedQ16 v, int64_t dt_ns, int64_t* rem) {
   const int64_t x = int64_t{v} * dt_ns;  // Q16 m/s * ns, |x| < 2^31 * 2^32
   constexpr int64_t kNsPerS = 1000000000;
   const int64_t ip = x / kNsPerS;
-  const int64_t rem = x % kNsPerS;
-  return s + ip * 65536 + (rem * 65536) / kNsPerS;
+  const int64_t frac = (x % kNsPerS) * 65536 + *rem;  // |.| < 2^47
+  int64_t q = frac / kNsPerS, r = frac % kNsPerS;
+  if (r < 0) {
+    r += kNsPerS;
+    --q;
+  }
+  *rem = r;
+  return s + ip * 65536 + q;
 }
 
 }  // namespace
@@ -42,6 +50,7 @@ void Estimator::reset() {
   frame_index_ = 0;
   have_prev_frame_ = false;
   distance_ = 0;
+  distance_rem_ = 0;
 }
 
 Estimate Estimator::step(const FramePair& frames) {
@@ -113,7 +122,7 @@ Estimate Estimator::step(const FramePair& frames) {
       if (o.saturated) status |= kStatusSaturated;
       est.v_direct = o.v_direct;
       est.texture = o.texture;
-      distance_ = advance(distance_, o.v, dt_ns);
+      distance_ = advance(distance_, o.v, dt_ns, &distance_rem_);
     }
     cur_ = next;
   }

@@ -68,6 +68,7 @@ class Estimator {
   uint32_t frame_index_ = 0;    // wraps at 2^32: never a state
   bool have_prev_frame_ = false;  // a frame was stepped since the reset
   DistQ32 distance_ = 0;
+  int64_t distance_rem_ = 0;  // carried remainder of the distance integral, [0, 1e9)
 };
 
 }  // namespace lumavel
