@@ -12,7 +12,7 @@ constexpr double kAccel = 1.0;                 // m/s^2, speeding up and slowing
 constexpr double kBurstsPerFrame = 300.0 / (86400 * 60);
 constexpr double kDropPerFrame = 0.002;
 constexpr double kGyroNoise = 0.002;           // rad/s rms per sample
-constexpr uint64_t kGyroPeriodNs = 5000000;    // 200 Hz
+constexpr auto kGyroPeriodNs = static_cast<uint64_t>(1e9 / DaySchedule::kGyroHz);
 
 }  // namespace
 

@@ -25,7 +25,7 @@ class DaySchedule {
  public:
   static constexpr double kFps = 60;
   static constexpr double kGyroHz = 200;
-  static constexpr double kPathRadius = 20;  // must match the scene's
+  static constexpr double kPathRadius = 20;  // m: the scene is given the same (PillarScene::path_radius)
 
   explicit DaySchedule(uint64_t seed);
 

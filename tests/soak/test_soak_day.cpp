@@ -88,6 +88,7 @@ double soak_hours() {
 
 Figures run_day(double hours, DaySchedule& day) {
   soak::PillarScene scene;
+  scene.path_radius = DaySchedule::kPathRadius;
   const host::EstimatorSettings s = scene.settings();
   auto fixed = host::make_engine(host::EngineKind::kFixed, s);
   auto dbl = host::make_engine(host::EngineKind::kFloat, s);
