@@ -155,7 +155,7 @@ int main(int argc, char** argv) {
       report[20] ^= 0x40;  // corrupt: the device must refuse it (CRC)
       set_feature(o, report, n);
       uint8_t mailbox[lumavel::protocol::kMailboxSize];
-      const size_t m = lumavel::protocol::encode_mailbox_request(lumavel::protocol::kReportConfig, mailbox, sizeof mailbox);
+      const size_t m = lumavel::protocol::encode_mailbox_request(lumavel::protocol::kReportConfig, 0x5A, mailbox, sizeof mailbox);
       set_feature(o, mailbox, m);
       get_feature(o, lumavel::protocol::kReportDeviceInfo);
     }

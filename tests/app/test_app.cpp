@@ -230,7 +230,7 @@ TEST(AppFeatures, SetThatCannotBePersistedStillAppliesAndSaysSo) {
 
 TEST(AppFeatures, MailboxSendsTheConfigurationAsInputChunks) {
   std::vector<uint8_t> m(protocol::kMailboxSize);
-  protocol::encode_mailbox_request(protocol::kReportConfig, m.data(), m.size());
+  protocol::encode_mailbox_request(protocol::kReportConfig, 0x42, m.data(), m.size());
   request(protocol::kReportMailbox, true, m);
   CHECK_EQUAL(1, env->link.replies[0][0]);
   std::vector<uint8_t> whole;
@@ -238,10 +238,32 @@ TEST(AppFeatures, MailboxSendsTheConfigurationAsInputChunks) {
     if (in[0] != protocol::kReportFeatureChunk) continue;
     protocol::FeatureChunk c{};
     CHECK_TRUE(protocol::decode_feature_chunk(in.data(), in.size(), c).ok());
+    CHECK_EQUAL(0x42, c.tag);  // the request's tag, in every chunk
     CHECK_EQUAL(whole.size(), c.offset);
     whole.insert(whole.end(), c.data, c.data + c.length);
   }
   CHECK_TRUE(encoded(protocol::default_device_config()) == whole);
+}
+
+TEST(AppFeatures, ANewerMailboxRequestReplacesOneNotYetAnswered) {
+  // Two requests served in the same poll: only the later one is answered,
+  // with its own tag, so the host waiting for it never takes the other.
+  std::vector<uint8_t> a(protocol::kMailboxSize), b(protocol::kMailboxSize);
+  protocol::encode_mailbox_request(protocol::kReportConfig, 7, a.data(), a.size());
+  protocol::encode_mailbox_request(protocol::kReportDeviceInfo, 8, b.data(), b.size());
+  env->link.pending.push_back({protocol::kReportMailbox, true, a});
+  env->link.pending.push_back({protocol::kReportMailbox, true, b});
+  CHECK_TRUE(RunState::kFrame == env->app.run_once());
+  int chunks = 0;
+  for (const auto& in : env->link.inputs) {
+    if (in[0] != protocol::kReportFeatureChunk) continue;
+    protocol::FeatureChunk c{};
+    CHECK_TRUE(protocol::decode_feature_chunk(in.data(), in.size(), c).ok());
+    CHECK_EQUAL(8, c.tag);
+    CHECK_EQUAL(protocol::kReportDeviceInfo, c.report_id);
+    ++chunks;
+  }
+  CHECK_EQUAL(1, chunks);
 }
 
 TEST(AppFeatures, UnknownReportsStall) {

@@ -187,7 +187,7 @@ TEST(AppLens, TablesReadBackThroughGetAndMailbox) {
   for (int i = 0; i < 17; ++i) CHECK_EQUAL(table[0][static_cast<size_t>(24 + i)], got.offsets[i]);
   // The same piece through the mailbox (one 0x84 chunk).
   std::vector<uint8_t> m(protocol::kMailboxSize);
-  protocol::encode_mailbox_request(protocol::kReportLens, m.data(), m.size());
+  protocol::encode_mailbox_request(protocol::kReportLens, 1, m.data(), m.size());
   env->link.inputs.clear();
   CHECK_EQUAL(1u, request(protocol::kReportMailbox, true, m));
   size_t chunks = 0;

@@ -73,3 +73,36 @@ TEST(GyroOffset, MovingRigIsNeverStill) {
   LONGS_EQUAL(0, static_cast<long>(r.still_frames));
   DOUBLES_EQUAL(0.0, r.learned, 1e-12);
 }
+
+#include "lumavel/core/gyro_offset.hpp"
+
+TEST(GyroOffset, ADayOfFrameIntervalsAddsNoRounding) {
+  // Learn 0.0175 rad/s from a still reference, then subtract it over a day
+  // of 60 Hz intervals: the sum must stay on offset * time.
+  GyroOffset g;
+  StereoMeasurement m{};
+  m.count = 1;
+  m.diff[0] = 1 << 24;
+  const RateQ24 rate = 293601;  // 0.0175 rad/s in Q24
+  const auto angle = [&](uint64_t t) { return static_cast<int64_t>(rate) * static_cast<int64_t>(t) / 62500000; };
+  for (uint64_t t = 0; t <= 1000000000; t += 16666667)
+    g.update({&m, t, angle(t), true, 1 << 20, 1 << 15, 500000});
+  CHECK(g.still());
+  const RateQ24 learned = g.offset();
+  int64_t sum = 0;
+  const int64_t n = 24 * 3600 * 60;
+  int64_t t_ns = 0;
+  for (int64_t i = 0; i < n; ++i) {
+    const int64_t dt = i % 3 == 2 ? 16666666 : 16666667;  // 60 Hz in whole nanoseconds
+    sum += g.take_angle_over(dt);
+    t_ns += dt;
+  }
+  const double expected = std::ldexp(static_cast<double>(learned), -24) * static_cast<double>(t_ns) * 1e-9;
+  const double err = std::ldexp(static_cast<double>(sum), -28) - expected;
+  std::printf("\n  offset %.7f rad/s over 24 h of 60 Hz intervals: summed angle - offset * time = %.2e rad",
+              std::ldexp(static_cast<double>(learned), -24), err);
+  CHECK(std::fabs(err) < 1e-8);
+  // A 3 h gap in one piece does not overflow.
+  DOUBLES_EQUAL(std::ldexp(static_cast<double>(learned), -24) * 10800,
+                std::ldexp(static_cast<double>(g.take_angle_over(10800ll * 1000000000)), -28), 1e-8);
+}

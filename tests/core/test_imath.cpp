@@ -60,6 +60,18 @@ TEST(IMath, Isqrt) {
 TEST(IMath, WrapPi) {
   DOUBLES_EQUAL(-M_PI + 0.1, rad(fx::wrap_pi(std::llround(std::ldexp(M_PI + 0.1, 28)))), 1e-8);
   DOUBLES_EQUAL(0.5, rad(fx::wrap_pi(std::llround(std::ldexp(0.5 + 6 * M_PI, 28)))), 1e-7);
+  // Exact after any number of turns (2 kPiQ28 would gain 3.5e-9 rad a turn:
+  // 3.5e-3 rad after a million), both ways, and inside [-pi, pi) at the ends.
+  for (long turns : {1000000L, -1000000L, 123456789L}) {
+    const long double a = 0.25L + 2 * 3.14159265358979323846264338L * static_cast<long double>(turns);
+    DOUBLES_EQUAL(0.25, rad(fx::wrap_pi(std::llround(std::ldexp(a, 28)))), 1e-8);
+  }
+  for (int64_t a = -3 * int64_t{fx::kPiQ28}; a < 3 * int64_t{fx::kPiQ28}; a += 9999991) {
+    const AngleQ28 w = fx::wrap_pi(a);
+    CHECK(w >= -fx::kPiQ28 && w < fx::kPiQ28);
+  }
+  CHECK(fx::wrap_pi(fx::kPiQ28) < 0);
+  CHECK_EQUAL(-fx::kPiQ28 + 1, fx::wrap_pi(-fx::kPiQ28 + 1));
 }
 
 TEST(IMath, Atan2FastWithin2e7Rad) {

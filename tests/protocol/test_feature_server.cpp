@@ -258,8 +258,10 @@ TEST(FeatureServer, PartialOrMismatchedLensIsRefusedAsLens) {
   CHECK_EQUAL(static_cast<int>(ConfigField::kLens), s.info().config_status);
   CHECK_EQUAL(40, s.config().width);
   CHECK_EQUAL(0, store.saves);
-  // The right one goes through.
+  // Every set ends an upload: the right one goes through once the table is sent again.
   encode_config(with_lens(kLensCam0, t0, nullptr), buf, sizeof buf);
+  CHECK_EQUAL(0u, FeatureServer::handle(&s, kReportConfig, true, buf, sizeof buf, sizeof buf));
+  CHECK_TRUE(upload(s, 0, t0, 81));
   CHECK_EQUAL(1u, FeatureServer::handle(&s, kReportConfig, true, buf, sizeof buf, sizeof buf));
   CHECK_TRUE(app.had_lens[0]);
   CHECK_FALSE(app.had_lens[1]);
@@ -275,14 +277,15 @@ TEST(FeatureServer, LensPiecesOutOfOrderOrBeyondCapacityAreRefused) {
   uint8_t buf[kLensChunkSize];
   encode_lens_chunk(c, buf, sizeof buf);
   CHECK_EQUAL(0u, FeatureServer::handle(&s, kReportLens, true, buf, sizeof buf, sizeof buf));
-  CHECK_EQUAL(static_cast<int>(ConfigField::kLens), s.info().config_status);
+  CHECK_EQUAL(static_cast<int>(ConfigField::kLens), s.info().lens_status);
+  CHECK_EQUAL(0, s.info().config_status);  // the last configuration set is still the boot's, accepted
   c.first = static_cast<uint8_t>(kMaxLensEdges - 10);  // past the build's columns + 1
   encode_lens_chunk(c, buf, sizeof buf);
   CHECK_EQUAL(0u, FeatureServer::handle(&s, kReportLens, true, buf, sizeof buf, sizeof buf));
   encode_lens_chunk(c, buf, sizeof buf);
   buf[7] ^= 1;  // CRC
   CHECK_EQUAL(0u, FeatureServer::handle(&s, kReportLens, true, buf, sizeof buf, sizeof buf));
-  CHECK_EQUAL(static_cast<int>(ConfigField::kMalformed), s.info().config_status);
+  CHECK_EQUAL(static_cast<int>(ConfigField::kMalformed), s.info().lens_status);
 }
 
 TEST(FeatureServer, StoredLensWithBadTableFallsBackToDefaults) {
@@ -305,4 +308,120 @@ TEST(FeatureServer, StoredLensWithBadTableFallsBackToDefaults) {
   FeatureServer s3(identity(), &store, apply, &app2);
   s3.boot(default_device_config());
   CHECK_EQUAL(kConfigDefaults, s3.info().config_source);
+}
+
+namespace {
+
+// Sets a configuration; returns whether the device accepted it.
+bool set(FeatureServer& s, const DeviceConfig& c) {
+  uint8_t buf[kConfigSize];
+  encode_config(c, buf, sizeof buf);
+  return FeatureServer::handle(&s, kReportConfig, true, buf, sizeof buf, sizeof buf) == 1;
+}
+
+}  // namespace
+
+TEST(FeatureServer, UploadsAreStagedApartFromTheTablesInForce) {
+  FeatureServer s(identity(), &store, apply, &app);
+  s.boot(default_device_config());
+  static lumavel::EdgeOffsetQ15 a[kMaxLensEdges], b[kMaxLensEdges];
+  table(a, 80, 900);
+  table(b, 80, -500);
+  CHECK_TRUE(upload(s, 0, a, 81));
+  CHECK_TRUE(set(s, with_lens(kLensCam0, a, nullptr)));
+  CHECK_EQUAL(0, s.info().staged);
+  // The host goes away two pieces into table b.
+  CHECK_TRUE(upload(s, 0, b, 48));
+  CHECK_EQUAL(1, s.info().staged);        // info says an upload is pending ...
+  CHECK_EQUAL(0, s.info().config_status); // ... and that the last set was accepted: both true
+  CHECK_EQUAL(0, s.info().lens_status);
+  // A get reads the tables in force: complete, and the ones lens_crc names.
+  for (uint8_t first = 0; first < 81; first += 24) {
+    const LensChunk p = read_piece(s, 0, first);
+    CHECK_EQUAL(first + 24 <= 81 ? 24 : 81 - first, p.count);
+    MEMCMP_EQUAL(a + first, p.offsets, p.count * sizeof a[0]);
+  }
+}
+
+TEST(FeatureServer, AnUploadNeverAppliedIsNotTakenByAnUnrelatedSet) {
+  FeatureServer s(identity(), &store, apply, &app);
+  s.boot(default_device_config());
+  static lumavel::EdgeOffsetQ15 a[kMaxLensEdges], b[kMaxLensEdges];
+  table(a, 80, 900);
+  table(b, 80, -500);
+  CHECK_TRUE(upload(s, 0, a, 81));
+  CHECK_TRUE(set(s, with_lens(kLensCam0, a, nullptr)));
+  // Table b uploaded completely, but its configuration never arrives.
+  CHECK_TRUE(upload(s, 0, b, 81));
+  // An unrelated set (another tau, the table in force by its CRC): b stays out.
+  DeviceConfig c = with_lens(kLensCam0, a, nullptr);
+  c.tau_us = 150000;
+  CHECK_TRUE(set(s, c));
+  MEMCMP_EQUAL(a, app.lens[0], 81 * sizeof a[0]);
+  MEMCMP_EQUAL(a, s.lens().offsets[0], 81 * sizeof a[0]);
+  CHECK_EQUAL(0, s.info().staged);  // the set ended the upload
+  // Nor by a set naming b's CRC later: the staging was cleared.
+  CHECK_FALSE(set(s, with_lens(kLensCam0, b, nullptr)));
+  CHECK_EQUAL(static_cast<int>(ConfigField::kLens), s.info().config_status);
+  MEMCMP_EQUAL(a, s.lens().offsets[0], 81 * sizeof a[0]);
+  // Stored: the configuration in force with table a.
+  App app2;
+  FeatureServer s2(identity(), &store, apply, &app2);
+  CHECK_TRUE(ConfigField::kOk == s2.boot(default_device_config()));
+  CHECK_EQUAL(150000u, s2.config().tau_us);
+  MEMCMP_EQUAL(a, app2.lens[0], 81 * sizeof a[0]);
+}
+
+TEST(FeatureServer, ASetTakesTheStagedTablesItsCrcNamesAndKeepsTheOthersInForce) {
+  FeatureServer s(identity(), &store, apply, &app);
+  s.boot(default_device_config());
+  static lumavel::EdgeOffsetQ15 a[kMaxLensEdges], b[kMaxLensEdges], c1[kMaxLensEdges];
+  table(a, 80, 900);
+  table(b, 80, -500);
+  table(c1, 80, 300);
+  CHECK_TRUE(upload(s, 0, a, 81));
+  CHECK_TRUE(upload(s, 1, c1, 81));
+  CHECK_TRUE(set(s, with_lens(kLensCam0 | kLensCam1, a, c1)));
+  // Only camera 0's table changes: b staged, camera 1's stays the one in force.
+  CHECK_TRUE(upload(s, 0, b, 81));
+  CHECK_TRUE(set(s, with_lens(kLensCam0 | kLensCam1, b, c1)));
+  MEMCMP_EQUAL(b, app.lens[0], 81 * sizeof b[0]);
+  MEMCMP_EQUAL(c1, app.lens[1], 81 * sizeof c1[0]);
+  MEMCMP_EQUAL(b, s.lens().offsets[0], 81 * sizeof b[0]);
+  // Dropping camera 1's table: the in-force area holds only what is named.
+  CHECK_TRUE(set(s, with_lens(kLensCam0, b, nullptr)));
+  CHECK_EQUAL(0, s.lens().filled[1]);
+  CHECK_EQUAL(0, read_piece(s, 1, 0).count);
+}
+
+TEST(FeatureServer, ABrokenUploadLeavesTheRepairingSetWorking) {
+  FeatureServer s(identity(), &store, apply, &app);
+  s.boot(default_device_config());
+  static lumavel::EdgeOffsetQ15 a[kMaxLensEdges], b[kMaxLensEdges];
+  table(a, 80, 900);
+  table(b, 80, -500);
+  CHECK_TRUE(upload(s, 0, a, 81));
+  CHECK_TRUE(set(s, with_lens(kLensCam0, a, nullptr)));
+  // Piece 2 of b lost in transit: piece 3 arrives out of order and is refused.
+  CHECK_TRUE(upload(s, 0, b, 24));
+  LensChunk p{};
+  p.camera = 0;
+  p.first = 48;
+  p.count = 24;
+  for (int i = 0; i < 24; ++i) p.offsets[i] = b[48 + i];
+  uint8_t buf[kLensChunkSize];
+  encode_lens_chunk(p, buf, sizeof buf);
+  CHECK_EQUAL(0u, FeatureServer::handle(&s, kReportLens, true, buf, sizeof buf, sizeof buf));
+  CHECK_EQUAL(static_cast<int>(ConfigField::kLens), s.info().lens_status);
+  CHECK_EQUAL(0, s.info().config_status);
+  // b's configuration is refused (incomplete), saying so; a stays in force.
+  CHECK_FALSE(set(s, with_lens(kLensCam0, b, nullptr)));
+  CHECK_EQUAL(static_cast<int>(ConfigField::kLens), s.info().config_status);
+  MEMCMP_EQUAL(a, s.lens().offsets[0], 81 * sizeof a[0]);
+  // The repair: everything again, from piece 0.
+  CHECK_TRUE(upload(s, 0, b, 81));
+  CHECK_TRUE(set(s, with_lens(kLensCam0, b, nullptr)));
+  CHECK_EQUAL(0, s.info().config_status);
+  CHECK_EQUAL(0, s.info().lens_status);
+  MEMCMP_EQUAL(b, app.lens[0], 81 * sizeof b[0]);
 }

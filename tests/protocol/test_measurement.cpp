@@ -17,7 +17,7 @@ Measurement sample() {
   m.v = -1234567;                 // -18.8 m/s
   m.distance = -0x123456789ABLL;  // negative and wide
   m.heading = -lumavel::fx::kPiQ28;  // the lower bound is included
-  m.status = 0x00D5;  // STILL (bit 7) is a known bit in version 2
+  m.status = 0x01D5;  // STILL (bit 7) and NO_STEREO (bit 8) are known bits
   m.overruns = 65535;
   m.gyro_offset = -123457;  // -7.4 mrad/s
   return m;
@@ -125,13 +125,15 @@ TEST(Measurement, HeadingOutsidePiRejected) {
 
 TEST(Measurement, UnknownStatusBitRejected) {
   Measurement m = sample();
-  m.status = 0x0100;  // bits 8..15 are not defined in version 2
-  uint8_t buf[kMeasurementSize];
-  encode_measurement(m, buf, sizeof buf);
-  Measurement d{};
-  const DecodeResult r = decode_measurement(buf, sizeof buf, d);
-  CHECK_TRUE(ReportError::kOutOfRange == r.error);
-  STRCMP_EQUAL("status", r.field);
+  for (uint16_t bit = 9; bit < 16; ++bit) {  // bits 9..15 are not defined
+    m.status = static_cast<uint16_t>(1u << bit);
+    uint8_t buf[kMeasurementSize];
+    encode_measurement(m, buf, sizeof buf);
+    Measurement d{};
+    const DecodeResult r = decode_measurement(buf, sizeof buf, d);
+    CHECK_TRUE(ReportError::kOutOfRange == r.error);
+    STRCMP_EQUAL("status", r.field);
+  }
 }
 
 TEST(Measurement, RejectedDecodeLeavesOutputUntouched) {

@@ -114,9 +114,10 @@ void App::send_measurement(const Estimate& e) {
 size_t App::handle_feature(uint8_t id, bool is_set, uint8_t* buf, size_t len, size_t cap) {
   ++counters_.feature_requests;
   if (is_set && id == protocol::kReportMailbox) {
-    uint8_t wanted = 0;
-    if (!protocol::decode_mailbox_request(buf, len, wanted).ok()) return 0;
-    mailbox_id_ = wanted;
+    uint8_t wanted = 0, tag = 0;
+    if (!protocol::decode_mailbox_request(buf, len, wanted, tag).ok()) return 0;
+    mailbox_id_ = wanted;  // replaces a request not yet answered
+    mailbox_tag_ = tag;
     return 1;
   }
   return protocol::FeatureServer::handle(&features_, id, is_set, buf, len, cap);
@@ -133,13 +134,8 @@ void App::send_mailbox() {
   const size_t n = protocol::FeatureServer::handle(&features_, mailbox_id_, false, report, sizeof report,
                                                   sizeof report);
   mailbox_id_ = 0;
-  for (size_t off = 0; off < n; off += protocol::kFeatureChunkData) {
-    protocol::FeatureChunk c{};
-    c.report_id = report[0];
-    c.offset = static_cast<uint8_t>(off);
-    c.length = static_cast<uint8_t>(n - off < protocol::kFeatureChunkData ? n - off : protocol::kFeatureChunkData);
-    c.total = static_cast<uint8_t>(n);
-    for (size_t i = 0; i < c.length; ++i) c.data[i] = report[off + i];
+  for (size_t i = 0; i < protocol::feature_chunk_count(n); ++i) {
+    const protocol::FeatureChunk c = protocol::feature_chunk(report, n, mailbox_tag_, i);
     uint8_t chunk[protocol::kFeatureChunkSize];
     const size_t m = protocol::encode_feature_chunk(c, chunk, sizeof chunk);
     if (m == 0 || !hal_.link.send_input(chunk, m)) ++counters_.reports_dropped;

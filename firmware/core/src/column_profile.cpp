@@ -95,4 +95,14 @@ void column_profile(const uint8_t* pixels, uint16_t width, uint16_t height, uint
   out.clip_sampled = static_cast<uint32_t>((height + kClipRowStep - 1) / kClipRowStep) * width;
 }
 
+bool same_textured_profile(const ColumnProfile& a, const ColumnProfile& b) {
+  if (a.width != b.width || a.width == 0) return false;
+  bool flat = true;
+  for (uint16_t u = 0; u < a.width; ++u) {
+    if (a.sum[u] != b.sum[u]) return false;
+    flat = flat && a.sum[u] == a.sum[0];
+  }
+  return !flat;
+}
+
 }  // namespace lumavel

@@ -7,13 +7,21 @@
 namespace lumavel {
 namespace {
 
-// distance += v * dt: Q16 m/s * ns -> Q32 m, split to stay inside int64.
-DistQ32 advance(DistQ32 s, SpeedQ16 v, int64_t dt_ns) {
+// distance += v * dt: Q16 m/s * ns -> Q32 m, split to stay inside int64. The
+// division's remainder is carried to the next frame (floor division), so that
+// no truncation adds up (0.2 mm a day at 60 Hz, 3 mm at 1 kHz, before).
+DistQ32 advance(DistQ32 s, SpeedQ16 v, int64_t dt_ns, int64_t* rem) {
   const int64_t x = int64_t{v} * dt_ns;  // Q16 m/s * ns, |x| < 2^31 * 2^32
   constexpr int64_t kNsPerS = 1000000000;
   const int64_t ip = x / kNsPerS;
-  const int64_t rem = x % kNsPerS;
-  return s + ip * 65536 + (rem * 65536) / kNsPerS;
+  const int64_t frac = (x % kNsPerS) * 65536 + *rem;  // |.| < 2^47
+  int64_t q = frac / kNsPerS, r = frac % kNsPerS;
+  if (r < 0) {
+    r += kNsPerS;
+    --q;
+  }
+  *rem = r;
+  return s + ip * 65536 + q;
 }
 
 }  // namespace
@@ -40,7 +48,9 @@ void Estimator::reset() {
   prev_t_ns_ = 0;
   prev_gyro_angle_ = 0;
   frame_index_ = 0;
+  have_prev_frame_ = false;
   distance_ = 0;
+  distance_rem_ = 0;
 }
 
 Estimate Estimator::step(const FramePair& frames) {
@@ -62,17 +72,26 @@ Estimate Estimator::step(const FramePair& frames) {
     status |= kStatusSaturated;
 
   const int64_t angle = gyro_.angle_at(frames.t_ns);
-  const int64_t since_prev_ns = frame_index_ > 1 ? static_cast<int64_t>(frames.t_ns - prev_t_ns_) : 0;
+  const int64_t since_prev_ns = have_prev_frame_ ? static_cast<int64_t>(frames.t_ns - prev_t_ns_) : 0;
   // Gyro angle of the interval with the learned offset removed.
-  const int64_t dtheta = frame_index_ > 1 ? angle - prev_gyro_angle_ - gyro_offset_.angle_over(since_prev_ns) : 0;
-  heading_ = frame_index_ > 1 ? heading_ + dtheta : angle;
+  const int64_t dtheta = have_prev_frame_ ? angle - prev_gyro_angle_ - gyro_offset_.take_angle_over(since_prev_ns) : 0;
+  heading_ = have_prev_frame_ ? heading_ + dtheta : angle;
   est.heading = fx::wrap_pi(heading_);
-  if (gyro_.take_max_spacing() > uint64_t{cfg_.gyro_gap_us} * 1000) status |= kStatusGyroGap;
+  // Every frame whose interval [previous frame, this frame] the samples do not cover.
+  const uint64_t gyro_gap_ns = uint64_t{cfg_.gyro_gap_us} * 1000;
+  const uint64_t interval_start = have_prev_frame_ ? prev_t_ns_ : frames.t_ns;
+  if (gyro_.take_max_spacing() > gyro_gap_ns || !gyro_.covers(interval_start, frames.t_ns, gyro_gap_ns))
+    status |= kStatusGyroGap;
+  // A railed gyro sample: the interval's rotation is unknown, V is held over it.
+  const bool gyro_saturated = gyro_.saturated_since(interval_start);
+  if (gyro_saturated) status |= kStatusSaturated;
 
-  if (m.no_light) {
+  const bool no_stereo = same_textured_profile(p[0], p[1]);
+  if (m.no_light || no_stereo) {
     // Unusable frame: hold V, and pair the next good frame with nothing.
-    status |= kStatusNoLight | kStatusLowTexture;
+    status |= (m.no_light ? kStatusNoLight : kStatusNoStereo) | kStatusLowTexture;
     have_prev_ = false;
+    gyro_offset_.drop_reference();
   } else if (!have_prev_) {
     have_prev_ = true;
     cur_ = next;
@@ -81,6 +100,7 @@ Estimate Estimator::step(const FramePair& frames) {
     if (frames.t_ns <= prev_t_ns_ || dt_ns > int64_t{cfg_.max_gap_us} * 1000) {
       status |= kStatusFrameGap | kStatusRestarted;
       observer_.restart();
+      gyro_offset_.drop_reference();
     } else {
       if (dt_ns * 2 > int64_t{cfg_.frame_period_us} * 3000) status |= kStatusFrameGap;
       ObserverInput in{};
@@ -92,22 +112,24 @@ Estimate Estimator::step(const FramePair& frames) {
       in.tau_us = cfg_.tau_us;
       in.low_texture = cfg_.low_texture;
       in.baseline_correction = (cfg_.options & kOptionBaselineCorrection) != 0;
-      const ObserverOutput o = observer_.update(in);
-      if (!o.updated) status |= kStatusLowTexture;
+      const ObserverOutput o = gyro_saturated ? observer_.hold() : observer_.update(in);
+      if (!o.updated && !gyro_saturated) status |= kStatusLowTexture;
       if (cfg_.options & kOptionGyroOffsetLearning) {
+        if (status & (kStatusFrameGap | kStatusGyroGap)) gyro_offset_.drop_reference();
         gyro_offset_.update({&m, frames.t_ns, angle, o.updated, cfg_.baseline, cfg_.still_distance, cfg_.still_min_us});
         if (gyro_offset_.still()) status |= kStatusStill;
       }
       if (o.saturated) status |= kStatusSaturated;
       est.v_direct = o.v_direct;
       est.texture = o.texture;
-      distance_ = advance(distance_, o.v, dt_ns);
+      distance_ = advance(distance_, o.v, dt_ns, &distance_rem_);
     }
     cur_ = next;
   }
   if (observer_.converging_now()) status |= kStatusConverging;
   prev_t_ns_ = frames.t_ns;
   prev_gyro_angle_ = angle;
+  have_prev_frame_ = true;
   est.v = observer_.v();
   est.distance = distance_;
   est.status = status;

@@ -53,11 +53,19 @@ void GyroOffset::update(const StillnessInput& in) {
   }
 }
 
-int64_t GyroOffset::angle_over(int64_t dt_ns) const {
-  // Q24 rad/s * ns -> Q28 rad: * 16 / 1e9.
-  const int64_t x = int64_t{offset_} * dt_ns;
-  constexpr int64_t kDiv = 62500000;
-  return x >= 0 ? (x + kDiv / 2) / kDiv : -((-x + kDiv / 2) / kDiv);
+int64_t GyroOffset::take_angle_over(int64_t dt_ns) {
+  // Q24 rad/s * ns -> Q28 rad: * 16 / 1e9. Whole seconds apart, so that no
+  // gap overflows; the remainder of the rest carried (floor division).
+  constexpr int64_t kNsPerS = 1000000000, kDiv = 62500000;
+  const int64_t secs = dt_ns / kNsPerS, ns = dt_ns % kNsPerS;
+  const int64_t x = int64_t{offset_} * ns + angle_rem_;  // |.| < 2^31 * 1e9 + kDiv < 2^61
+  int64_t q = x / kDiv, r = x % kDiv;
+  if (r < 0) {
+    r += kDiv;
+    --q;
+  }
+  angle_rem_ = r;
+  return int64_t{offset_} * 16 * secs + q;
 }
 
 }  // namespace lumavel

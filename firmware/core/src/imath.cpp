@@ -121,12 +121,19 @@ uint32_t isqrt_digits(T v) {
 uint32_t isqrt32(uint32_t v) { return isqrt_digits(v); }
 uint32_t isqrt64(uint64_t v) { return isqrt_digits(v); }
 
+// 2 pi in Q28 is 1686629713 + 0.06525 LSB: whole turns are taken off with
+// that fraction (Q32), so that the wrap stays exact however many turns there
+// were (2 kPiQ28 is 0.93 LSB too large: 3.5e-9 rad gained per turn).
+constexpr int64_t kTwoPiQ28Whole = 1686629713;
+constexpr int64_t kTwoPiQ28FracQ32 = 280256794;
+
 AngleQ28 wrap_pi(int64_t a) {
-  const int64_t two_pi = int64_t{2} * kPiQ28;
-  a %= two_pi;
-  if (a >= kPiQ28) a -= two_pi;
-  if (a < -kPiQ28) a += two_pi;
-  return static_cast<AngleQ28>(a);
+  int64_t k = a / kTwoPiQ28Whole;  // turns, within one of the answer
+  auto rest = [a](int64_t turns) { return a - turns * kTwoPiQ28Whole - shr_round(turns * kTwoPiQ28FracQ32, 32); };
+  int64_t r = rest(k);
+  while (r >= kPiQ28) r = rest(++k);
+  while (r < -kPiQ28) r = rest(--k);
+  return static_cast<AngleQ28>(r);
 }
 
 }  // namespace lumavel::fx

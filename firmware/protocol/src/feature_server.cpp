@@ -7,6 +7,30 @@ FeatureServer::FeatureServer(const DeviceInfo& identity, hal::ConfigStore* store
     : info_(identity), store_(store), apply_(apply), ctx_(ctx) {
   info_.config_status = static_cast<uint8_t>(ConfigField::kOk);
   info_.config_source = kConfigDefaults;
+  info_.lens_status = static_cast<uint8_t>(ConfigField::kOk);
+  info_.staged = 0;
+}
+
+bool FeatureServer::pick_tables(const DeviceConfig& c, const EdgeOffsetQ15* tables[2]) const {
+  const uint16_t edges = static_cast<uint16_t>(c.width + 1u);
+  // Candidates per camera: [0] staged, [1] in force; null where not complete.
+  const EdgeOffsetQ15* cand[2][2] = {{nullptr, nullptr}, {nullptr, nullptr}};
+  for (int i = 0; i < 2; ++i) {
+    if ((c.lens & (1u << i)) == 0) continue;
+    if (staged_.filled[i] == edges) cand[i][0] = staged_.offsets[i];
+    if (lens_.filled[i] == edges) cand[i][1] = lens_.offsets[i];
+  }
+  for (int a = 0; a < 2; ++a)
+    for (int b = 0; b < 2; ++b) {
+      const EdgeOffsetQ15* t[2] = {cand[0][a], cand[1][b]};
+      bool complete = true;
+      for (int i = 0; i < 2; ++i) complete = complete && ((c.lens & (1u << i)) == 0 || t[i] != nullptr);
+      if (!complete || lens_crc(t, c.lens, edges) != c.lens_crc) continue;
+      tables[0] = t[0];
+      tables[1] = t[1];
+      return true;
+    }
+  return false;
 }
 
 ConfigField FeatureServer::apply_and_keep(const DeviceConfig& c, uint8_t source) {
@@ -14,14 +38,19 @@ ConfigField FeatureServer::apply_and_keep(const DeviceConfig& c, uint8_t source)
   if (v != ConfigField::kOk) return v;
   // Every table the configuration names must be complete and be the one it was made for.
   const EdgeOffsetQ15* tables[2] = {nullptr, nullptr};
-  for (int i = 0; i < 2; ++i) {
-    if ((c.lens & (1u << i)) == 0) continue;
-    if (lens_.filled[i] != c.width + 1u) return ConfigField::kLens;
-    tables[i] = lens_.offsets[i];
-  }
-  if (lens_crc(tables, c.lens, static_cast<uint16_t>(c.width + 1u)) != c.lens_crc) return ConfigField::kLens;
+  if (!pick_tables(c, tables)) return ConfigField::kLens;
   const ConfigField a = apply_ != nullptr ? apply_(ctx_, c, tables) : ConfigField::kOk;
   if (a != ConfigField::kOk) return a;
+  // The tables in force are now exactly those c names.
+  for (int i = 0; i < 2; ++i) {
+    if (tables[i] == nullptr) {
+      lens_.filled[i] = 0;
+      continue;
+    }
+    if (tables[i] != lens_.offsets[i])
+      for (uint16_t u = 0; u <= c.width; ++u) lens_.offsets[i][u] = tables[i][u];
+    lens_.filled[i] = static_cast<uint16_t>(c.width + 1u);
+  }
   config_ = c;
   info_.width = c.width;
   info_.height = c.height;
@@ -45,6 +74,7 @@ __attribute__((noinline)) bool FeatureServer::save_current() {
 }
 
 ConfigField FeatureServer::boot(const DeviceConfig& defaults) {
+  end_upload();
   DeviceConfig stored{};
   if (store_ != nullptr && load_stored(stored) && apply_and_keep(stored, kConfigStored) == ConfigField::kOk) {
     info_.config_status = static_cast<uint8_t>(ConfigField::kOk);
@@ -56,6 +86,11 @@ ConfigField FeatureServer::boot(const DeviceConfig& defaults) {
   return r;
 }
 
+void FeatureServer::end_upload() {
+  staged_.filled[0] = staged_.filled[1] = 0;
+  info_.staged = 0;
+}
+
 ConfigField FeatureServer::set_config(const uint8_t* buf, size_t len) {
   DeviceConfig c{};
   ConfigField r = parse_config(buf, len, c);
@@ -63,6 +98,7 @@ ConfigField FeatureServer::set_config(const uint8_t* buf, size_t len) {
   if (r == ConfigField::kOk && store_ != nullptr && !save_current()) {
     r = ConfigField::kStore;  // in force until reboot, but not persisted
   }
+  end_upload();  // applied or not, the next upload starts clean
   info_.config_status = static_cast<uint8_t>(r);
   return r;
 }
@@ -70,8 +106,12 @@ ConfigField FeatureServer::set_config(const uint8_t* buf, size_t len) {
 ConfigField FeatureServer::set_lens(const uint8_t* buf, size_t len) {
   LensChunk c{};
   ConfigField r = ConfigField::kMalformed;
-  if (decode_lens_chunk(buf, len, c).ok()) r = store_lens_chunk(lens_, c) ? ConfigField::kOk : ConfigField::kLens;
-  info_.config_status = static_cast<uint8_t>(r);
+  if (decode_lens_chunk(buf, len, c).ok()) {
+    // A select reads the tables in force; a piece goes to the staging.
+    r = store_lens_chunk(c.count == 0 ? lens_ : staged_, c) ? ConfigField::kOk : ConfigField::kLens;
+  }
+  info_.lens_status = static_cast<uint8_t>(r);
+  info_.staged = static_cast<uint8_t>((staged_.filled[0] != 0 ? 1u : 0u) | (staged_.filled[1] != 0 ? 2u : 0u));
   return r;
 }
 

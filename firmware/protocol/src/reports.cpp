@@ -82,6 +82,8 @@ size_t encode_device_info(const DeviceInfo& d, uint8_t* buf, size_t cap) {
   put_u8(buf, 29, d.max_kernels);
   put_u8(buf, 30, d.config_status);
   put_u8(buf, 31, d.config_source);
+  put_u8(buf, 32, d.lens_status);
+  put_u8(buf, 33, d.staged);
   seal(buf, kDeviceInfoSize);
   return kDeviceInfoSize;
 }
@@ -111,33 +113,41 @@ DecodeResult decode_device_info(const uint8_t* buf, size_t len, DeviceInfo& out)
   d.max_kernels = buf[29];
   d.config_status = buf[30];
   d.config_source = buf[31];
+  d.lens_status = buf[32];
+  d.staged = buf[33];
   if (d.max_columns == 0 || d.width > d.max_columns) return fail(ReportError::kOutOfRange, "width");
   if (d.max_rows == 0 || d.height > d.max_rows) return fail(ReportError::kOutOfRange, "height");
   if (d.max_kernels == 0) return fail(ReportError::kOutOfRange, "max_kernels");
   if (d.config_status > kMaxConfigStatus) return fail(ReportError::kOutOfRange, "config_status");
   if (d.config_source > kConfigSetByHost) return fail(ReportError::kOutOfRange, "config_source");
-  if (get_u16(buf, 32) != 0) return fail(ReportError::kOutOfRange, "reserved");
+  if (d.lens_status > kMaxConfigStatus) return fail(ReportError::kOutOfRange, "lens_status");
+  if ((d.staged & ~3u) != 0) return fail(ReportError::kOutOfRange, "staged");
   out = d;
   return r;
 }
 
-size_t encode_mailbox_request(uint8_t report_id, uint8_t* buf, size_t cap) {
+size_t encode_mailbox_request(uint8_t report_id, uint8_t tag, uint8_t* buf, size_t cap) {
   if (buf == nullptr || cap < kMailboxSize) return 0;
   buf[0] = kReportMailbox;
   buf[1] = kProtocolVersion;
   buf[2] = report_id;
-  buf[3] = 0;
+  buf[3] = tag;
   return kMailboxSize;
 }
 
-DecodeResult decode_mailbox_request(const uint8_t* buf, size_t len, uint8_t& report_id) {
+DecodeResult decode_mailbox_request(const uint8_t* buf, size_t len, uint8_t& report_id, uint8_t& tag) {
   const DecodeResult r = frame::check(buf, len, kReportMailbox, kProtocolVersion, kMailboxSize, false);
   if (!r.ok()) return r;
   if (!mailbox_id(buf[2])) return fail(ReportError::kOutOfRange, "report_id");
-  if (buf[3] != 0) return fail(ReportError::kOutOfRange, "reserved");
   report_id = buf[2];
+  tag = buf[3];
   return r;
 }
+
+namespace {
+constexpr size_t kChunkHeader = 7;
+static_assert(kChunkHeader + kFeatureChunkData == kFeatureChunkSize, "mailbox chunk layout");
+}  // namespace
 
 size_t encode_feature_chunk(const FeatureChunk& c, uint8_t* buf, size_t cap) {
   if (buf == nullptr || cap < kFeatureChunkSize) return 0;
@@ -145,10 +155,11 @@ size_t encode_feature_chunk(const FeatureChunk& c, uint8_t* buf, size_t cap) {
   buf[0] = kReportFeatureChunk;
   buf[1] = kProtocolVersion;
   buf[2] = c.report_id;
-  buf[3] = c.offset;
-  buf[4] = c.length;
-  buf[5] = c.total;
-  for (size_t i = 0; i < kFeatureChunkData; ++i) buf[6 + i] = i < c.length ? c.data[i] : 0;
+  buf[3] = c.tag;
+  buf[4] = c.offset;
+  buf[5] = c.length;
+  buf[6] = c.total;
+  for (size_t i = 0; i < kFeatureChunkData; ++i) buf[kChunkHeader + i] = i < c.length ? c.data[i] : 0;
   return kFeatureChunkSize;
 }
 
@@ -157,16 +168,38 @@ DecodeResult decode_feature_chunk(const uint8_t* buf, size_t len, FeatureChunk& 
   if (!r.ok()) return r;
   FeatureChunk c{};
   c.report_id = buf[2];
-  c.offset = buf[3];
-  c.length = buf[4];
-  c.total = buf[5];
+  c.tag = buf[3];
+  c.offset = buf[4];
+  c.length = buf[5];
+  c.total = buf[6];
   if (!mailbox_id(c.report_id)) return fail(ReportError::kOutOfRange, "report_id");
   if (c.total == 0 || c.total > kMaxReportSize) return fail(ReportError::kOutOfRange, "total");
   if (c.length == 0 || c.length > kFeatureChunkData) return fail(ReportError::kOutOfRange, "length");
   if (size_t{c.offset} + c.length > c.total) return fail(ReportError::kOutOfRange, "offset");
-  for (size_t i = 0; i < kFeatureChunkData; ++i) c.data[i] = i < c.length ? buf[6 + i] : 0;
+  for (size_t i = 0; i < kFeatureChunkData; ++i) {
+    c.data[i] = i < c.length ? buf[kChunkHeader + i] : 0;
+    if (i >= c.length && buf[kChunkHeader + i] != 0) return fail(ReportError::kOutOfRange, "padding");
+  }
   out = c;
   return r;
+}
+
+size_t feature_chunk_count(size_t n) {
+  if (n == 0 || n > kMaxReportSize) return 0;
+  return (n + kFeatureChunkData - 1) / kFeatureChunkData;
+}
+
+FeatureChunk feature_chunk(const uint8_t* report, size_t n, uint8_t tag, size_t index) {
+  FeatureChunk c{};
+  const size_t off = index * kFeatureChunkData;
+  if (report == nullptr || index >= feature_chunk_count(n)) return c;  // length 0: encodes to nothing
+  c.report_id = report[0];
+  c.tag = tag;
+  c.offset = static_cast<uint8_t>(off);
+  c.length = static_cast<uint8_t>(n - off < kFeatureChunkData ? n - off : kFeatureChunkData);
+  c.total = static_cast<uint8_t>(n);
+  for (size_t i = 0; i < c.length; ++i) c.data[i] = report[off + i];
+  return c;
 }
 
 }  // namespace lumavel::protocol

@@ -50,9 +50,9 @@ class HidgLink : public hal::ReportLink {
       const ssize_t n = ::read(fd_, buf, sizeof buf);
       if (n <= 0) break;  // EAGAIN: nothing pending
       const size_t len = static_cast<size_t>(n);
-      uint8_t id = 0;
-      if (proto::decode_mailbox_request(buf, len, id).ok()) {
-        queue_reply(id, handler, ctx);
+      uint8_t id = 0, tag = 0;
+      if (proto::decode_mailbox_request(buf, len, id, tag).ok()) {
+        queue_reply(id, tag, handler, ctx);
       } else {
         // The USB host already has its ACK; the outcome shows in DeviceInfo.config_status.
         handler(ctx, buf[0], true, buf, len, sizeof buf);
@@ -73,21 +73,14 @@ class HidgLink : public hal::ReportLink {
     }
   }
 
-  void queue_reply(uint8_t id, FeatureHandler handler, void* ctx) {
+  void queue_reply(uint8_t id, uint8_t tag, FeatureHandler handler, void* ctx) {
     uint8_t report[proto::kMaxReportSize + 1];
     report[0] = id;
     const size_t n = handler(ctx, id, false, report, 0, proto::kMaxReportSize);
     if (n == 0 || n > proto::kMaxReportSize) return;  // the host times out: a stall
-    for (size_t off = 0; off < n; off += proto::kFeatureChunkData) {
-      proto::FeatureChunk c{};
-      c.report_id = id;
-      c.offset = static_cast<uint8_t>(off);
-      c.length = static_cast<uint8_t>(n - off < proto::kFeatureChunkData ? n - off
-                                                                          : proto::kFeatureChunkData);
-      c.total = static_cast<uint8_t>(n);
-      std::memcpy(c.data, report + off, c.length);
+    for (size_t i = 0; i < proto::feature_chunk_count(n); ++i) {
       Chunk bytes{};
-      proto::encode_feature_chunk(c, bytes.data(), bytes.size());
+      proto::encode_feature_chunk(proto::feature_chunk(report, n, tag, i), bytes.data(), bytes.size());
       outbox_.push_back(bytes);
     }
   }

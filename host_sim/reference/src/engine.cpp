@@ -22,11 +22,7 @@ class FixedEngine final : public Engine {
     if (e != ConfigError::kOk) throw std::invalid_argument(to_string(e));
     width_ = s.width;
   }
-  void push_gyro(uint64_t t_ns, double rate_z) override {
-    if (!std::isfinite(rate_z)) throw std::invalid_argument("gyro rate is not a finite number");
-    const double q = std::round(std::ldexp(rate_z, fx::kRateFrac));
-    est_->push_gyro(t_ns, fx::sat32(static_cast<int64_t>(std::fmax(std::fmin(q, 4e18), -4e18))));
-  }
+  void push_gyro(uint64_t t_ns, double rate_z) override { est_->push_gyro(t_ns, to_fixed_rate(rate_z)); }
   EngineEstimate step(uint64_t t_ns, const uint8_t* cam0, const uint8_t* cam1) override {
     FramePair f{t_ns, {cam0, cam1}, static_cast<uint16_t>(width_)};
     const Estimate e = est_->step(f);

@@ -99,28 +99,46 @@ FloatBank build_float_bank(const EstimatorSettings& s) {
 }
 
 FloatEstimator::FloatEstimator(const EstimatorSettings& s) : s_(s) {
-  to_fixed_config(s);  // same validation as the fixed engine; throws
+  // Same validation as the fixed engine (throws), and its timing thresholds
+  // in integer nanoseconds, so that both flag on the same frames even at a tie.
+  const EstimatorConfig c = to_fixed_config(s);
+  gyro_gap_ns_ = uint64_t{c.gyro_gap_us} * 1000;
+  frame_period_ns_ = uint64_t{c.frame_period_us} * 1000;
+  max_gap_ns_ = uint64_t{c.max_gap_us} * 1000;
+  converging_ns_ = 3 * uint64_t{c.tau_us} * 1000;
+  still_min_ns_ = uint64_t{c.still_min_us} * 1000;
   bank_ = build_float_bank(s_);
 }
 
 void FloatEstimator::push_gyro(uint64_t t_ns, double rate) {
-  if (!std::isfinite(rate)) throw std::invalid_argument("gyro rate is not a finite number");
+  // What the fixed engine cannot represent is clipped to its range, as there.
+  const RateQ24 q = to_fixed_rate(rate);  // throws if not finite
+  const bool rail = fx::rate_at_rail(q);
+  if (rail) rate = std::ldexp(static_cast<double>(q), -fx::kRateFrac);
   if (gcount_ == 0) {
     gt_[1] = t_ns;
     gr_[1] = rate;
+    grail_[1] = rail;
     ga_[1] = 0;
+    gfirst_ = t_ns;
     gcount_ = 1;
     return;
   }
   if (t_ns <= gt_[1]) return;
   const double dt = static_cast<double>(t_ns - gt_[1]) * 1e-9;
-  gmax_spacing_ = std::max(gmax_spacing_, dt);
+  gmax_spacing_ = std::max(gmax_spacing_, t_ns - gt_[1]);
   gt_[0] = gt_[1];
   gr_[0] = gr_[1];
   ga_[0] = ga_[1];
+  grail_[0] = grail_[1];
   gt_[1] = t_ns;
   gr_[1] = rate;
-  ga_[1] = ga_[0] + (gr_[0] + gr_[1]) / 2 * dt;
+  grail_[1] = rail;
+  ga_[1] = ga_[0] + (gr_[0] + gr_[1]) / 2 * std::min(dt, 4.0);  // one piece at most 4 s, as the core
+  if (grail_[0] || grail_[1]) {
+    grailed_ = true;
+    grailed_end_ = t_ns;
+  }
   ++gcount_;
 }
 
@@ -135,6 +153,21 @@ double FloatEstimator::angle_at(uint64_t t) const {
   return ga_[0] + (gr_[0] + rate_t) / 2 * dt;
 }
 
+bool FloatEstimator::gyro_covers(uint64_t from, uint64_t to) const {
+  if (gcount_ == 0) return false;
+  if (from > to) std::swap(from, to);
+  const uint64_t gap = gyro_gap_ns_;
+  if (gfirst_ > from + gap || to > gt_[1] + gap) return false;
+  const uint64_t oldest = gcount_ < 2 ? gt_[1] : gt_[0];
+  if (to + gap < oldest) return false;
+  const bool hole = gcount_ >= 2 && gt_[1] - gt_[0] > gap;
+  return !(hole && gt_[0] < to && gt_[1] > from);
+}
+
+bool FloatEstimator::gyro_saturated_since(uint64_t from) const {
+  return gcount_ > 0 && (grail_[1] || (grailed_ && grailed_end_ > from));
+}
+
 FloatMeasurement measure_float(const FloatBank& bank, const EstimatorSettings& s,
                                const uint8_t* cam0, const uint8_t* cam1) {
   FloatMeasurement m;
@@ -142,8 +175,10 @@ FloatMeasurement measure_float(const FloatBank& bank, const EstimatorSettings& s
   const size_t n = s.kernels.size();
   Eigen::VectorXd f[2], r[2], c[2];
   const uint8_t* img[2] = {cam0, cam1};
+  Eigen::VectorXd cols[2];
   for (int i = 0; i < 2; ++i) {
-    Eigen::VectorXd col = Eigen::VectorXd::Zero(w);
+    Eigen::VectorXd& col = cols[i];
+    col = Eigen::VectorXd::Zero(w);
     for (int y = 0; y < h; ++y)
       for (int u = 0; u < w; ++u) col[u] += img[i][y * w + u];
     for (int y = 0; y < h; y += 8)
@@ -169,6 +204,8 @@ FloatMeasurement measure_float(const FloatBank& bank, const EstimatorSettings& s
       c[i][jj] = k.t[j].dot(col) / nrm;  // derivatives of N neglected: a correction term
     }
   }
+  // Sums of integers: exact in double, so equal exactly where the core's are.
+  m.no_stereo = cols[0] == cols[1] && (cols[0].array() != cols[0][0]).any();
   m.mid = (f[0] + f[1]) / 2;
   m.diff = f[1] - f[0];
   m.rot = (r[0] + r[1]) / 2;
@@ -196,30 +233,34 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
   uint16_t status = 0;
   if (m.clipped * 1000 > s_.saturated_permille * m.sampled) status |= kStatusSaturated;
   const double angle = angle_at(t_ns);
-  const bool first = frames_ == 0;
-  ++frames_;
+  const bool first = !have_prev_frame_;
+  have_prev_frame_ = true;
   const double since_prev = first ? 0 : (static_cast<double>(t_ns) - static_cast<double>(prev_t_)) * 1e-9;
   const double dtheta = first ? 0 : angle - prev_angle_ - offset_ * since_prev;
   heading_ = first ? angle : heading_ + dtheta;
   est.heading = std::remainder(heading_, 2 * M_PI);
   if (est.heading >= M_PI) est.heading -= 2 * M_PI;
-  if (gmax_spacing_ > s_.gyro_gap) status |= kStatusGyroGap;
+  if (gmax_spacing_ > gyro_gap_ns_ || !gyro_covers(first ? t_ns : prev_t_, t_ns)) status |= kStatusGyroGap;
   gmax_spacing_ = 0;
-  auto converging = [&] { return !started_ || since_start_ < 3 * s_.tau; };
-  if (m.no_light) {
-    status |= kStatusNoLight | kStatusLowTexture;
+  const bool gyro_saturated = gyro_saturated_since(first ? t_ns : prev_t_);  // V held over the interval
+  if (gyro_saturated) status |= kStatusSaturated;
+  auto converging = [&] { return !started_ || since_start_ns_ < converging_ns_; };
+  if (m.no_light || m.no_stereo) {
+    status |= (m.no_light ? kStatusNoLight : kStatusNoStereo) | kStatusLowTexture;
     have_prev_ = false;
+    have_ref_ = still_ = false;  // GyroOffset::drop_reference
   } else if (!have_prev_) {
     have_prev_ = true;
     prev_ = m;
   } else {
     const double dt = (static_cast<double>(t_ns) - static_cast<double>(prev_t_)) * 1e-9;
-    if (t_ns <= prev_t_ || dt > s_.max_gap) {
+    if (t_ns <= prev_t_ || t_ns - prev_t_ > max_gap_ns_) {
       status |= kStatusFrameGap | kStatusRestarted;
       started_ = false;  // V held; the next interval re-initialises it
-      since_start_ = 0;
+      since_start_ns_ = 0;
+      have_ref_ = still_ = false;
     } else {
-      if (dt > 1.5 * s_.frame_period) status |= kStatusFrameGap;
+      if ((t_ns - prev_t_) * 2 > frame_period_ns_ * 3) status |= kStatusFrameGap;
       const Eigen::VectorXd s_bar = (m.diff + prev_.diff) / 2;
       const Eigen::VectorXd r_bar = (m.rot + prev_.rot) / 2;
       const Eigen::VectorXd e = (m.mid - prev_.mid) - dtheta * r_bar;
@@ -234,23 +275,28 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
       const double ss_min = std::min(m.diff.squaredNorm(), prev_.diff.squaredNorm());
       est.texture = s_bar.size() ? std::sqrt(ss_min / static_cast<double>(s_bar.size())) : 0;
       const double den = a.squaredNorm();
-      if (den <= 0 || s_bar.squaredNorm() <= 0 || est.texture < s_.low_texture) {
+      bool textured = false;
+      if (gyro_saturated) {
+        est.texture = 0;
+      } else if (den <= 0 || s_bar.squaredNorm() <= 0 || est.texture < s_.low_texture) {
         status |= kStatusLowTexture;
       } else {
+        textured = true;
         const double d = s_.baseline * e.dot(a) / den;
         est.v_direct = d / dt;
         if (!started_) {
           v_ = est.v_direct;
           started_ = true;
-          since_start_ = 0;
+          since_start_ns_ = 0;
         } else {
           v_ += (est.v_direct - v_) * dt / (s_.tau + dt);
-          since_start_ += dt;
+          since_start_ns_ += t_ns - prev_t_;
         }
       }
       distance_ += v_ * dt;
       if (s_.gyro_offset_learning) {
-        learn_offset(m, t_ns, angle, !(status & kStatusLowTexture));
+        if (status & (kStatusFrameGap | kStatusGyroGap)) have_ref_ = still_ = false;
+        learn_offset(m, t_ns, angle, textured);
         if (still_) status |= kStatusStill;
       }
     }
@@ -286,14 +332,11 @@ void FloatEstimator::learn_offset(const FloatMeasurement& m, uint64_t t_ns, doub
   }
   const double d = s_.baseline * (m.mid - ref_.mid).dot(m.diff) / den;
   if (std::fabs(d) > s_.still_distance) return anchor();
-  const double span = (static_cast<double>(t_ns) - static_cast<double>(t_ref_)) * 1e-9;
-  still_ = span >= s_.still_min;
+  const uint64_t span_ns = t_ns - t_ref_;  // compared in integer ns, as the core
+  still_ = span_ns >= still_min_ns_;
   if (still_) {
-    offset_ = (angle - angle_ref_) / span;
-    if (span > 20) {
-      anchor();
-      still_ = true;
-    }
+    offset_ = (angle - angle_ref_) / (static_cast<double>(span_ns) * 1e-9);
+    if (span_ns > 20000000000ull) anchor();  // renewed as the core: not still again until still_min has passed
   }
 }
 

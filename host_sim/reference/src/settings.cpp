@@ -81,6 +81,14 @@ EstimatorConfig to_fixed_config(const EstimatorSettings& s) {
   return c;
 }
 
+RateQ24 to_fixed_rate(double rad_s) {
+  if (!std::isfinite(rad_s)) throw std::invalid_argument("gyro rate is not a finite number");
+  const double q = std::round(std::ldexp(rad_s, fx::kRateFrac));
+  if (q >= static_cast<double>(fx::kInt32Max)) return fx::kInt32Max;
+  if (q <= static_cast<double>(fx::kInt32Min)) return fx::kInt32Min;
+  return static_cast<RateQ24>(q);
+}
+
 std::vector<AngleQ28> to_fixed_edges(const CameraModel& c, int width) {
   std::vector<AngleQ28> out;
   if (c.edges.empty()) return out;

@@ -48,7 +48,9 @@ int cmd_info(const Common& c, const std::vector<std::string>& args) {
   if (wants_help(args)) {
     std::printf("usage: lumavel-read [--backend B] [--device PATH] info\n"
                 "Prints the device information report: firmware version, board, working\n"
-                "resolution, build capacities, and the outcome of the last configuration set.\n");
+                "resolution, build capacities, the outcome of the last configuration set and of\n"
+                "the last lens piece, and which cameras have lens pieces uploaded that no\n"
+                "configuration set has taken yet (lens_upload_pending).\n");
     return kExitOk;
   }
   Device dev(load_hidapi(c.backend), c.device);
@@ -59,11 +61,14 @@ int cmd_info(const Common& c, const std::vector<std::string>& args) {
   proto::DeviceInfo d{};
   proto::decode_device_info(raw.data(), raw.size(), d);
   static const char* kSource[] = {"defaults", "stored", "set by host"};
+  static const char* kStaged[] = {"none", "cam0", "cam1", "cam0,cam1"};
   std::printf("device=%s\nfirmware=%u.%u.%u\nboard=%s\nresolution=%ux%u\n"
-              "max_resolution=%ux%u\nmax_kernels=%u\nconfig_source=%s\nlast_config_set=%s\n",
+              "max_resolution=%ux%u\nmax_kernels=%u\nconfig_source=%s\nlast_config_set=%s\n"
+              "last_lens_piece=%s\nlens_upload_pending=%s\n",
               dev.path().c_str(), d.fw_major, d.fw_minor, d.fw_patch, d.board, d.width, d.height,
               d.max_columns, d.max_rows, d.max_kernels, kSource[d.config_source],
-              proto::to_string(static_cast<proto::ConfigField>(d.config_status)));
+              proto::to_string(static_cast<proto::ConfigField>(d.config_status)),
+              proto::to_string(static_cast<proto::ConfigField>(d.lens_status)), kStaged[d.staged & 3u]);
   return kExitOk;
 }
 

@@ -49,7 +49,8 @@ std::string status_names(uint16_t status) {
   } kNames[] = {{kStatusConverging, "CONVERGING"}, {kStatusLowTexture, "LOW_TEXTURE"},
                 {kStatusSaturated, "SATURATED"},   {kStatusFrameGap, "FRAME_GAP"},
                 {kStatusGyroGap, "GYRO_GAP"},      {kStatusNoLight, "NO_LIGHT"},
-                {kStatusRestarted, "RESTARTED"},   {kStatusStill, "STILL"}};
+                {kStatusRestarted, "RESTARTED"},   {kStatusStill, "STILL"},
+                {kStatusNoStereo, "NO_STEREO"}};
   if (status == 0) return "ok";
   std::string s;
   for (const auto& n : kNames) {

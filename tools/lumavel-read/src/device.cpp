@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <random>
 
 #include "lumavel/protocol/descriptor.hpp"
 
@@ -48,7 +49,11 @@ std::vector<DeviceEntry> list_devices(const HidApi& api) {
   return out;
 }
 
-Device::Device(const HidApi& api, const std::string& path) : api_(api), path_(path) {
+Device::Device(const HidApi& api, const std::string& path)
+    : api_(api),
+      path_(path),
+      // Start where another process's recent requests are unlikely to be.
+      next_tag_(static_cast<uint8_t>(std::random_device{}())) {
   if (path_.empty()) {
     const std::vector<DeviceEntry> found = list_devices(api);
     if (found.empty()) {
@@ -107,8 +112,11 @@ std::vector<uint8_t> Device::get_feature(uint8_t id, const Validator& valid) {
 }
 
 std::vector<uint8_t> Device::get_through_mailbox(uint8_t id) {
+  // A fresh tag per request: chunks of an earlier answer (a request that
+  // timed out, or another process's) are skipped, never taken as current.
+  const uint8_t tag = next_tag_++;
   uint8_t req[proto::kMailboxSize];
-  proto::encode_mailbox_request(id, req, sizeof req);
+  proto::encode_mailbox_request(id, tag, req, sizeof req);
   if (api_.send_feature_report(dev_, req, sizeof req) < 0) {
     throw DeviceError(DeviceErrorKind::kProtocol, "lumavel device " + path_ +
                                                       " answered neither GET_REPORT nor the mailbox (" +
@@ -123,7 +131,7 @@ std::vector<uint8_t> Device::get_through_mailbox(uint8_t id) {
     const size_t n = read(buf, sizeof buf, 100);
     proto::FeatureChunk c{};
     if (n == 0 || buf[0] != proto::kReportFeatureChunk) continue;  // measurements meanwhile
-    if (!proto::decode_feature_chunk(buf, n, c).ok() || c.report_id != id) continue;
+    if (!proto::decode_feature_chunk(buf, n, c).ok() || c.report_id != id || c.tag != tag) continue;
     if (out.empty()) {
       out.assign(c.total, 0);
       have.assign(c.total, false);

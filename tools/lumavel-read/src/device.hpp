@@ -64,6 +64,7 @@ class Device {
   const HidApi& api_;
   hid_device* dev_ = nullptr;
   std::string path_;
+  uint8_t next_tag_;  // mailbox request tag, one per request
 };
 
 }  // namespace lumavel::read

@@ -25,6 +25,9 @@ struct HidApi {
 
 // Throws std::runtime_error naming the library and the package to install.
 const HidApi& load_hidapi(Backend b);
+// Makes load_hidapi return `stand_in` instead (nullptr: the real backends
+// again): a stand-in device for tests of the commands over a misbehaving link.
+void use_stand_in_hidapi(const HidApi* stand_in);
 Backend parse_backend(const std::string& name);  // "hidraw" | "libusb"; throws
 const char* backend_name(Backend b);
 std::string narrow(const wchar_t* s);  // "" for null

@@ -75,7 +75,7 @@ class App {
     return static_cast<protocol::ConfigField>(features_.info().config_status);
   }
   const Estimator& estimator() const { return estimator_; }
-  // The lens upload area (the running tables unless pieces came since).
+  // The lens tables in force.
   const protocol::LensTables& lens_tables() const { return features_.lens(); }
 
   // Feature requests (ReportLink::FeatureHandler). Public for unit tests.
@@ -107,6 +107,7 @@ class App {
   bool have_gyro_ = false;
   uint64_t last_gyro_ns_ = 0;
   uint8_t mailbox_id_ = 0;  // feature report to send as input chunks, 0 = none
+  uint8_t mailbox_tag_ = 0; // the request's tag, echoed in every chunk
   alignas(4) uint8_t frame_[2][kMaxColumns * kMaxRows]{};  // word-aligned rows help the column sums
 };
 

@@ -17,4 +17,12 @@ struct ColumnProfile {
 void column_profile(const uint8_t* pixels, uint16_t width, uint16_t height, uint16_t stride,
                     ColumnProfile& out);
 
+// Both cameras delivered the same textured image (one frame twice: a wiring
+// or driver fault): every column sum equal, and not all columns alike. Two
+// real cameras never give this: their independent pixel noise (and, for a
+// rig that is not perfectly aligned, their different views) makes some sum
+// differ, however far and weak the scene; a far scene is low texture, which
+// rms(F1 - F0) measures. A flat profile is left to low texture as well.
+bool same_textured_profile(const ColumnProfile& a, const ColumnProfile& b);
+
 }  // namespace lumavel

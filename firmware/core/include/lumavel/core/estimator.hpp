@@ -48,6 +48,9 @@ class Estimator {
   const EstimatorConfig& config() const { return cfg_; }
   const KernelBank& bank() const { return bank_; }
   const StereoMeasurement& last_measurement() const { return meas_[cur_]; }
+  // The index the next frame gets (tests: the wrap at 2^32, 2.3 years at
+  // 60 Hz, 50 days at 1 kHz, must change nothing but the index).
+  void set_next_frame_index(uint32_t index) { frame_index_ = index; }
 
  private:
   EstimatorConfig cfg_{};
@@ -62,8 +65,10 @@ class Estimator {
   uint64_t prev_t_ns_ = 0;
   int64_t prev_gyro_angle_ = 0;  // raw integral, unwrapped, Q3.28
   int64_t heading_ = 0;          // offset-corrected integral, unwrapped, Q3.28
-  uint32_t frame_index_ = 0;
+  uint32_t frame_index_ = 0;    // wraps at 2^32: never a state
+  bool have_prev_frame_ = false;  // a frame was stepped since the reset
   DistQ32 distance_ = 0;
+  int64_t distance_rem_ = 0;  // carried remainder of the distance integral, [0, 1e9)
 };
 
 }  // namespace lumavel

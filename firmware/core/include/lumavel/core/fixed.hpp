@@ -57,6 +57,10 @@ constexpr int32_t kInt32Min = -kInt32Max - 1;
 // pi in Q3.28, rounded.
 constexpr AngleQ28 kPiQ28 = 843314857;
 
+// A gyro rate at either end of RateQ24 was clipped on the way in (the
+// sensor's or the conversion's range): its true value is unknown.
+constexpr bool rate_at_rail(RateQ24 r) { return r == kInt32Max || r == kInt32Min; }
+
 // Clamps a 64-bit value into int32; sets *saturated when it had to.
 constexpr int32_t sat32(int64_t v, bool* saturated = nullptr) {
   if (v > kInt32Max) {

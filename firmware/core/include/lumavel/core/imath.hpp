@@ -18,7 +18,8 @@ AngleQ28 atan2_fast(int32_t y, int32_t x);
 // floor(sqrt(v)).
 uint32_t isqrt64(uint64_t v);
 uint32_t isqrt32(uint32_t v);
-// Wraps an angle difference into [-pi, pi).
+// Wraps an angle into [-pi, pi), exactly: whole turns of 2 pi (not 2 kPiQ28)
+// are taken off, so a heading stays right after any number of turns.
 AngleQ28 wrap_pi(int64_t a_q28);
 
 }  // namespace lumavel::fx

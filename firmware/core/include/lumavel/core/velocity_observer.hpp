@@ -57,6 +57,13 @@ class VelocityObserver {
     since_start_ns_ = 0;
   }
   ObserverOutput update(const ObserverInput& in);
+  // An interval that cannot be used (its rotation unknown): V held, no update.
+  ObserverOutput hold() const {
+    ObserverOutput o{};
+    o.v = v_;
+    o.converging = converging_now();
+    return o;
+  }
   SpeedQ16 v() const { return v_; }
   // Not started, or started less than three time constants ago.
   bool converging_now() const { return !started_ || since_start_ns_ < 3 * tau_ns_; }

@@ -13,8 +13,10 @@ constexpr uint16_t kUsbProductId = 0x0001;
 constexpr uint16_t kUsagePage = 0xFF00;
 constexpr uint16_t kUsage = 0x0001;
 
-// Protocol version carried in byte 1 of every report.
-constexpr uint8_t kProtocolVersion = 2;
+// Protocol version carried in byte 1 of every report. 3: status bit 8 (no
+// stereo), tagged mailbox answers, lens uploads staged apart from the tables
+// in force (device info bytes 32, 33).
+constexpr uint8_t kProtocolVersion = 3;
 
 // Report IDs. Byte 0 of every report is its ID.
 enum ReportId : uint8_t {
@@ -35,7 +37,7 @@ constexpr size_t kConfigSize = 102;
 constexpr size_t kMailboxSize = 4;
 constexpr size_t kLensChunkSize = 55;
 constexpr size_t kFeatureChunkSize = 62;
-constexpr size_t kFeatureChunkData = 56;    // payload bytes per chunk
+constexpr size_t kFeatureChunkData = 55;    // payload bytes per chunk
 constexpr size_t kMaxInputReportSize = 62;  // largest input report (endpoint size)
 constexpr size_t kMaxReportSize = 102;      // largest report of any kind
 

@@ -38,25 +38,35 @@ class FeatureServer {
   // apply, persist. Returns the outcome, also reported in DeviceInfo.config_status.
   ConfigField set_config(const uint8_t* buf, size_t len);
   // A lens piece from the host (report 0x05): kMalformed if it does not
-  // decode, kLens if it breaks the upload order or the build's capacity.
-  // Also reported in config_status. Uploads take effect with the next
-  // configuration set that names the camera.
+  // decode, kLens if it breaks the upload order or the build's capacity;
+  // reported in DeviceInfo.lens_status. Pieces are staged apart from the
+  // tables in force; the next configuration set takes the staged tables
+  // only if its lens_crc names them, and ends the upload either way (the
+  // staging starts clean again), so an upload that was never applied can
+  // never be applied by a later, unrelated set. A select (count 0) picks
+  // the piece of the tables in force that a get returns.
   ConfigField set_lens(const uint8_t* buf, size_t len);
 
   const DeviceConfig& config() const { return config_; }
   const DeviceInfo& info() const { return info_; }
-  // The upload area: the running tables unless pieces were uploaded since
-  // (config().lens_crc identifies the running ones).
+  // The tables in force (those config() names, by lens_crc).
   const LensTables& lens() const { return lens_; }
+  // Pieces uploaded since the last configuration set.
+  const LensTables& staged() const { return staged_; }
 
  private:
   ConfigField apply_and_keep(const DeviceConfig& c, uint8_t source);
+  // For each camera c names: the staged table (preferred) or the one in
+  // force, whichever makes the CRC c.lens_crc names. False if none does.
+  bool pick_tables(const DeviceConfig& c, const EdgeOffsetQ15* tables[2]) const;
+  void end_upload();
   bool load_stored(DeviceConfig& out);  // the stored blob into out and lens_
   bool save_current();                  // config_ and its tables into the store
 
   DeviceInfo info_;
   DeviceConfig config_{};
-  LensTables lens_{};
+  LensTables lens_{};    // in force
+  LensTables staged_{};  // uploaded, not yet taken by a configuration set
   hal::ConfigStore* store_;
   ApplyFn apply_;
   void* ctx_;

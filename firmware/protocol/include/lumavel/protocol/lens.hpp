@@ -2,7 +2,8 @@
 // table of column-edge corrections (EdgeOffsetQ15, see EstimatorConfig::
 // edge_offsets), small enough for one 64-byte-class transfer and one mailbox
 // chunk. The configuration (0x03) says which cameras have a table and binds
-// them with lens_crc; the device keeps the uploaded tables in LensTables.
+// them with lens_crc; the device stages uploaded pieces apart from the
+// tables in force (LensTables, FeatureServer).
 // Integer only, no heap.
 #pragma once
 #include <cstddef>
@@ -42,9 +43,10 @@ size_t encode_lens_chunk(const LensChunk& c, uint8_t* buf, size_t cap);
 // and zero unused slots ("camera", "count", "first", "padding").
 DecodeResult decode_lens_chunk(const uint8_t* buf, size_t len, LensChunk& out);
 
-// The device's lens tables: what was uploaded (or loaded from the store),
-// `filled[cam]` edges from 0 on. Uploads run in order: a piece must start at
-// 0 (starting the table again) or where the previous one ended.
+// Lens tables of both cameras, `filled[cam]` edges from 0 on: on a device,
+// the tables in force and, apart, the staging that uploads go to
+// (FeatureServer). Uploads run in order: a piece must start at 0 (starting
+// the table again) or where the previous one ended.
 struct LensTables {
   EdgeOffsetQ15 offsets[2][kMaxLensEdges];
   uint16_t filled[2];

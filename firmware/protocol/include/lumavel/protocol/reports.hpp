@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "lumavel/core/fixed.hpp"
+#include "lumavel/core/status.hpp"
 #include "lumavel/protocol/descriptor.hpp"
 
 namespace lumavel::protocol {
@@ -39,7 +40,7 @@ struct DecodeResult {
 //   16  4    v              SpeedQ16, m/s
 //   20  8    distance       DistQ32, m
 //   28  4    heading        AngleQ28, rad, in [-pi, pi)
-//   32  2    status         StatusFlag bits (bits 8..15 must be 0 in version 2)
+//   32  2    status         StatusFlag bits (bits 9..15 must be 0: kKnownStatusFlags)
 //   34  2    overruns       u16, frames dropped since start (saturates at 65535)
 //   36  4    gyro_offset    RateQ24, rad/s: zero-rate offset learned at standstill
 //   40  2    crc16 of bytes 0..39
@@ -55,8 +56,8 @@ struct Measurement {
   RateQ24 gyro_offset;
 };
 
-// Status bits defined in protocol version 2 (lumavel/core/status.hpp).
-constexpr uint16_t kKnownStatusBits = 0x00FFu;
+// Status bits defined in this protocol version (lumavel/core/status.hpp).
+constexpr uint16_t kKnownStatusBits = kKnownStatusFlags;
 
 // Writes kMeasurementSize bytes; returns the size, or 0 if cap is too small.
 size_t encode_measurement(const Measurement& m, uint8_t* buf, size_t cap);
@@ -75,7 +76,10 @@ DecodeResult decode_measurement(const uint8_t* buf, size_t len, Measurement& out
 //   29  1    max kernels
 //   30  1    config_status: ConfigField of the last configuration set (0 = accepted)
 //   31  1    config_source: 0 defaults, 1 loaded from the store, 2 set by the host
-//   32  2    reserved, 0
+//   32  1    lens_status: ConfigField of the last lens piece set (0 accepted,
+//            kLens out of order or beyond capacity, kMalformed)
+//   33  1    staged: bit c = camera c has lens pieces uploaded that no
+//            configuration set has taken yet (an upload in progress)
 //   34  2    crc16 of bytes 0..33
 constexpr size_t kBoardNameSize = 16;
 struct DeviceInfo {
@@ -86,6 +90,8 @@ struct DeviceInfo {
   uint8_t max_kernels;
   uint8_t config_status;
   uint8_t config_source;
+  uint8_t lens_status;
+  uint8_t staged;
 };
 enum ConfigSource : uint8_t { kConfigDefaults = 0, kConfigStored = 1, kConfigSetByHost = 2 };
 // Largest config_status value (ConfigField::kStore in device_config.hpp).
@@ -97,16 +103,20 @@ DecodeResult decode_device_info(const uint8_t* buf, size_t len, DeviceInfo& out)
 // Feature report 0x04 (set): asks the device to send feature report
 // `report_id` (0x02, 0x03 or 0x05) as input reports 0x84. For USB stacks whose
 // application cannot answer GET_REPORT (Linux gadget HID before 6.13).
-//   0 id = 0x04, 1 version, 2 report_id, 3 reserved 0
-size_t encode_mailbox_request(uint8_t report_id, uint8_t* buf, size_t cap);
-DecodeResult decode_mailbox_request(const uint8_t* buf, size_t len, uint8_t& report_id);
+//   0 id = 0x04, 1 version, 2 report_id, 3 tag
+// The tag (any byte; a host counts them) comes back in every chunk of the
+// answer, so that an answer to an earlier request is never taken as current.
+// A new request replaces one not yet answered.
+size_t encode_mailbox_request(uint8_t report_id, uint8_t tag, uint8_t* buf, size_t cap);
+DecodeResult decode_mailbox_request(const uint8_t* buf, size_t len, uint8_t& report_id, uint8_t& tag);
 
 // Input report 0x84: bytes [offset, offset + length) of feature report `report_id`.
-//   0 id = 0x84, 1 version, 2 report_id, 3 offset, 4 length (1..56),
-//   5 total size of the feature report, 6..61 data (zero padded); 62 bytes, no CRC
-//   (the reassembled feature report carries its own).
+//   0 id = 0x84, 1 version, 2 report_id, 3 tag (the request's), 4 offset,
+//   5 length (1..55), 6 total size of the feature report, 7..61 data (zero
+//   padded); 62 bytes, no CRC (the reassembled feature report carries its own).
 struct FeatureChunk {
   uint8_t report_id;
+  uint8_t tag;
   uint8_t offset;
   uint8_t length;
   uint8_t total;
@@ -114,5 +124,11 @@ struct FeatureChunk {
 };
 size_t encode_feature_chunk(const FeatureChunk& c, uint8_t* buf, size_t cap);
 DecodeResult decode_feature_chunk(const uint8_t* buf, size_t len, FeatureChunk& out);
+
+// The mailbox answer to {report_id, tag}: feature report `report` (n bytes,
+// 1..kMaxReportSize) cut into feature_chunk_count(n) chunks; chunk `index`
+// of them. The one cutting rule for every device side.
+size_t feature_chunk_count(size_t n);
+FeatureChunk feature_chunk(const uint8_t* report, size_t n, uint8_t tag, size_t index);
 
 }  // namespace lumavel::protocol

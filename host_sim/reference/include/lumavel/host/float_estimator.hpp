@@ -29,6 +29,7 @@ struct FloatMeasurement {
   Eigen::VectorXd mid, diff, rot;
   Eigen::VectorXd half_phase;            // x = k h / 2 per kernel, from the cameras' phases
   bool no_light = false;
+  bool no_stereo = false;  // same textured column profile in both cameras (same_textured_profile)
   double clipped = 0, sampled = 0;
 };
 
@@ -46,6 +47,8 @@ class FloatEstimator {
 
  private:
   double angle_at(uint64_t t_ns) const;
+  bool gyro_covers(uint64_t from_ns, uint64_t to_ns) const;  // GyroIntegrator::covers
+  bool gyro_saturated_since(uint64_t from_ns) const;          // GyroIntegrator::saturated_since
   void learn_offset(const FloatMeasurement& m, uint64_t t_ns, double angle, bool textured);
 
   EstimatorSettings s_;
@@ -54,15 +57,23 @@ class FloatEstimator {
   uint64_t gt_[2]{};
   double gr_[2]{}, ga_[2]{};
   int gcount_ = 0;
-  double gmax_spacing_ = 0;
+  uint64_t gfirst_ = 0;         // first sample since the start
+  bool grail_[2]{};             // the sample was clipped to the firmware's RateQ24 range
+  bool grailed_ = false;        // a trapezoid has had a clipped end ...
+  uint64_t grailed_end_ = 0;    // ... ending here
+  uint64_t gmax_spacing_ = 0;   // ns, since the last frame
+  uint64_t gyro_gap_ns_ = 0;    // the configuration's timing, whole microseconds as the core has it
+  uint64_t frame_period_ns_ = 0, max_gap_ns_ = 0, converging_ns_ = 0, still_min_ns_ = 0;
   // observer
   FloatMeasurement prev_;
   bool have_prev_ = false, started_ = false;
-  double v_ = 0, since_start_ = 0, distance_ = 0, prev_angle_ = 0;
+  double v_ = 0, distance_ = 0, prev_angle_ = 0;
+  uint64_t since_start_ns_ = 0;
   uint64_t prev_t_ = 0;
   // gyro offset learning and the corrected heading
   double offset_ = 0, heading_ = 0, angle_ref_ = 0;
-  uint64_t frames_ = 0, t_ref_ = 0;
+  bool have_prev_frame_ = false;
+  uint64_t t_ref_ = 0;
   FloatMeasurement ref_;
   bool have_ref_ = false, still_ = false;
 };

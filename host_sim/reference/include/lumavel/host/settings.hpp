@@ -51,6 +51,11 @@ std::vector<KernelModel> default_kernels(double hfov);
 // attach to_fixed_edge_offsets() of each camera before configure().
 EstimatorConfig to_fixed_config(const EstimatorSettings& s);
 
+// A gyro rate (rad/s) as the firmware takes it: RateQ24, rounded half away
+// from zero, saturated at the rails (fx::rate_at_rail then says it was
+// clipped). Not finite: throws std::invalid_argument.
+RateQ24 to_fixed_rate(double rad_s);
+
 // A camera's column-edge table in Q3.28 (empty for a pinhole camera).
 std::vector<AngleQ28> to_fixed_edges(const CameraModel& c, int width);
 
