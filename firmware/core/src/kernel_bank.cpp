@@ -55,7 +55,7 @@ AngleQ28 edge_yaw(const CameraGeometry& g, const EdgeOffsetQ15* lens, uint16_t u
 // they are needed, so no edge table is kept in RAM):
 //   K = Int phi_n(s) ds,  D = -Int phi_(n+1)(s) ds,  T = -Int phi_(n+3)(s) ds
 void integrate(const CameraGeometry& g, const EdgeOffsetQ15* lens, uint16_t width, int64_t centre,
-               const KernelSpec& k, KernelTable& kk, KernelTable& dd, KernelTable* tt) {
+               const KernelSpec& k, KernelTable* kk, KernelTable* dd, KernelTable* tt) {
   int64_t next = edge_yaw(g, lens, 0);
   for (uint16_t u = 0; u < width; ++u) {
     const int64_t lo = next, hi = edge_yaw(g, lens, static_cast<uint16_t>(u + 1));
@@ -71,12 +71,13 @@ void integrate(const CameraGeometry& g, const EdgeOffsetQ15* lens, uint16_t widt
       acc_t += kSimpsonWeight[j] * int64_t{pn3};  // Q27
     }
     const int64_t ds = fx::div_q(hi > lo ? hi - lo : lo - hi, k.sigma, 24);  // Q24
-    kk.w[u] = fx::sat32(fx::shr_round(acc_k * ds, 26) / kSimpsonWeightSum);
-    dd.w[u] = fx::sat32(-(fx::shr_round(acc_d * ds, 26) / kSimpsonWeightSum));
+    if (kk) kk->w[u] = fx::sat32(fx::shr_round(acc_k * ds, 26) / kSimpsonWeightSum);
+    if (dd) dd->w[u] = fx::sat32(-(fx::shr_round(acc_d * ds, 26) / kSimpsonWeightSum));
     if (tt) tt->w[u] = fx::sat32(-(fx::shr_round(acc_t * ds, 24) / kSimpsonWeightSum));  // Q3.27
   }
   for (uint16_t u = width; u < kMaxColumns; ++u) {
-    kk.w[u] = dd.w[u] = 0;
+    if (kk) kk->w[u] = 0;
+    if (dd) dd->w[u] = 0;
     if (tt) tt->w[u] = 0;
   }
 }
@@ -98,6 +99,24 @@ void quantise(int64_t den, uint16_t width, KernelTable& t) {
   }
   t.exp = static_cast<int8_t>(e);
   for (uint16_t u = 0; u < width; ++u) t.w[u] = fx::div_q(t.w[u], den, 31 + e);
+}
+
+// The same for a 16-bit table, from raw Q28 values in `raw`.
+void quantise16(int64_t den, uint16_t width, const KernelTable& raw, KernelTable16& t) {
+  int64_t peak = 0;
+  for (uint16_t u = 0; u < width; ++u) {
+    const int64_t a = raw.w[u] < 0 ? -int64_t{raw.w[u]} : raw.w[u];
+    if (a > peak) peak = a;
+  }
+  int e = 20;
+  for (; e > -40; --e) {
+    bool sat = false;
+    const int32_t w = fx::div_q(peak, den, 15 + e, &sat);
+    if (!sat && w < 32767) break;
+  }
+  t.exp = static_cast<int8_t>(e);
+  for (uint16_t u = 0; u < width; ++u) t.w[u] = static_cast<int16_t>(fx::div_q(raw.w[u], den, 15 + e));
+  for (uint16_t u = width; u < kMaxColumns; ++u) t.w[u] = 0;
 }
 
 int64_t sum(const KernelTable& t, uint16_t width) {
@@ -123,10 +142,10 @@ uint64_t sum_sq_q48(const KernelTable& t, uint16_t width) {
 // variance, so that the least squares over kernels weighs them fairly.
 void build_kernel(const EstimatorConfig& cfg, int64_t centre,
                   const KernelSpec& spec, bool unit_l1, KernelTable* k_out[2],
-                  KernelTable* d_out[2], KernelTable* t_out[2]) {
+                  KernelTable* d_out[2], KernelTable16* t_out[2]) {
   const uint16_t w = cfg.width;
   for (int i = 0; i < 2; ++i)
-    integrate(cfg.cam[i], cfg.edge_offsets[i], w, centre, spec, *k_out[i], *d_out[i], t_out[i]);
+    integrate(cfg.cam[i], cfg.edge_offsets[i], w, centre, spec, k_out[i], d_out[i], nullptr);
   int64_t norm = 0;  // Q28
   if (unit_l1) {
     norm = (sum(*k_out[0], w) + sum(*k_out[1], w)) / 2;
@@ -143,9 +162,15 @@ void build_kernel(const EstimatorConfig& cfg, int64_t centre,
   int64_t norm_sigma3 = fx::shr_round(fx::shr_round(norm_sigma * spec.sigma, 28) * spec.sigma, 28);
   norm_sigma3 = norm_sigma3 > 1 ? norm_sigma3 / 2 : 1;  // Q27 over Q28 -> same scale as the others
   for (int i = 0; i < 2; ++i) {
+    if (t_out[i]) {
+      // T in a scratch table, then narrowed to 16 bits (a second pass over
+      // the columns at configuration time saves a q31 table per kernel).
+      KernelTable raw;
+      integrate(cfg.cam[i], cfg.edge_offsets[i], w, centre, spec, nullptr, nullptr, &raw);
+      quantise16(norm_sigma3, w, raw, *t_out[i]);
+    }
     quantise(norm, w, *k_out[i]);
     quantise(norm_sigma, w, *d_out[i]);
-    if (t_out[i]) quantise(norm_sigma3, w, *t_out[i]);
   }
 }
 
@@ -171,12 +196,12 @@ void build_kernel_bank(const EstimatorConfig& cfg, KernelBank& bank) {
   const int64_t centre = (int64_t{cfg.cam[0].axis_yaw} + cfg.cam[1].axis_yaw) / 2;
   KernelTable* k_out[2] = {&bank.cam[0].norm, &bank.cam[1].norm};
   KernelTable* d_out[2] = {&bank.cam[0].norm_d, &bank.cam[1].norm_d};
-  KernelTable* none[2] = {nullptr, nullptr};
+  KernelTable16* none[2] = {nullptr, nullptr};
   build_kernel(cfg, centre, cfg.normaliser, true, k_out, d_out, none);
   for (int k = 0; k < cfg.kernel_count; ++k) {
     KernelTable* kk[2] = {&bank.cam[0].k[k], &bank.cam[1].k[k]};
     KernelTable* dd[2] = {&bank.cam[0].d[k], &bank.cam[1].d[k]};
-    KernelTable* tt[2] = {&bank.cam[0].t[k], &bank.cam[1].t[k]};
+    KernelTable16* tt[2] = {&bank.cam[0].t[k], &bank.cam[1].t[k]};
     build_kernel(cfg, centre, cfg.kernels[k], false, kk, dd, tt);
   }
   for (int k = 0; k < cfg.kernel_count; ++k) bank.sigma[k] = cfg.kernels[k].sigma;

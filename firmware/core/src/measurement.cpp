@@ -13,6 +13,12 @@ int64_t dot(const KernelTable& t, const ColumnProfile& p) {
   return acc;
 }
 
+int64_t dot(const KernelTable16& t, const ColumnProfile& p) {
+  int64_t acc = 0;
+  for (uint16_t u = 0; u < p.width; ++u) acc += int32_t{t.w[u]} * int32_t{p.sum[u]};
+  return acc;
+}
+
 // 1/N as a 31-bit mantissa and a power of two, so that each ratio X/N is
 // one 32x32->64 multiply instead of a 64-bit division (no divider on M0, a
 // slow library routine on M3).
@@ -80,7 +86,8 @@ void camera_outputs(const ColumnProfile& p, const CameraKernels& ck, uint8_t cou
     const ValueQ28 f = ratio(dot(ck.k[k], p), inv, fx::kValueFrac + ck.norm.exp - ck.k[k].exp, &sat);
     const SlopeQ20 db_over_n = ratio(dot(ck.d[k], p), inv, fx::kSlopeFrac + ck.norm.exp - ck.d[k].exp, &sat);
     out.f[k] = f;
-    out.c[k] = ratio(dot(ck.t[k], p), inv, fx::kCurvFrac + ck.norm.exp - ck.t[k].exp, &sat);
+    // T is a 16-bit table: value = w * 2^-(15 + exp), a 2^16 larger step than a q31 table.
+    out.c[k] = ratio(dot(ck.t[k], p), inv, fx::kCurvFrac + ck.norm.exp - ck.t[k].exp + 16, &sat);
     out.r[k] = fx::sat32(int64_t{db_over_n} - fx::shr_round(int64_t{f} * dn_over_n, fx::kValueFrac), &sat);
   }
   out.saturated = sat;
