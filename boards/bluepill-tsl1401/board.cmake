@@ -1,4 +1,5 @@
 # Blue pill: STM32F103C8 (Cortex-M3, 64 KiB flash, 20 KiB RAM). The core's
-# capacities shrink to one 128-pixel line and 4 kernels so that it fits.
+# capacities shrink to one 128-pixel line, 4 kernels and 16 frames of
+# time-of-flight history so that it fits.
 # Read by cmake/arm-none-eabi.cmake before the compilers are set up.
-set(LUMAVEL_BOARD_FLAGS "-mcpu=cortex-m3 -mthumb -mfloat-abi=soft -DLUMAVEL_MAX_COLS=128 -DLUMAVEL_MAX_ROWS=1 -DLUMAVEL_MAX_KERNELS=4")
+set(LUMAVEL_BOARD_FLAGS "-mcpu=cortex-m3 -mthumb -mfloat-abi=soft -DLUMAVEL_MAX_COLS=128 -DLUMAVEL_MAX_ROWS=1 -DLUMAVEL_MAX_KERNELS=4 -DLUMAVEL_TOF_FRAMES=16")

@@ -1,6 +1,7 @@
 #include "lumavel/core/estimator.hpp"
 
 #include "lumavel/core/column_profile.hpp"
+#include "lumavel/core/fusion_params.hpp"
 #include "lumavel/core/imath.hpp"
 #include "lumavel/core/status.hpp"
 
@@ -31,6 +32,11 @@ ConfigError Estimator::configure(const EstimatorConfig& cfg) {
   if (e != ConfigError::kOk) return e;
   cfg_ = cfg;
   build_kernel_bank(cfg_, bank_);
+  AngleQ28 narrowest = cfg_.kernels[0].sigma;
+  for (int k = 1; k < cfg_.kernel_count; ++k)
+    if (cfg_.kernels[k].sigma < narrowest) narrowest = cfg_.kernels[k].sigma;
+  constexpr int64_t kRotationQ16 = fx::q_of(params::kTofMaxRotationSigma, 16);
+  tof_max_rotation_ = static_cast<AngleQ28>((kRotationQ16 * narrowest) >> 16);
   // The lens tables are the caller's: the kernel tables are built from them now.
   cfg_.edge_offsets[0] = cfg_.edge_offsets[1] = nullptr;
   configured_ = true;
@@ -43,6 +49,10 @@ void Estimator::reset() {
   gyro_offset_.reset();
   heading_ = 0;
   observer_.reset();
+  tof_.reset();
+  fusion_.reset();
+  y_ = 0;
+  y_rem_ = 0;
   have_prev_ = false;
   cur_ = 0;
   prev_t_ns_ = 0;
@@ -89,18 +99,23 @@ Estimate Estimator::step(const FramePair& frames) {
   const bool no_stereo = same_textured_profile(p[0], p[1]);
   if (m.no_light || no_stereo) {
     // Unusable frame: hold V, and pair the next good frame with nothing.
-    status |= (m.no_light ? kStatusNoLight : kStatusNoStereo) | kStatusLowTexture;
+    status |= (m.no_light ? kStatusNoLight : kStatusNoStereo) | kStatusLowTexture | kStatusNoTof;
     have_prev_ = false;
     gyro_offset_.drop_reference();
+    tof_.reset();
+    fusion_.restart();
   } else if (!have_prev_) {
+    status |= kStatusNoTof;
     have_prev_ = true;
     cur_ = next;
   } else {
     const int64_t dt_ns = static_cast<int64_t>(frames.t_ns - prev_t_ns_);
     if (frames.t_ns <= prev_t_ns_ || dt_ns > int64_t{cfg_.max_gap_us} * 1000) {
-      status |= kStatusFrameGap | kStatusRestarted;
+      status |= kStatusFrameGap | kStatusRestarted | kStatusNoTof;
       observer_.restart();
       gyro_offset_.drop_reference();
+      tof_.reset();
+      fusion_.restart();
     } else {
       if (dt_ns * 2 > int64_t{cfg_.frame_period_us} * 3000) status |= kStatusFrameGap;
       ObserverInput in{};
@@ -122,7 +137,39 @@ Estimate Estimator::step(const FramePair& frames) {
       if (o.saturated) status |= kStatusSaturated;
       est.v_direct = o.v_direct;
       est.texture = o.texture;
-      distance_ = advance(distance_, o.v, dt_ns, &distance_rem_);
+      // The time of flight: this frame on the history, then its match (not over
+      // an interval whose rotation is unknown).
+      // (the direct value: the observer's filtered V lags an acceleration, which
+      // would read as a scale error against the time of flight)
+      y_ = advance(y_, o.updated ? o.v_direct : o.v, dt_ns, &y_rem_);
+      TofResult tof{};
+      if (!gyro_saturated) {
+        TofFrame tf{};
+        tf.t_ns = frames.t_ns;
+        tf.heading = heading_;
+        tf.y = y_;
+        for (uint8_t k = 0; k < m.count; ++k)
+          for (int i = 0; i < 2; ++i) {
+            tf.f[i][k] = m.f[i][k];
+            tf.r[i][k] = m.r[i][k];
+          }
+        tof_.push(tf);
+        tof = tof_.track({cfg_.baseline, tof_max_rotation_, fusion_.v(), m.count});
+      }
+      FusionInput fin{};
+      fin.dt_ns = dt_ns;
+      fin.v_differential = o.v;
+      fin.direct = o.updated;
+      fin.v_direct = o.v_direct;
+      fin.residual = o.residual;
+      fin.tof = &tof;
+      fin.y = y_;
+      fin.baseline = cfg_.baseline;
+      const FusionOutput fo = fusion_.update(fin);
+      if (!fo.used_tof) status |= kStatusNoTof;
+      if (fo.saturated) status |= kStatusSaturated;
+      est.tof_ns = tof.ok ? tof.tau_ns : 0;
+      distance_ = advance(distance_, fo.v, dt_ns, &distance_rem_);
     }
     cur_ = next;
   }
@@ -130,7 +177,9 @@ Estimate Estimator::step(const FramePair& frames) {
   prev_t_ns_ = frames.t_ns;
   prev_gyro_angle_ = angle;
   have_prev_frame_ = true;
-  est.v = observer_.v();
+  est.v_differential = observer_.v();
+  est.v = fusion_.v();
+  est.scale = fusion_.scale();
   est.distance = distance_;
   est.status = status;
   est.gyro_offset = gyro_offset_.offset();

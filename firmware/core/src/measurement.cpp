@@ -149,6 +149,10 @@ void stereo_measurement(const ColumnProfile& p0, const ColumnProfile& p1, const 
     out.mid[k] = static_cast<ValueQ28>(fx::shr_round(int64_t{c0.f[k]} + c1.f[k], 1));
     out.diff[k] = fx::sat32(int64_t{c1.f[k]} - c0.f[k], &sat);
     out.rot[k] = static_cast<SlopeQ20>(fx::shr_round(int64_t{c0.r[k]} + c1.r[k], 1));
+    out.f[0][k] = c0.f[k];
+    out.f[1][k] = c1.f[k];
+    out.r[0][k] = c0.r[k];
+    out.r[1][k] = c1.r[k];
   }
   out.saturated = sat;
   out.clipped = p0.clipped + p1.clipped;

@@ -36,6 +36,22 @@ int64_t x_over_tan_q30(int64_t x_q28) {
   return one + fx::shr_round(p * x2, 30);
 }
 
+// |e - ratio a|^2 / |e|^2 (ratio Q28): how much of the innovation the one
+// distance leaves unexplained. Products in Q48 (values brought to Q24: six
+// kernels of |.| <= 4 stay inside int64).
+FracQ16 residual_ratio(const int32_t* e, const int32_t* a, uint8_t count, int32_t ratio) {
+  int64_t rr = 0, ee = 0;
+  for (uint8_t k = 0; k < count; ++k) {
+    const int64_t ek = fx::shr_round(e[k], 4);
+    const int64_t rk = ek - fx::shr_round(int64_t{ratio} * fx::shr_round(a[k], 4), fx::kValueFrac);
+    rr += rk * rk;
+    ee += ek * ek;
+  }
+  if (ee <= 0) return 0;
+  const int64_t q = fx::div_q(rr, ee, fx::kFracFrac);
+  return static_cast<FracQ16>(q > (int64_t{1} << fx::kFracFrac) ? (int64_t{1} << fx::kFracFrac) : q);
+}
+
 }  // namespace
 
 void VelocityObserver::reset() { *this = VelocityObserver{}; }
@@ -64,12 +80,14 @@ ObserverOutput VelocityObserver::update(const ObserverInput& in) {
   const int64_t ss_min = ss_cur < ss_prev ? ss_cur : ss_prev;
   out.texture = count ? static_cast<ValueQ28>(fx::isqrt64(static_cast<uint64_t>(ss_min / count))) : 0;
   int64_t num = 0, den = 0;  // Q56
+  int32_t a_used[kMaxKernels];
   for (uint8_t k = 0; k < count; ++k) {
     int32_t a = s_bar[k];
     if (in.baseline_correction) {
       const int64_t x = fx::shr_round(int64_t{in.cur->half_phase[k]} + in.prev->half_phase[k], 1);
       a = static_cast<int32_t>(fx::shr_round(int64_t{a} * x_over_tan_q30(x), 30));
     }
+    a_used[k] = a;
     num += int64_t{e[k]} * a;
     den += int64_t{a} * a;
   }
@@ -84,6 +102,7 @@ ObserverOutput VelocityObserver::update(const ObserverInput& in) {
   const int64_t d_q24 = fx::shr_round(int64_t{ratio} * in.baseline, fx::kValueFrac);       // Q24 m
   const SpeedQ16 v_direct = fx::div_q(d_q24 * 1000000000, in.dt_ns * 256, 0, &sat);       // Q16 m/s
   out.v_direct = v_direct;
+  out.residual = residual_ratio(e, a_used, count, ratio);
   if (!started_) {
     v_ = v_direct;
     started_ = true;

@@ -35,6 +35,9 @@ class FixedEngine final : public Engine {
     o.v_direct = std::ldexp(e.v_direct, -fx::kSpeedFrac);
     o.texture = std::ldexp(e.texture, -fx::kValueFrac);
     o.gyro_offset = std::ldexp(e.gyro_offset, -fx::kRateFrac);
+    o.v_differential = std::ldexp(e.v_differential, -fx::kSpeedFrac);
+    o.tof_s = static_cast<double>(e.tof_ns) * 1e-9;
+    o.scale = std::ldexp(e.scale, -fx::kScaleFrac);
     return o;
   }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "lumavel/core/fusion_params.hpp"
 #include "lumavel/core/status.hpp"
 
 namespace lumavel::host {
@@ -107,6 +108,9 @@ FloatEstimator::FloatEstimator(const EstimatorSettings& s) : s_(s) {
   max_gap_ns_ = uint64_t{c.max_gap_us} * 1000;
   converging_ns_ = 3 * uint64_t{c.tau_us} * 1000;
   still_min_ns_ = uint64_t{c.still_min_us} * 1000;
+  double narrowest = s.kernels.empty() ? 0 : s.kernels[0].sigma;
+  for (const KernelModel& k : s.kernels) narrowest = std::min(narrowest, k.sigma);
+  tof_max_rotation_ = params::kTofMaxRotationSigma * narrowest;
   bank_ = build_float_bank(s_);
 }
 
@@ -209,6 +213,10 @@ FloatMeasurement measure_float(const FloatBank& bank, const EstimatorSettings& s
   m.mid = (f[0] + f[1]) / 2;
   m.diff = f[1] - f[0];
   m.rot = (r[0] + r[1]) / 2;
+  for (int i = 0; i < 2; ++i) {
+    m.f[i] = f[i];
+    m.r[i] = r[i];
+  }
   // Each kernel's output as a local sinusoid: omega^2 = -C R / R^2 and
   // z_i = (F_i - dc) - i R_i / omega; arg(z1 conj(z0)) = k h.
   m.half_phase = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));
@@ -246,19 +254,24 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
   if (gyro_saturated) status |= kStatusSaturated;
   auto converging = [&] { return !started_ || since_start_ns_ < converging_ns_; };
   if (m.no_light || m.no_stereo) {
-    status |= (m.no_light ? kStatusNoLight : kStatusNoStereo) | kStatusLowTexture;
+    status |= (m.no_light ? kStatusNoLight : kStatusNoStereo) | kStatusLowTexture | kStatusNoTof;
     have_prev_ = false;
     have_ref_ = still_ = false;  // GyroOffset::drop_reference
+    tof_.reset();
+    fusion_.restart();
   } else if (!have_prev_) {
+    status |= kStatusNoTof;
     have_prev_ = true;
     prev_ = m;
   } else {
     const double dt = (static_cast<double>(t_ns) - static_cast<double>(prev_t_)) * 1e-9;
     if (t_ns <= prev_t_ || t_ns - prev_t_ > max_gap_ns_) {
-      status |= kStatusFrameGap | kStatusRestarted;
+      status |= kStatusFrameGap | kStatusRestarted | kStatusNoTof;
       started_ = false;  // V held; the next interval re-initialises it
       since_start_ns_ = 0;
       have_ref_ = still_ = false;
+      tof_.reset();
+      fusion_.restart();
     } else {
       if ((t_ns - prev_t_) * 2 > frame_period_ns_ * 3) status |= kStatusFrameGap;
       const Eigen::VectorXd s_bar = (m.diff + prev_.diff) / 2;
@@ -276,6 +289,7 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
       est.texture = s_bar.size() ? std::sqrt(ss_min / static_cast<double>(s_bar.size())) : 0;
       const double den = a.squaredNorm();
       bool textured = false;
+      double residual = 0;
       if (gyro_saturated) {
         est.texture = 0;
       } else if (den <= 0 || s_bar.squaredNorm() <= 0 || est.texture < s_.low_texture) {
@@ -284,6 +298,9 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
         textured = true;
         const double d = s_.baseline * e.dot(a) / den;
         est.v_direct = d / dt;
+        // VelocityObserver's residual ratio: the kernels' disagreement.
+        const double ee = e.squaredNorm();
+        residual = ee > 0 ? std::min((e - (d / s_.baseline) * a).squaredNorm() / ee, 1.0) : 0.0;
         if (!started_) {
           v_ = est.v_direct;
           started_ = true;
@@ -293,7 +310,34 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
           since_start_ns_ += t_ns - prev_t_;
         }
       }
-      distance_ += v_ * dt;
+      // The time of flight and the fusion (Estimator::step).
+      y_ += (textured ? est.v_direct : v_) * dt;
+      FloatTofResult tof;
+      if (!gyro_saturated) {
+        FloatTofFrame tf;
+        tf.t_ns = t_ns;
+        tf.heading = heading_;
+        tf.y = y_;
+        for (int i = 0; i < 2; ++i) {
+          tf.f[i] = m.f[i];
+          tf.r[i] = m.r[i];
+        }
+        tof_.push(tf);
+        tof = tof_.track(s_.baseline, tof_max_rotation_, fusion_.v());
+      }
+      FloatFusionInput fin;
+      fin.dt = dt;
+      fin.v_differential = v_;
+      fin.direct = textured;
+      fin.v_direct = est.v_direct;
+      fin.residual = residual;
+      fin.tof = &tof;
+      fin.y = y_;
+      fin.baseline = s_.baseline;
+      const FloatFusionOutput fo = fusion_.update(fin);
+      if (!fo.used_tof) status |= kStatusNoTof;
+      est.tof_s = tof.ok ? tof.tau_ns * 1e-9 : 0;
+      distance_ += fo.v * dt;
       if (s_.gyro_offset_learning) {
         if (status & (kStatusFrameGap | kStatusGyroGap)) have_ref_ = still_ = false;
         learn_offset(m, t_ns, angle, textured);
@@ -305,7 +349,9 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
   if (converging()) status |= kStatusConverging;
   prev_t_ = t_ns;
   prev_angle_ = angle;
-  est.v = v_;
+  est.v_differential = v_;
+  est.v = fusion_.v();
+  est.scale = fusion_.scale();
   est.distance = distance_;
   est.status = status;
   est.gyro_offset = offset_;

@@ -31,13 +31,21 @@ void write_row(std::FILE* f, const EngineEstimate& e, uint64_t t_ns) {
   p = put_double(p, end, e.v_direct);
   *p++ = ',';
   p = put_double(p, end, e.texture);
+  *p++ = ',';
+  p = put_double(p, end, e.v_differential);
+  *p++ = ',';
+  p = put_double(p, end, e.tof_s);
+  *p++ = ',';
+  p = put_double(p, end, e.scale);
   *p++ = '\n';
   std::fwrite(buf, 1, static_cast<size_t>(p - buf), f);
 }
 
 }  // namespace
 
-const char* const kEstimatesHeader = "timestamp_ns,v_xb_mps,distance_m,heading_rad,status,gyro_offset_radps,v_direct_mps,texture";
+const char* const kEstimatesHeader =
+    "timestamp_ns,v_xb_mps,distance_m,heading_rad,status,gyro_offset_radps,v_direct_mps,texture,v_differential_mps,"
+    "tof_s,scale";
 
 bool has_lens_distortion(const EstimatorSettings& s) { return !s.cam[0].edges.empty() || !s.cam[1].edges.empty(); }
 

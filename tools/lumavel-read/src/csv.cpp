@@ -50,7 +50,7 @@ std::string status_names(uint16_t status) {
                 {kStatusSaturated, "SATURATED"},   {kStatusFrameGap, "FRAME_GAP"},
                 {kStatusGyroGap, "GYRO_GAP"},      {kStatusNoLight, "NO_LIGHT"},
                 {kStatusRestarted, "RESTARTED"},   {kStatusStill, "STILL"},
-                {kStatusNoStereo, "NO_STEREO"}};
+                {kStatusNoStereo, "NO_STEREO"}, {kStatusNoTof, "NO_TOF"}};
   if (status == 0) return "ok";
   std::string s;
   for (const auto& n : kNames) {

@@ -9,6 +9,8 @@
 #include "lumavel/core/gyro_offset.hpp"
 #include "lumavel/core/kernel_bank.hpp"
 #include "lumavel/core/measurement.hpp"
+#include "lumavel/core/time_of_flight.hpp"
+#include "lumavel/core/velocity_fusion.hpp"
 #include "lumavel/core/velocity_observer.hpp"
 
 namespace lumavel {
@@ -23,13 +25,16 @@ struct FramePair {
 struct Estimate {
   uint64_t t_ns;
   uint32_t frame_index;
-  SpeedQ16 v;          // filtered curvilinear velocity
+  SpeedQ16 v;          // curvilinear velocity: the differential and the time of flight fused
   DistQ32 distance;    // integral of v
   AngleQ28 heading;    // integral of the gyro, wrapped to [-pi, pi)
   uint16_t status;     // StatusFlag bits
   SpeedQ16 v_direct;   // this interval's direct measurement (0 when none)
   ValueQ28 texture;    // rms over kernels of F1 - F0, weaker frame of the interval
   RateQ24 gyro_offset; // learned zero-rate offset, subtracted from the gyro
+  SpeedQ16 v_differential;  // the differential observer alone (paper eq. 9)
+  int64_t tof_ns;      // this frame's time of flight (0: none)
+  ScaleQ24 scale;      // the differential's learned scale against the time of flight
 };
 
 class Estimator {
@@ -58,6 +63,11 @@ class Estimator {
   GyroIntegrator gyro_{};
   GyroOffset gyro_offset_{};
   VelocityObserver observer_{};
+  TimeOfFlight tof_{};
+  VelocityFusion fusion_{};
+  AngleQ28 tof_max_rotation_ = 0;  // rotation allowed between the two sightings
+  DistQ32 y_ = 0;                  // integral of the differential observer's V
+  int64_t y_rem_ = 0;
   StereoMeasurement meas_[2]{};  // previous and current frame
   int cur_ = 0;
   bool have_prev_ = false;

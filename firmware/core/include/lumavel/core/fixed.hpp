@@ -13,6 +13,13 @@
 //   PixelQ16    int32    Q15.16   [-32768, 32768) px    1.53e-5 px        intrinsics fu, cu
 //   CurvQ12     int32    Q19.12   [-524288, 524288)/rad^3 2.4e-4 /rad^3   d3F/dtheta3 (a correction term:
 //                                                                         1e-4 relative is plenty)
+//   FracQ16     int32    Q15.16   [0, 1] used           1.53e-5           fractions and ratios: the observer's
+//                                                                         least-squares residual, weights,
+//                                                                         relative precisions
+//   ScaleQ24    int32    Q7.24    [0.5, 2] used         6e-8              the differential's scale against the
+//                                                                         time of flight (velocity_fusion.hpp)
+//   AccelQ16    int32    Q15.16   [-10, 10] m/s^2 used  1.53e-5 m/s^2     the fused velocity's rate of change
+//   VarQ40      int64    Q23.40   [0, 2^23)             9.1e-13           variance of the scale (1e-8..1e-2)
 //   EdgeOffsetQ15 int16  Q0.15    [-1, 1) rad           3.05e-5 rad       lens correction of a column edge,
 //                                                                         added to the pinhole edge (config.hpp).
 //                                                                         Rounding <= 1.5e-5 rad: 0.06 % of a
@@ -37,6 +44,10 @@ using SlopeQ20 = int32_t;
 using PixelQ16 = int32_t;
 using CurvQ12 = int32_t;
 using EdgeOffsetQ15 = int16_t;
+using FracQ16 = int32_t;
+using ScaleQ24 = int32_t;
+using AccelQ16 = int32_t;
+using VarQ40 = int64_t;
 
 namespace fx {
 
@@ -50,6 +61,10 @@ constexpr int kSlopeFrac = 20;
 constexpr int kPixelFrac = 16;
 constexpr int kCurvFrac = 12;
 constexpr int kEdgeOffsetFrac = 15;
+constexpr int kFracFrac = 16;
+constexpr int kScaleFrac = 24;
+constexpr int kAccelFrac = 16;
+constexpr int kVarFrac = 40;
 
 constexpr int32_t kInt32Max = 2147483647;
 constexpr int32_t kInt32Min = -kInt32Max - 1;
@@ -60,6 +75,14 @@ constexpr AngleQ28 kPiQ28 = 843314857;
 // A gyro rate at either end of RateQ24 was clipped on the way in (the
 // sensor's or the conversion's range): its true value is unknown.
 constexpr bool rate_at_rail(RateQ24 r) { return r == kInt32Max || r == kInt32Min; }
+
+// A constant in a Q format, built from its real value at compile time: use it
+// only to initialise constexpr integers (the firmware computes no floats).
+constexpr int64_t q_of(double v, int frac) {
+  double s = v;
+  for (int i = 0; i < frac; ++i) s *= 2;
+  return static_cast<int64_t>(s >= 0 ? s + 0.5 : s - 0.5);
+}
 
 // Clamps a 64-bit value into int32; sets *saturated when it had to.
 constexpr int32_t sat32(int64_t v, bool* saturated = nullptr) {

@@ -11,6 +11,9 @@
 #ifndef LUMAVEL_MAX_KERNELS
 #define LUMAVEL_MAX_KERNELS 6
 #endif
+#ifndef LUMAVEL_TOF_FRAMES
+#define LUMAVEL_TOF_FRAMES 64  // frames of history for the time of flight (time_of_flight.hpp)
+#endif
 
 namespace lumavel {
 constexpr int kMinColumns = 16;
@@ -18,6 +21,8 @@ constexpr int kMaxColumns = LUMAVEL_MAX_COLS;
 constexpr int kMaxRows = LUMAVEL_MAX_ROWS;
 constexpr int kMaxKernels = LUMAVEL_MAX_KERNELS;
 constexpr int kMaxKernelOrder = 3;
+constexpr int kTofFrames = LUMAVEL_TOF_FRAMES;
+static_assert(kTofFrames >= 4, "the time of flight needs a few frames of history");
 static_assert(kMaxRows <= 128, "column sums must fit 15 bits");
 static_assert(kMaxColumns >= kMinColumns, "at least 16 columns");
 }  // namespace lumavel

@@ -19,6 +19,8 @@ struct StereoMeasurement {
   // w^2 = -C R / R^2 (C = d3F/dtheta3, derivatives of N neglected) and
   // z_i = (F_i - dc) - i R_i / w; half_phase = arg(z1 conj(z0)) / 2 = k h / 2.
   AngleQ28 half_phase[kMaxKernels];
+  ValueQ28 f[2][kMaxKernels];   // each camera's F (the time of flight compares cam0 with cam1's past)
+  SlopeQ20 r[2][kMaxKernels];   // each camera's dF/dtheta
   bool no_light;                // a normaliser was zero
   bool saturated;               // a ratio saturated
   uint32_t clipped;             // clipped pixels in both frames

@@ -16,10 +16,12 @@ enum StatusFlag : uint16_t {
   kStatusStill = 1u << 7,       // images static: the gyro's zero-rate offset is being learned
   kStatusNoStereo = 1u << 8,    // both cameras delivered the same image: no stereo difference,
                                 // V not observable, frame unusable (with kStatusLowTexture: V held)
+  kStatusNoTof = 1u << 9,       // no time-of-flight match this frame (standstill, too slow for the
+                                // history, turning, reversing, or lost): V from the differential alone
 };
 
 // Every bit defined above (a decoder refuses the others).
-constexpr uint16_t kKnownStatusFlags = 0x01FFu;
+constexpr uint16_t kKnownStatusFlags = 0x03FFu;
 
 
 }  // namespace lumavel

@@ -43,6 +43,11 @@ struct ObserverOutput {
   SpeedQ16 v;
   SpeedQ16 v_direct;
   ValueQ28 texture;
+  // How far the kernels disagree: the least-squares residual over the squared
+  // innovation, in [0, 1]. Near 0 where every kernel sees the same distance;
+  // it rises where near texture aliases the stereo difference (a measure of
+  // the direct value's trust, used by velocity_fusion.hpp).
+  FracQ16 residual;
   bool updated;      // false: low texture, V held
   bool saturated;
   bool converging;

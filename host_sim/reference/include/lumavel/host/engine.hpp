@@ -18,6 +18,9 @@ struct EngineEstimate {
   double v_direct = 0;  // this interval's direct measurement, m/s
   double texture = 0;   // rms of F1 - F0 over kernels
   double gyro_offset = 0;  // learned zero-rate offset, rad/s
+  double v_differential = 0;  // the differential observer alone, m/s (v fuses it with the time of flight)
+  double tof_s = 0;           // this frame's time of flight, s (0: none)
+  double scale = 1;           // the differential's learned scale against the time of flight
 };
 
 enum class EngineKind { kFixed, kFloat };

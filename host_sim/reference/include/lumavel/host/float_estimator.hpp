@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "lumavel/host/engine.hpp"
+#include "lumavel/host/float_time_of_flight.hpp"
+#include "lumavel/host/float_velocity_fusion.hpp"
 #include "lumavel/host/settings.hpp"
 
 namespace lumavel::host {
@@ -28,6 +30,7 @@ FloatBank build_float_bank(const EstimatorSettings& s);
 struct FloatMeasurement {
   Eigen::VectorXd mid, diff, rot;
   Eigen::VectorXd half_phase;            // x = k h / 2 per kernel, from the cameras' phases
+  Eigen::VectorXd f[2], r[2];            // each camera's F and dF/dtheta
   bool no_light = false;
   bool no_stereo = false;  // same textured column profile in both cameras (same_textured_profile)
   double clipped = 0, sampled = 0;
@@ -76,6 +79,11 @@ class FloatEstimator {
   uint64_t t_ref_ = 0;
   FloatMeasurement ref_;
   bool have_ref_ = false, still_ = false;
+  // time of flight and fusion
+  FloatTimeOfFlight tof_;
+  FloatVelocityFusion fusion_;
+  double tof_max_rotation_ = 0;
+  double y_ = 0;
 };
 
 }  // namespace lumavel::host

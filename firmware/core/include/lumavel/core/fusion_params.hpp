@@ -1,0 +1,74 @@
+// Parameters of the time-of-flight measurement and of its fusion with the
+// differential observer: one source of truth for the firmware core (which
+// builds its integer constants from these values at compile time) and the
+// double-precision twin (host_sim/reference). Each value says what it means
+// physically; none is tuned to one recording (docs/design.md tells how they
+// were chosen and what they were checked on).
+#pragma once
+
+namespace lumavel::params {
+
+// ---- time of flight (time_of_flight.hpp) ----
+// A match lies on the lead camera's path through kernel space between two of
+// its frames; its residual distance from that path must be small against the
+// step between the two frames ...
+constexpr double kTofMaxPathResidual = 0.3;
+// ... and against the trail camera's own change since its previous frame
+// (so that a still or slowly changing view cannot match anything).
+constexpr double kTofMaxResidualVsMotion = 1.0;
+// Rotation between the two sightings, in units of the narrowest kernel's
+// sigma: the matching removes it to first order only.
+constexpr double kTofMaxRotationSigma = 0.25;
+// The tracked time of flight may move by this many frame periods, or by this
+// fraction of itself, from one frame to the next.
+constexpr double kTofTrackGateFrames = 2.0;
+constexpr double kTofTrackGateFraction = 0.3;
+// Frames without a match before the track is dropped, and consistent frames
+// needed to take up a new one.
+constexpr int kTofTrackMisses = 5;
+constexpr int kTofAcquireFrames = 3;
+// A new track must agree with the fused velocity to this fraction (a periodic
+// scene offers matches at wrong times too), unless the rig is this slow (m/s).
+constexpr double kTofAcquireAgreement = 0.3;
+constexpr double kTofAcquireMinSpeed = 0.1;
+// Longest time of flight used (s): beyond it the window mean lags a varying V.
+constexpr double kTofMaxTau = 0.6;
+
+// ---- fusion (velocity_fusion.hpp) ----
+// The differential's residual ratio is tracked only while it moves (m/s) ...
+constexpr double kFusionResidualMinSpeed = 0.05;
+// ... with this gain per frame.
+constexpr double kFusionResidualGain = 0.3;
+// The differential's relative uncertainty: a floor plus this much of the
+// square root of its residual ratio, times the speed, plus an absolute floor (m/s).
+constexpr double kFusionDiffFloor = 0.005;
+constexpr double kFusionDiffPerResidual = 0.5;
+constexpr double kFusionSpeedFloor = 0.003;
+// The time of flight's relative uncertainty is never taken below this, and is
+// inflated by the normalised innovation it shows against a clean differential
+// (tracked with this gain, bounded to [1, 100]): its timing uncertainty is an
+// estimate, the innovations show what it really is on this scene.
+constexpr double kFusionTofFloor = 0.01;
+constexpr double kFusionTofInflationGain = 0.02;
+constexpr double kFusionTofInflationMax = 100.0;
+// The differential's scale is learned from the time of flight only while its
+// residual ratio is below this (a clean differential), as a random walk of
+// this variance per second, from measurements whose variance is
+// 4 max(sig, kFusionTofFloor)^2 times the frames in the window (consecutive
+// frames share most of their window: one independent measurement per tau).
+constexpr double kFusionScaleMaxResidual = 0.02;
+// ... and while V changes by less than this fraction over the window (during
+// an acceleration the direct values lag it, which would read as a scale).
+constexpr double kFusionScaleMaxChange = 0.01;
+constexpr double kFusionScaleWalk = 1e-4;
+constexpr double kFusionScaleStartVar = 1e-3;  // the prior: 1 +- 3 %
+constexpr double kFusionScaleMin = 0.5, kFusionScaleMax = 2.0;
+// Output smoothing (s); without a time of flight it slows by 1 + residual/0.05.
+constexpr double kFusionTau = 0.02;
+constexpr double kFusionSlowResidual = 0.05;
+// The rate of change of V, for the window's lag (tau / 2): its smoothing (s)
+// and bound (m/s^2).
+constexpr double kFusionAccelTau = 0.3;
+constexpr double kFusionAccelMax = 10.0;
+
+}  // namespace lumavel::params

@@ -1,0 +1,85 @@
+// The depth-free measurement: when the rig moves along its baseline, the
+// trail camera passes where the lead camera was. The time it takes,
+// tau = h / V on average, does not depend on the scene's depth at all.
+//
+// A short history keeps both cameras' kernel outputs F and dF/dtheta frame by
+// frame. Every frame, the trail camera's current outputs (rotated back to the
+// lead's heading of the moment, to first order, with the gyro) are looked for
+// on the lead camera's path through kernel space: on each segment between two
+// of its frames, the closest point (linear interpolation in time) and its
+// residual distance. A segment counts when the residual is small against the
+// segment's step and against the trail camera's own frame-to-frame change,
+// and when the rotation between the two sightings is small. cam0 trailing
+// means the body moved +h (along body x) since then; cam1 trailing, -h.
+//
+// Of all the candidates, the tracker keeps the one that continues the tracked
+// time of flight (it moves smoothly from frame to frame); without a track it
+// takes a new one only after the same candidate held for several frames and
+// agrees with the fused velocity (periodic scenes offer wrong matches too).
+// Reversals, standstill and speeds too slow for the history simply leave no
+// candidate: the caller falls back to the differential observer alone.
+//
+// Cost: a track is searched on the segments near the tracked tau; without one,
+// on the whole history (both directions).
+#pragma once
+#include <cstdint>
+
+#include "lumavel/core/fixed.hpp"
+#include "lumavel/core/limits.hpp"
+
+namespace lumavel {
+
+// One usable frame: both cameras' kernel outputs and what the fusion needs.
+struct TofFrame {
+  uint64_t t_ns;
+  int64_t heading;                     // offset-corrected gyro integral, unwrapped, Q28 rad
+  ValueQ28 f[2][kMaxKernels];          // F per camera
+  SlopeQ20 r[2][kMaxKernels];          // dF/dtheta per camera
+  DistQ32 y;                           // integral of the differential's direct values (raw, unscaled)
+};
+
+struct TofResult {
+  bool ok;
+  int8_t direction;   // +1: cam0 trails, the body moved +h since the match; -1: cam1 trails, -h
+  int64_t tau_ns;     // time since the lead camera stood here
+  SpeedQ16 v;         // displacement over tau: direction * h / tau
+  FracQ16 sig;        // relative uncertainty of v (the match's timing uncertainty over tau)
+  DistQ32 y_then;     // TofFrame::y at the match (the differential's distance over the window is y - y_then)
+};
+
+struct TofTrackInput {
+  LengthQ24 baseline;          // h (signed: x of cam1 minus x of cam0)
+  AngleQ28 max_rotation;       // rotation allowed between the sightings
+  SpeedQ16 v_fused;            // the current fused velocity (a new track must agree with it)
+  uint8_t count;               // kernels
+};
+
+class TimeOfFlight {
+ public:
+  void reset();
+  void push(const TofFrame& frame);
+  // The time of flight of the newest frame (push it first).
+  TofResult track(const TofTrackInput& in);
+  uint16_t frames() const { return count_; }
+
+ private:
+  struct Candidate {
+    int64_t stau_ns;   // signed: + cam0 trails, - cam1 trails
+    int64_t res;       // residual, Q48
+    int64_t sig_ns;    // timing uncertainty
+    DistQ32 y_then;
+  };
+  const TofFrame& at(uint16_t back) const;  // 0 = newest
+  // The best candidate on segments [back + 1, back] for back in [first, last], one direction.
+  bool search(const TofTrackInput& in, int trail, uint16_t first, uint16_t last, int64_t want_ns, Candidate& out) const;
+
+  TofFrame ring_[kTofFrames];
+  uint16_t head_ = 0;   // next slot to write
+  uint16_t count_ = 0;
+  int64_t track_ns_ = 0;        // tracked signed tau
+  uint8_t misses_ = 255;
+  uint8_t acquire_count_ = 0;
+  int64_t acquire_ns_ = 0;
+};
+
+}  // namespace lumavel

@@ -1,0 +1,76 @@
+// The fused velocity: the differential observer (paper eq. 9, instantaneous,
+// exact where the stereo disparity is small against the kernels) and the time
+// of flight (depth-free, but a mean over its window), each weighted by how far
+// it can be trusted at this moment.
+//
+// - The differential's uncertainty comes from itself: the least-squares
+//   residual of its kernels (velocity_observer.hpp). Where near texture makes
+//   the stereo difference alias, the kernels disagree and the residual rises;
+//   on a clean scene it is near zero and the output is the differential's.
+// - The time of flight's uncertainty is its match's timing uncertainty over
+//   tau (time_of_flight.hpp), never below kFusionTofFloor. Its window mean
+//   lags a changing V by tau / 2, which is added back from the fused V's own
+//   rate of change.
+// - The differential's scale (its distance over the window against h) is
+//   learned where the differential is clean, as a slow random walk, and the
+//   differential is divided by it: a consistent bias, e.g. from a finite
+//   baseline on broadband texture, goes away even where no time of flight is
+//   found for a while.
+// - Without a time of flight (standstill, too slow for the history, turning,
+//   reversing, lost), the output follows the differential, more slowly the
+//   less it can be trusted; the caller flags the frame (kStatusNoTof).
+// - Where the differential cannot see motion (low texture), V is held, as the
+//   observer holds it.
+//
+// Plain data in and out, integer only. Its double twin is
+// host_sim/reference/src/float_velocity_fusion.cpp.
+#pragma once
+#include <cstdint>
+
+#include "lumavel/core/fixed.hpp"
+#include "lumavel/core/time_of_flight.hpp"
+
+namespace lumavel {
+
+struct FusionInput {
+  int64_t dt_ns;
+  SpeedQ16 v_differential;  // the observer's V
+  bool direct;              // the observer measured this interval ...
+  SpeedQ16 v_direct;        // ... this value ...
+  FracQ16 residual;         // ... with this residual ratio
+  const TofResult* tof;     // this frame's time of flight (ok or not)
+  DistQ32 y;                // integral of v_differential (TofFrame::y of this frame)
+  LengthQ24 baseline;
+};
+
+struct FusionOutput {
+  SpeedQ16 v;
+  bool used_tof;   // the time of flight entered this frame's estimate
+  bool saturated;
+};
+
+class VelocityFusion {
+ public:
+  void reset() { *this = VelocityFusion{}; }
+  // After a break (gap, no light): V is held until the next update, which
+  // starts again from the differential; the learned scale, residual and
+  // inflation are kept.
+  void restart() { started_ = false; }
+  FusionOutput update(const FusionInput& in);
+  // The fused V: held over frames without an update (no light, gaps, low
+  // texture) and before the first one (0).
+  SpeedQ16 v() const { return v_; }
+  ScaleQ24 scale() const { return scale_; }
+
+ private:
+  bool started_ = false;
+  SpeedQ16 v_ = 0;
+  AccelQ16 accel_ = 0;
+  FracQ16 residual_ = 0;           // tracked residual ratio of the differential
+  int32_t tof_inflation_ = int32_t{1} << 16;  // Q16, >= 1: the time of flight's variance factor
+  ScaleQ24 scale_ = int32_t{1} << fx::kScaleFrac;
+  VarQ40 scale_var_ = 0;
+  bool scale_started_ = false;
+};
+
+}  // namespace lumavel

@@ -1,0 +1,47 @@
+// The double twin of firmware/core/time_of_flight.hpp: the same history, the
+// same search and the same tracker, with no quantisation (read the core's
+// header for what it does and why).
+#pragma once
+#include <Eigen/Dense>
+#include <cstdint>
+#include <vector>
+
+namespace lumavel::host {
+
+struct FloatTofFrame {
+  uint64_t t_ns = 0;
+  double heading = 0;          // rad, unwrapped, offset-corrected
+  Eigen::VectorXd f[2], r[2];  // each camera's F and dF/dtheta
+  double y = 0;                // integral of the differential observer's V, m
+};
+
+struct FloatTofResult {
+  bool ok = false;
+  int direction = 0;   // +1: cam0 trails (+h since the match), -1: cam1 trails
+  double tau_ns = 0;
+  double v = 0;        // m/s
+  double sig = 0;      // relative uncertainty of v
+  double y_then = 0;
+};
+
+class FloatTimeOfFlight {
+ public:
+  void reset();
+  void push(const FloatTofFrame& frame);
+  FloatTofResult track(double baseline, double max_rotation, double v_fused);
+
+ private:
+  struct Candidate {
+    double stau_ns = 0, res = 0, sig_ns = 0, y_then = 0;
+  };
+  const FloatTofFrame& at(size_t back) const;
+  bool search(int trail, double max_rotation, double want_ns, Candidate& out) const;
+
+  std::vector<FloatTofFrame> ring_;  // capacity kTofFrames, oldest first
+  double track_ns_ = 0;
+  int misses_ = 255;
+  int acquire_count_ = 0;
+  double acquire_ns_ = 0;
+};
+
+}  // namespace lumavel::host

@@ -1,0 +1,41 @@
+// The double twin of firmware/core/velocity_fusion.hpp (read the core's header
+// for what it does and why).
+#pragma once
+#include <cstdint>
+
+#include "lumavel/host/float_time_of_flight.hpp"
+
+namespace lumavel::host {
+
+struct FloatFusionInput {
+  double dt = 0;              // s
+  double v_differential = 0;  // m/s
+  bool direct = false;
+  double v_direct = 0;
+  double residual = 0;        // [0, 1]
+  const FloatTofResult* tof = nullptr;
+  double y = 0;               // m
+  double baseline = 0;        // m
+};
+
+struct FloatFusionOutput {
+  double v = 0;
+  bool used_tof = false;
+};
+
+class FloatVelocityFusion {
+ public:
+  void reset() { *this = FloatVelocityFusion{}; }
+  void restart() { started_ = false; }
+  FloatFusionOutput update(const FloatFusionInput& in);
+  double v() const { return v_; }
+  double scale() const { return scale_; }
+
+ private:
+  bool started_ = false;
+  double v_ = 0, accel_ = 0, residual_ = 0, tof_inflation_ = 1;
+  double scale_ = 1, scale_var_ = 0;
+  bool scale_started_ = false;
+};
+
+}  // namespace lumavel::host

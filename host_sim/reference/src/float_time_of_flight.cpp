@@ -1,0 +1,129 @@
+#include "lumavel/host/float_time_of_flight.hpp"
+
+#include <cmath>
+
+#include "lumavel/core/fusion_params.hpp"
+#include "lumavel/core/limits.hpp"
+
+namespace lumavel::host {
+namespace {
+
+using namespace params;
+
+double gate_ns(double tau_ns, double frame_ns) {
+  return std::max(kTofTrackGateFrames * frame_ns, kTofTrackGateFraction * std::fabs(tau_ns));
+}
+
+}  // namespace
+
+void FloatTimeOfFlight::reset() { *this = FloatTimeOfFlight{}; }
+
+void FloatTimeOfFlight::push(const FloatTofFrame& frame) {
+  if (ring_.size() == static_cast<size_t>(kTofFrames)) ring_.erase(ring_.begin());
+  ring_.push_back(frame);
+}
+
+const FloatTofFrame& FloatTimeOfFlight::at(size_t back) const { return ring_[ring_.size() - 1 - back]; }
+
+bool FloatTimeOfFlight::search(int trail, double max_rotation, double want_ns, Candidate& out) const {
+  const int lead = 1 - trail;
+  const FloatTofFrame& now = at(0);
+  const FloatTofFrame& before = at(1);
+  const double motion = (now.f[trail] - before.f[trail]).squaredNorm();
+  bool found = false;
+  for (size_t back = 0; back + 1 < ring_.size(); ++back) {
+    const FloatTofFrame& b = at(back);
+    const FloatTofFrame& a = at(back + 1);
+    if (want_ns > 0) {
+      const double lo = static_cast<double>(now.t_ns - b.t_ns), hi = static_cast<double>(now.t_ns - a.t_ns);
+      const double g = gate_ns(want_ns, static_cast<double>(now.t_ns - before.t_ns));
+      if (hi < want_ns - g || lo > want_ns + g) continue;
+    }
+    const double dth = now.heading - (a.heading + b.heading) / 2;
+    if (std::fabs(dth) > max_rotation) continue;
+    const Eigen::VectorXd rb = (now.r[trail] + (a.r[lead] + b.r[lead]) / 2) / 2;
+    const Eigen::VectorXd e = now.f[trail] - dth * rb - a.f[lead];
+    const Eigen::VectorXd d = b.f[lead] - a.f[lead];
+    const double ee = e.squaredNorm(), ed = e.dot(d), dd = d.squaredNorm();
+    if (dd <= 0 || ed < 0 || ed > dd) continue;
+    const double fr = ed / dd;
+    const double res = std::max(ee - fr * ed, 0.0);
+    if (res > kTofMaxPathResidual * kTofMaxPathResidual * dd ||
+        res > kTofMaxResidualVsMotion * kTofMaxResidualVsMotion * motion)
+      continue;
+    const double span = static_cast<double>(b.t_ns - a.t_ns);
+    const double tau = static_cast<double>(now.t_ns) - (static_cast<double>(a.t_ns) + span * fr);
+    if (tau <= 0) continue;
+    const double stau = trail == 0 ? tau : -tau;
+    const bool better = !found || (want_ns > 0 ? std::fabs(tau - want_ns) < std::fabs(std::fabs(out.stau_ns) - want_ns)
+                                               : res < out.res);
+    if (!better) continue;
+    found = true;
+    out.stau_ns = stau;
+    out.res = res;
+    out.sig_ns = span * std::sqrt(res / dd);
+    out.y_then = a.y + fr * (b.y - a.y);
+  }
+  return found;
+}
+
+FloatTofResult FloatTimeOfFlight::track(double baseline, double max_rotation, double v_fused) {
+  FloatTofResult r;
+  if (ring_.size() < 3) {
+    misses_ = 255;
+    return r;
+  }
+  const double frame_ns = static_cast<double>(at(0).t_ns - at(1).t_ns);
+  Candidate pick;
+  bool have = false;
+  if (misses_ < kTofTrackMisses) {
+    Candidate c;
+    const int trail = track_ns_ > 0 ? 0 : 1;
+    if (search(trail, max_rotation, std::fabs(track_ns_), c) &&
+        std::fabs(std::fabs(c.stau_ns) - std::fabs(track_ns_)) < gate_ns(track_ns_, frame_ns)) {
+      pick = c;
+      have = true;
+    }
+  }
+  if (!have) {
+    if (misses_ < 255) ++misses_;
+    Candidate best;
+    bool any = false;
+    for (int trail = 0; trail < 2; ++trail) {
+      Candidate c;
+      if (!search(trail, max_rotation, 0, c)) continue;
+      const double v = (c.stau_ns > 0 ? baseline : -baseline) * 1e9 / std::fabs(c.stau_ns);
+      if (std::fabs(v_fused) > kTofAcquireMinSpeed && std::fabs(v - v_fused) > kTofAcquireAgreement * std::fabs(v_fused))
+        continue;
+      if (!any || c.res < best.res) {
+        best = c;
+        any = true;
+      }
+    }
+    if (any) {
+      const bool same = acquire_count_ > 0 && (best.stau_ns > 0) == (acquire_ns_ > 0) &&
+                        std::fabs(std::fabs(best.stau_ns) - std::fabs(acquire_ns_)) < gate_ns(acquire_ns_, frame_ns);
+      acquire_count_ = same ? acquire_count_ + 1 : 1;
+      acquire_ns_ = best.stau_ns;
+      if (acquire_count_ >= kTofAcquireFrames) {
+        pick = best;
+        have = true;
+        acquire_count_ = 0;
+      }
+    } else {
+      acquire_count_ = 0;
+    }
+  }
+  if (!have) return r;
+  track_ns_ = pick.stau_ns;
+  misses_ = 0;
+  r.ok = true;
+  r.direction = pick.stau_ns > 0 ? 1 : -1;
+  r.tau_ns = std::fabs(pick.stau_ns);
+  r.v = r.direction * baseline * 1e9 / r.tau_ns;
+  r.sig = pick.sig_ns / r.tau_ns;
+  r.y_then = pick.y_then;
+  return r;
+}
+
+}  // namespace lumavel::host

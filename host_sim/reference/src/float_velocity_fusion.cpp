@@ -1,0 +1,75 @@
+#include "lumavel/host/float_velocity_fusion.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "lumavel/core/fusion_params.hpp"
+
+namespace lumavel::host {
+
+using namespace params;
+
+FloatFusionOutput FloatVelocityFusion::update(const FloatFusionInput& in) {
+  FloatFusionOutput out;
+  const FloatTofResult& tof = *in.tof;
+  const bool use_tof = tof.ok && tof.tau_ns < kTofMaxTau * 1e9;
+  if (in.direct && std::fabs(in.v_direct) > kFusionResidualMinSpeed)
+    residual_ += kFusionResidualGain * (in.residual - residual_);
+  const bool steady = std::fabs(accel_) * tof.tau_ns * 1e-9 < kFusionScaleMaxChange * std::fabs(tof.v);
+  if (use_tof && residual_ < kFusionScaleMaxResidual && steady) {
+    const double ratio = (in.y - tof.y_then) / (tof.direction * in.baseline);
+    if (ratio > 0) {
+      const double measured = std::clamp(ratio, kFusionScaleMin, kFusionScaleMax);
+      if (!scale_started_) {
+        scale_ = 1;
+        scale_var_ = kFusionScaleStartVar;
+        scale_started_ = true;
+      }
+      scale_var_ += kFusionScaleWalk * in.dt;
+      const double sig = std::max(tof.sig, kFusionTofFloor);
+      const double frames = std::max(1.0, std::ceil(tof.tau_ns / (in.dt * 1e9)));
+      const double k = scale_var_ / (scale_var_ + 4 * sig * sig * frames);
+      scale_ = std::clamp(scale_ + k * (measured - scale_), kFusionScaleMin, kFusionScaleMax);
+      scale_var_ *= 1 - k;
+    }
+  }
+  const double vd = in.v_differential / scale_;
+  if (!in.direct) {  // nothing measured: V held
+    out.v = v_;
+    return out;
+  }
+  if (!started_) {
+    v_ = vd;
+    started_ = true;
+    out.v = v_;
+    return out;
+  }
+  const double speed = std::max(std::fabs(vd), std::fabs(v_));
+  const double sd = (kFusionDiffFloor + kFusionDiffPerResidual * std::sqrt(std::max(residual_, 0.0))) * speed +
+                    kFusionSpeedFloor;
+  double target = vd;
+  if (use_tof) {
+    const double zc = tof.v + accel_ * tof.tau_ns * 1e-9 / 2;
+    const double rel = std::max(tof.sig * std::sqrt(tof_inflation_), kFusionTofFloor);
+    const double st = rel * std::fabs(tof.v) + kFusionSpeedFloor;
+    const double w = sd * sd / (sd * sd + st * st);
+    target = vd + w * (zc - vd);
+    if (residual_ < kFusionScaleMaxResidual) {
+      const double g = (tof.v - vd) * (tof.v - vd) / (st * st + sd * sd);
+      tof_inflation_ = std::clamp(tof_inflation_ + kFusionTofInflationGain * (g - tof_inflation_), 1.0,
+                                  kFusionTofInflationMax);
+    }
+  }
+  const double teff = use_tof ? kFusionTau : kFusionTau * (1 + residual_ / kFusionSlowResidual);
+  const double nv = v_ + (target - v_) * in.dt / (teff + in.dt);
+  if (in.dt > 0) {
+    accel_ = std::clamp(accel_ + ((nv - v_) / in.dt - accel_) * in.dt / (kFusionAccelTau + in.dt), -kFusionAccelMax,
+                        kFusionAccelMax);
+  }
+  v_ = nv;
+  out.v = v_;
+  out.used_tof = use_tof;
+  return out;
+}
+
+}  // namespace lumavel::host
