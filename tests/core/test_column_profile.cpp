@@ -9,7 +9,8 @@ using namespace lumavel;
 TEST_GROUP(ColumnProfile){};
 
 TEST(ColumnProfile, SumsEveryColumnWhateverTheWidth) {
-  for (uint16_t w : {16, 17, 18, 19, 40, 159, 160}) {
+  for (int wi : {16, 17, 18, 19, 40, 159, 160}) {
+    const auto w = static_cast<uint16_t>(wi);
     const uint16_t h = 7, stride = static_cast<uint16_t>(w + 3);
     std::vector<uint8_t> img(static_cast<size_t>(stride) * h, 0xEE);
     for (uint16_t y = 0; y < h; ++y)
