@@ -60,6 +60,10 @@ std::vector<double> undistorted_column_edges(const CameraSensor& c, int work_wid
   return edges;
 }
 
+WorkingSize default_working_size(const Recording& rec) {
+  return {default_columns(rec.cam[0].width), default_rows(rec.cam[0].height)};
+}
+
 EstimatorSettings derive_settings(const Recording& rec, WorkingSize size) {
   const std::string yaml0 = rec.root + "/" + layout::kCamDir[0] + "/sensor.yaml";
   if (rec.cam[0].height == 1) size.height = 1;  // line-scan sensor
