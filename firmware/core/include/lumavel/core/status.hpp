@@ -16,4 +16,22 @@ enum StatusFlag : uint16_t {
   kStatusStill = 1u << 7,       // images static: the gyro's zero-rate offset is being learned
 };
 
+// Every flag with its name (as lumavel-read prints it) and what it means in
+// words, in bit order: the one table for summaries, plots and readers.
+struct StatusFlagInfo {
+  StatusFlag flag;
+  const char* name;
+  const char* meaning;
+};
+inline constexpr StatusFlagInfo kStatusFlags[] = {
+    {kStatusConverging, "CONVERGING", "converging"},
+    {kStatusLowTexture, "LOW_TEXTURE", "low texture, V held"},
+    {kStatusSaturated, "SATURATED", "saturated pixels or arithmetic"},
+    {kStatusFrameGap, "FRAME_GAP", "frame gap"},
+    {kStatusGyroGap, "GYRO_GAP", "gyro gap"},
+    {kStatusNoLight, "NO_LIGHT", "no light, V held"},
+    {kStatusRestarted, "RESTARTED", "observer restarted"},
+    {kStatusStill, "STILL", "still, gyro offset learned"},
+};
+
 }  // namespace lumavel
