@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   # host build and tests
-  build-essential cmake pkg-config cpputest libeigen3-dev libbenchmark-dev
+  build-essential cmake pkg-config cpputest libeigen3-dev libbenchmark-dev libcli11-dev
   # recordings, scenarios, images
   libpng-dev libyaml-cpp-dev
   # USB HID readout and the kernel-in-the-loop test
