@@ -326,3 +326,21 @@ TEST(Cli, ConfigurationRefusalsNameTheFileTheValueAndTheRule) {
                   "must be 0.1 ms..1 s",
                   r.err.c_str());
 }
+
+// A quick or partial reproduce never replaces the committed full page,
+// whatever the current folder (the test runs in a temporary one).
+TEST(Cli, QuickReproduceNeverWritesTheCommittedPage) {
+  const std::string page = LUMAVEL_SOURCE_DIR "/docs/results.md";
+  const std::string before = fixture::read_text(page);
+  Outcome r = sim("reproduce --quick --doc '" + page + "'");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("a --quick run never replaces the full results page docs/results.md", r.err.c_str());
+  r = sim("reproduce --only Lens --doc '" LUMAVEL_SOURCE_DIR "/host_sim/../docs/results.md'");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("a --only run never replaces the full results page", r.err.c_str());
+  STRCMP_EQUAL(before.c_str(), fixture::read_text(page).c_str());
+  r = sim("reproduce --help");
+  LONGS_EQUAL(0, r.code);
+  STRCMP_CONTAINS("never\nin the current folder", r.out.c_str());
+  STRCMP_CONTAINS("--quick", r.out.c_str());
+}

@@ -91,12 +91,16 @@ double case_cost(const Case& c, const Options& o) {
   ov.width = c.render_w;
   ov.height = c.render_h;
   ov.duration_s = c.duration;
+  ov.exposure_frames = c.exposure;
   render::apply_overrides(s, ov);
   const double frames = s.duration_s * s.camera.rate_hz;
   double pixels = 0;
   for (const WorkSize& w : c.work) pixels += 2.0 * w.width * w.height;
-  if (!render_is_cached(o.scenarios + "/" + c.scenario, render_dir(c, o), render_key(c)))
-    pixels += 8.0 * s.camera.width * s.camera.height;
+  if (!render_is_cached(o.scenarios + "/" + c.scenario, render_dir(c, o), render_key(c))) {
+    // Each plane in view and each exposure sub-frame is drawn again.
+    const double subframes = s.camera.exposure_frames > 0 ? 1 + 16 * s.camera.exposure_frames : 1;
+    pixels += 4.0 * s.camera.width * s.camera.height * (1 + 0.5 * static_cast<double>(s.planes.size())) * subframes;
+  }
   return frames * pixels;
 }
 

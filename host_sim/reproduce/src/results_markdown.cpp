@@ -208,10 +208,11 @@ std::string results_markdown(const std::vector<StudyResult>& results, const std:
   if (quick) command += " --quick";
   if (!info.only.empty()) command += " --only '" + info.only + "'";
   const bool partial = quick || !info.only.empty();
-  md << (partial ? "# Results (partial run): the paper's studies reproduced\n\n"
-                 : "# Results: the paper's studies reproduced\n\n")
-     << "Written by `" << command << "` (" << fmt("%.0f", info.seconds) << " s on " << info.machine
-     << ", of which " << fmt("%.0f", info.render_seconds) << " s rendering"
+  md << (quick ? "# Results (quick run): the paper's studies reproduced\n\n"
+              : partial ? "# Results (partial run): the paper's studies reproduced\n\n"
+                        : "# Results: the paper's studies reproduced\n\n")
+     << "Written by `" << command << "` in " << fmt("%.0f", info.seconds) << " s on " << info.machine
+     << " (" << fmt("%.0f", info.render_seconds) << " s of it rendering"
      << (info.renders_reused ? "; " + std::to_string(info.renders_reused) +
                                    (info.renders_reused == 1 ? " render" : " renders") +
                                    " reused from an earlier run, their time not counted"
@@ -222,9 +223,9 @@ std::string results_markdown(const std::vector<StudyResult>& results, const std:
         "of |V_est - V| / |V|, samples with |V| < 0.05 m/s left out), from the first frame on: "
         "convergence is included, as in the paper.\n\n";
   if (quick)
-    md << "**Quick subset** (CI): resolutions of 40x30 and below, shortened runs; each study says what this run "
-          "rendered. These are not the full study's figures: a target met here may be missed by the full run "
-          "(docs/results.md, `lumavel-sim reproduce` without `--quick`).\n\n";
+    md << "**Quick subset** (CI): fewer cases and resolutions, shortened runs; each study says what this run "
+          "rendered and ran. These are not the full study's figures: a target met here may be missed by the full "
+          "run (docs/results.md, `lumavel-sim reproduce` without `--quick`).\n\n";
   else if (partial)
     md << "**Partial run**: only the studies and sections whose title contains \"" << info.only
        << "\"; the full page is docs/results.md.\n\n";

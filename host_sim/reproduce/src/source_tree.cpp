@@ -47,7 +47,7 @@ std::string machine_description() {
     break;
   }
   std::string d = cpus ? std::to_string(cpus) + (cpus == 1 ? " CPU" : " CPUs") : std::string("an unknown number of CPUs");
-  if (!model.empty()) d += " (" + model + ")";
+  if (!model.empty()) d += ", " + model;
   return d;
 }
 

@@ -11,7 +11,7 @@ namespace lumavel::host::reproduce {
 // is there.
 std::string source_tree();
 
-// "2 CPUs (Intel(R) Xeon(R) ...)": what the figures were measured on.
+// "2 CPUs, Intel(R) Xeon(R) ...": what the figures were measured on.
 std::string machine_description();
 
 }  // namespace lumavel::host::reproduce
