@@ -104,7 +104,8 @@ TEST(TrackPlot, FlaggedFramesAreShadedAndNamed) {
   t[300].status = lumavel::kStatusFrameGap;
   const std::string svg = track_svg(t, "x");
   STRCMP_CONTAINS(">SATURATED<", svg.c_str());
-  STRCMP_CONTAINS(">saturated pixels or arithmetic: 50 frames<", svg.c_str());
+  STRCMP_CONTAINS(">SATURATED: saturated pixels or arithmetic, 50 frames<", svg.c_str());
+  STRCMP_CONTAINS(">FRAME_GAP: frame gap, 1 frame<", svg.c_str());
   STRCMP_CONTAINS(">FRAME_GAP<", svg.c_str());
   STRCMP_CONTAINS("flagged: 10 % of frames", svg.c_str());
   CHECK(count(svg, "fill=\"#CC79A7\" fill-opacity=\"0.16\"") == 2);  // one band in each panel

@@ -295,7 +295,25 @@ std::string track_svg(const std::vector<TrackPoint>& track, const std::string& t
   const Panel error{speed.bottom() + kGap, any_truth ? kErrorH : 0};
   const double lanes_top = (any_truth ? error.bottom() : speed.bottom()) + kGap;
   const double lanes_h = lanes.empty() ? 14 : static_cast<double>(lanes.size()) * (kLaneH + kLaneGap);
-  const double height = lanes_top + lanes_h + 44;
+  // The key of the lanes under the time axis: "NAME: meaning, N frames" each,
+  // wrapped to the width.
+  std::vector<std::pair<const FlagStyle*, std::string>> key;
+  for (const FlagStyle* f : lanes) {
+    size_t n = 0;
+    for (size_t i = 0; i < std::size(kStatusFlags); ++i)
+      if (kStatusFlags[i].flag == f->flag) n = counts.count[i];
+    key.emplace_back(f, std::string(info_of(f->flag).name) + ": " + info_of(f->flag).meaning + ", " + frames_text(n));
+  }
+  std::vector<std::vector<size_t>> key_rows(key.empty() ? 0 : 1);
+  double row_x = kX0;
+  for (size_t i = 0; i < key.size(); ++i) {
+    const double w = 14 + 6.2 * static_cast<double>(key[i].second.size()) + 18;
+    if (row_x + w > kX1 && !key_rows.back().empty()) key_rows.emplace_back(), row_x = kX0;
+    key_rows.back().push_back(i);
+    row_x += w;
+  }
+  const double key_top = lanes_top + lanes_h + 46;
+  const double height = key_top + 16.0 * static_cast<double>(key_rows.size()) + 6;
 
   std::string s = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + fmt("%.0f", kWidth) + "\" height=\"" +
                   fmt("%.0f", height) + "\" font-family=\"sans-serif\" font-size=\"12\">\n";
@@ -368,18 +386,21 @@ std::string track_svg(const std::vector<TrackPoint>& track, const std::string& t
       s += rect(kX0, y, kX1, y + kLaneH, "#eeeeee", 1.0);
       for (const auto& [a, e] : flag_runs(t, status, f.flag, ax))
         s += rect(ax.map(a, kX0, kX1), y, ax.map(e, kX0, kX1), y + kLaneH, f.colour, 0.95);
-      const StatusFlagInfo& info = info_of(f.flag);
-      size_t n = 0;
-      for (size_t i = 0; i < std::size(kStatusFlags); ++i)
-        if (kStatusFlags[i].flag == f.flag) n = counts.count[i];
-      s += text(kX0 - 6, y + kLaneH - 1, info.name, "end", " font-size=\"10\"");
-      s += text(kX1 - 4, y + kLaneH - 1.5, info.meaning + std::string(": ") + std::to_string(n) + " frames", "end",
-                " font-size=\"9\" fill=\"#222\"");
+      s += text(kX0 - 6, y + kLaneH - 1, info_of(f.flag).name, "end", " font-size=\"10\"");
     }
   }
   const double axis_y = lanes_top + lanes_h + 14;
   for (const svg::Tick& k : svg::ticks(ax, kX1 - kX0, true)) s += text(ax.map(k.value, kX0, kX1), axis_y, k.label, "middle");
-  s += text(kWidth / 2, height - 8, "time (s)", "middle");
+  s += text(kWidth / 2, axis_y + 17, "time (s)", "middle");
+  for (size_t r = 0; r < key_rows.size(); ++r) {
+    double x = kX0;
+    const double y = key_top + 16.0 * static_cast<double>(r);
+    for (size_t i : key_rows[r]) {
+      s += rect(x, y - 9, x + 10, y + 1, key[i].first->colour, 0.95);
+      s += text(x + 14, y, key[i].second, "start", " font-size=\"11\"");
+      x += 14 + 6.2 * static_cast<double>(key[i].second.size()) + 18;
+    }
+  }
   s += "</svg>\n";
   return s;
 }
