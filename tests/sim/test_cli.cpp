@@ -344,3 +344,21 @@ TEST(Cli, QuickReproduceNeverWritesTheCommittedPage) {
   STRCMP_CONTAINS("never\nin the current folder", r.out.c_str());
   STRCMP_CONTAINS("--quick", r.out.c_str());
 }
+
+// The plot a run writes is an SVG that a real renderer draws (rsvg-convert,
+// Debian librsvg2-bin): what a user converts to look at it.
+TEST(Cli, ThePlotRendersToAPng) {
+  fixture::Options o;
+  o.frames = 150;  // 1.5 s: an error panel with the first second clipped
+  o.drop_frames = {60, 61};
+  rec(o);
+  LONGS_EQUAL(0, sim("run rec -o est.csv --quiet").code);
+  const std::string svg = dir.path() + "/rec_estimates.svg", png = dir.path() + "/plot.png";
+  const std::string cmd = "rsvg-convert '" + svg + "' -o '" + png + "' 2>'" + dir.path() + "/rsvg.err'";
+  LONGS_EQUAL(0, std::system(cmd.c_str()));
+  const std::string bytes = fixture::read_text(png);
+  CHECK(bytes.size() > 10000);
+  CHECK(bytes.compare(1, 3, "PNG") == 0);
+  STRCMP_EQUAL("", fixture::read_text(dir.path() + "/rsvg.err").c_str());
+  STRCMP_CONTAINS(">FRAME_GAP<", fixture::read_text(svg).c_str());
+}

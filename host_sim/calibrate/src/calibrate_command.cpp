@@ -62,12 +62,16 @@ int calibrate(CalibrateArgs& a) {
   WorkingSize write_size = default_working_size(rec);
   if (!a.write_size.empty()) cli::parse_size(a.write_size, write_size.width, write_size.height);
   const int columns = std::min(a.opt.width, rec.cam[0].width);
-  if (columns < a.opt.width)
+  if (columns < kRegistrationColumns)
     std::fprintf(stderr,
-                 "calibrate: warning: %s has %d columns, fewer than the %d asked: registering at %d. calibrate is\n"
-                 "validated at %d columns (docs/results.md); on coarser images its estimate and its\n"
-                 "uncertainty are less reliable than at %d.\n",
-                 a.rec.c_str(), rec.cam[0].width, a.opt.width, columns, kRegistrationColumns, kRegistrationColumns);
+                 "calibrate: warning: registering at %d columns (%s); calibrate is validated at %d\n"
+                 "columns (docs/results.md): on coarser images its estimate and its uncertainty are\n"
+                 "less reliable.\n",
+                 columns,
+                 columns < a.opt.width ? ("the sensor's width: " + a.rec + " has " + std::to_string(rec.cam[0].width) +
+                                          " columns").c_str()
+                                       : "--width",
+                 kRegistrationColumns);
   auto stages = std::make_shared<StageProgress>();
   if (!a.quiet) a.opt.progress = [stages](const char* s, size_t d, size_t t) { (*stages)(s, d, t); };
   Calibration c;
