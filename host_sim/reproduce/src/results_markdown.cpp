@@ -36,16 +36,18 @@ struct Target {
 // What a study ran, from the recordings themselves: per case, the rendered
 // resolution and length and the working sizes.
 std::string what_ran(const StudyResult& sr) {
-  std::string out;
-  std::vector<std::string> seen;
+  std::vector<std::string> seen_ids, parts;
   for (const CaseResult& c : sr.cases) {
-    if (std::find(seen.begin(), seen.end(), c.c.id) != seen.end()) continue;
-    seen.push_back(c.c.id);
+    if (std::find(seen_ids.begin(), seen_ids.end(), c.c.id) != seen_ids.end()) continue;
+    seen_ids.push_back(c.c.id);
     std::string work;
     for (const WorkSize& w : c.c.work) work += (work.empty() ? "" : ", ") + size_name(w);
-    out += (out.empty() ? "" : "; ") + c.c.label + ": " + size_name(c.rendered) + ", " + fmt("%.1f s", c.rendered_s) +
-           ", run at " + work;
+    const std::string part = c.c.label + ": " + size_name(c.rendered) + ", " + fmt("%.1f s", c.rendered_s) +
+                             ", run at " + work;
+    if (std::find(parts.begin(), parts.end(), part) == parts.end()) parts.push_back(part);  // variants of one render
   }
+  std::string out;
+  for (const std::string& p : parts) out += (out.empty() ? "" : "; ") + p;
   return out;
 }
 

@@ -1,7 +1,5 @@
 #include "run_command.hpp"
 
-#include <unistd.h>
-
 #include <chrono>
 #include <cmath>
 #include <csignal>
@@ -13,10 +11,10 @@
 #include <vector>
 
 #include "lumavel/core/status.hpp"
-#include "lumavel/host/output_file.hpp"
 #include "lumavel/host/file_config_store.hpp"
 #include "lumavel/host/hid_link.hpp"
 #include "lumavel/host/hid_sender.hpp"
+#include "lumavel/host/output_file.hpp"
 #include "lumavel/host/progress.hpp"
 #include "lumavel/host/run_recording.hpp"
 #include "lumavel/host/track_plot.hpp"

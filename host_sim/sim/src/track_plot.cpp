@@ -307,7 +307,7 @@ std::string track_svg(const std::vector<TrackPoint>& track, const std::string& t
   std::vector<std::vector<size_t>> key_rows(key.empty() ? 0 : 1);
   double row_x = kX0;
   for (size_t i = 0; i < key.size(); ++i) {
-    const double w = 14 + 6.2 * static_cast<double>(key[i].second.size()) + 18;
+    const double w = 14 + 5.7 * static_cast<double>(key[i].second.size()) + 18;
     if (row_x + w > kX1 && !key_rows.back().empty()) key_rows.emplace_back(), row_x = kX0;
     key_rows.back().push_back(i);
     row_x += w;
@@ -398,7 +398,7 @@ std::string track_svg(const std::vector<TrackPoint>& track, const std::string& t
     for (size_t i : key_rows[r]) {
       s += rect(x, y - 9, x + 10, y + 1, key[i].first->colour, 0.95);
       s += text(x + 14, y, key[i].second, "start", " font-size=\"11\"");
-      x += 14 + 6.2 * static_cast<double>(key[i].second.size()) + 18;
+      x += 14 + 5.7 * static_cast<double>(key[i].second.size()) + 18;
     }
   }
   s += "</svg>\n";
