@@ -5,9 +5,9 @@ set -euo pipefail
 
 packages=(
   # host build and tests
-  build-essential cmake pkg-config cpputest libeigen3-dev libbenchmark-dev
-  # recordings, scenarios, images
-  libpng-dev libyaml-cpp-dev
+  build-essential cmake pkg-config cpputest libeigen3-dev libbenchmark-dev libcli11-dev
+  # recordings, scenarios, images; plots drawn to PNG in the tests
+  libpng-dev libyaml-cpp-dev librsvg2-bin
   # USB HID readout and the kernel-in-the-loop test
   libhidapi-dev libusb-1.0-0-dev qemu-system-x86 busybox-static cpio xz-utils kmod
   # fuzzing (libFuzzer)

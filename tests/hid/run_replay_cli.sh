@@ -1,7 +1,9 @@
 #!/bin/sh
 # lumavel-read replay end to end on report files: what the file link wrote
 # decodes to the estimates; a corrupted record and a truncated tail are named
-# and make the exit status 2.
+# and make the exit status 1; a duplicated record is named as duplicated;
+# the command line: help, --version, usage errors exit 2; configuration
+# files are checked before any device (config check).
 set -u
 READ=$1 FEEDER=$2 COMPARE=$3 MAKE=$4 DIR=$5
 fail() { echo "FAIL: $*" >&2; exit 1; }
@@ -24,16 +26,25 @@ printf "$(printf '\\%03o' $((byte ^ 4)))" | dd of=bad.hidrep bs=1 seek=$off conv
 printf '\052\001\001' >> bad.hidrep   # a record announcing 42 bytes, holding 2
 "$READ" replay bad.hidrep -o bad.csv 2> bad.err
 rc=$?
-[ $rc -eq 2 ] || fail "corrupted file: exit $rc, expected 2"
+[ $rc -eq 1 ] || fail "corrupted file: exit $rc, expected 1"
 grep -q "record 3 at byte 94.*CRC mismatch" bad.err || fail "CRC error not named: $(cat bad.err)"
 grep -q "record 301 .*truncated" bad.err || fail "truncation not named: $(cat bad.err)"
 rows=$(($(wc -l < bad.csv) - 1))
 [ $rows -eq 299 ] || fail "expected the 299 good rows, got $rows"
 
+# Record 2 written twice: named as a duplicate, skipped, not a loss.
+{ head -c $((8 + 2 * 43)) run.hidrep; tail -c +$((8 + 43 + 1)) run.hidrep; } > dup.hidrep
+"$READ" replay dup.hidrep -o dup.csv 2> dup.err || fail "duplicated record: exit $?"
+grep -q "duplicated report in dup.hidrep record 3 at byte 94: seq 1 again, skipped" dup.err \
+  || fail "duplicate not named: $(cat dup.err)"
+grep -q "lost" dup.err && fail "a duplicate reported as a loss: $(cat dup.err)"
+cmp -s out.csv dup.csv || fail "the duplicate changed the CSV"
+
 "$READ" replay missing.hidrep > /dev/null 2> missing.err && fail "missing file accepted"
 grep -q "missing.hidrep" missing.err || fail "missing file not named"
-"$READ" replay est.csv > /dev/null 2> notrep.err && fail "CSV accepted as a report file"
+"$READ" replay est.csv -o refused.csv > /dev/null 2> notrep.err && fail "CSV accepted as a report file"
 grep -q "not a lumavel report file" notrep.err || fail "wrong message: $(cat notrep.err)"
+[ -e refused.csv ] && fail "a refused replay left refused.csv behind"
 # `config set --file` checks the file before looking for a device: errors
 # name the file, the line and the key, exit 1, nothing sent.
 printf 'width=40\n# a comment\ntau_us=fast\n' > bad.cfg
@@ -43,9 +54,56 @@ rc=$?
 grep -q "bad.cfg:3: tau_us: \"fast\" is not an integer" badcfg.err || fail "config file error not named: $(cat badcfg.err)"
 printf 'width=40\nlens_cam0=0.1,0.2\n' > short.cfg
 "$READ" config set --file short.cfg 2> short.err
-grep -q "lens_cam0: 2 values, but width 40 needs 41" short.err || fail "short lens table not named: $(cat short.err)"
-for c in list stream info config replay; do
+grep -q "short.cfg:2: lens_cam0 = 0.1,0.2: 2 values, but width 40 needs 41" short.err || fail "short lens table not named: $(cat short.err)"
+for c in list stream info config "config get" "config set" "config check" replay; do
   "$READ" $c --help > help.txt || fail "$c --help exited $?"
-  grep -q "usage: lumavel-read" help.txt || fail "$c --help has no usage line"
+  head -n 1 help.txt | grep -q "^Usage: lumavel-read $c" || fail "$c --help does not start with its usage line"
+  grep -q "^Exit status: 0 done, 1 bad input or failure" help.txt || fail "$c --help has no exit status"
 done
+"$READ" --version > version.txt || fail "--version exited $?"
+grep -qx "lumavel-read [0-9]*\.[0-9]*\.[0-9]*" version.txt || fail "--version printed $(cat version.txt)"
+usage() {  # ARGS...: a usage error, exit 2, with the help hint
+  "$READ" "$@" > /dev/null 2> usage.err
+  rc=$?
+  [ $rc -eq 2 ] || fail "lumavel-read $*: exit $rc, expected 2"
+  grep -q -e "(see lumavel-read.* --help)" -e "^Usage: lumavel-read" usage.err || fail "lumavel-read $*: no help hint: $(cat usage.err)"
+}
+usage
+usage bogus
+usage --backend usb list
+usage stream --count many
+usage stream --live --no-live
+usage replay
+usage replay a b
+usage config
+usage config set
+usage config check
+
+# config check: the whole file before any device, each refusal naming the
+# file, the line, the key, the value and the rule.
+refused() {  # EXPECTED-MESSAGE ARGS...
+  want=$1; shift
+  "$READ" config check "$@" > /dev/null 2> check.err
+  rc=$?
+  [ $rc -eq 1 ] || fail "config check $*: exit $rc, expected 1"
+  grep -qF "$want" check.err || fail "config check $*: expected \"$want\", got: $(cat check.err)"
+}
+printf 'height=30\nwidth=0\n' > w0.cfg
+refused "w0.cfg:2: width = 0: width must be 16..160 columns" --file w0.cfg
+printf '# rig\nbaseline_m=5\n' > h5.cfg
+refused "h5.cfg:2: baseline_m = 5: baseline |h| must be 0.001..1 m" --file h5.cfg
+refused "command line: misalignment_rad = 0.5: misalignment must be -0.35..0.35 rad" misalignment_rad=0.5
+refused "command line: kernels = 9:0.07: kernel orders must be 0..3" kernels=9:0.07
+refused "command line: cu0_px = 63.5: cu must be 0..width - 1 px" width=40 cu0_px=63.5
+mkdir -p adir
+refused "adir: is a directory, not a configuration file" --file adir
+printf '\357\273\277width = 40\r\n  tau_us= 250000 \r\n' > bom.cfg  # UTF-8 BOM, CRLF, spaces around =
+"$READ" config check --file bom.cfg > ok.txt 2> ok.err || fail "a BOM / spaces / CRLF file refused: $(cat ok.err)"
+grep -q "^ok: 2 setting(s) checked" ok.txt || fail "config check printed $(cat ok.txt)"
+"$READ" config check cu0_px=100 > /dev/null || fail "cu0_px=100 refused without a width to check it against"
+# config set refuses the same file before looking for a device.
+"$READ" config set --file h5.cfg 2> set.err
+rc=$?
+[ $rc -eq 1 ] || fail "config set of a bad file: exit $rc, expected 1"
+grep -qF "h5.cfg:2: baseline_m = 5" set.err || fail "config set: $(cat set.err)"
 echo "replay CLI: ok"

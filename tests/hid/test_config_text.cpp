@@ -2,6 +2,8 @@
 // round trip, errors that name the key (and the file and line), lens lengths.
 #include <CppUTest/TestHarness.h>
 
+#include <unistd.h>
+
 #include <cstdio>
 #include <fstream>
 #include <stdexcept>
@@ -88,6 +90,86 @@ TEST(ConfigText, MissingFileIsNamed) {
     host::apply_settings_file(s, "/nonexistent/rig.cfg");
     FAIL("no error");
   } catch (const std::runtime_error& e) {
-    STRCMP_EQUAL("/nonexistent/rig.cfg: cannot open configuration file", e.what());
+    STRCMP_EQUAL("/nonexistent/rig.cfg: cannot open configuration file: No such file or directory", e.what());
   }
+}
+
+namespace {
+
+// The refusal of check_settings_offline for `text` read as rig.cfg, or "".
+std::string offline_refusal(const std::string& text) {
+  const std::string path = "/tmp/lumavel_config_text_" + std::to_string(::getpid()) + ".cfg";
+  { std::ofstream(path, std::ios::binary) << text; }
+  std::string why;
+  try {
+    host::GivenSettings g;
+    g.add_file(path);
+    host::check_settings_offline(g);
+  } catch (const std::runtime_error& e) {
+    why = e.what();
+  }
+  std::remove(path.c_str());
+  const size_t at = why.find(".cfg:");
+  return at == std::string::npos ? why : "rig" + why.substr(at);
+}
+
+}  // namespace
+
+TEST(ConfigText, OfflineCheckNamesTheLineTheKeyTheValueAndTheRule) {
+  STRCMP_EQUAL("rig.cfg:2: width = 0: width must be 16..160 columns", offline_refusal("height=30\nwidth=0\n").c_str());
+  STRCMP_EQUAL("rig.cfg:1: baseline_m = 5: baseline |h| must be 0.001..1 m", offline_refusal("baseline_m=5\n").c_str());
+  STRCMP_EQUAL("rig.cfg:3: misalignment_rad = 0.5: misalignment must be -0.35..0.35 rad",
+               offline_refusal("# rig\n\nmisalignment_rad=0.5\n").c_str());
+  STRCMP_EQUAL("rig.cfg:1: kernels = 9:0.07: kernel orders must be 0..3", offline_refusal("kernels=9:0.07\n").c_str());
+  STRCMP_EQUAL("rig.cfg:2: max_gap_us = 20000: max_gap_us must be frame_period_us..10000000 us",
+               offline_refusal("frame_period_us=50000\nmax_gap_us=20000\n").c_str());
+  STRCMP_EQUAL("rig.cfg:2: cu0_px = 63.5: cu must be 0..width - 1 px", offline_refusal("width=40\ncu0_px=63.5\n").c_str());
+  STRCMP_EQUAL("rig.cfg:2: lens_cam0 = 0.1,0.2: 2 values, but width 40 needs 41 (one per column edge)",
+               offline_refusal("width=40\nlens_cam0=0.1,0.2\n").c_str());
+  STRCMP_EQUAL("rig.cfg:1: tau_us: \"fast\" is not an integer in [0, 4294967295]", offline_refusal("tau_us=fast\n").c_str());
+}
+
+// What depends on a key not given is not refused: the device may have it.
+TEST(ConfigText, OfflineCheckRefusesNothingValid) {
+  STRCMP_EQUAL("", offline_refusal("cu0_px=63.5\nfu0_px=110.85\n").c_str());
+  STRCMP_EQUAL("", offline_refusal("max_gap_us=20000\n").c_str());
+  STRCMP_EQUAL("", offline_refusal("lens_cam0=0.1,0.2\n").c_str());
+  const DeviceSetup s = sample();
+  STRCMP_EQUAL("", offline_refusal(host::format_setup(s)).c_str());  // what config get prints
+}
+
+// A UTF-8 byte-order mark, CRLF line ends and spaces around = are read as
+// editors write them.
+TEST(ConfigText, ByteOrderMarkCrlfAndSpacesAreAccepted) {
+  DeviceSetup s = sample();
+  STRCMP_EQUAL("", error_of(s, "\xEF\xBB\xBFwidth = 64\r\n  tau_us=  250000 \r\nlook =right\n").c_str());
+  LONGS_EQUAL(64, s.config.width);
+  LONGS_EQUAL(250000, s.config.tau_us);
+  CHECK(s.config.orientation & protocol::kLooksRight);
+  STRCMP_EQUAL("rig.cfg:1: \"= 3\" is not KEY=VALUE (keys: `lumavel-read config --help`)", error_of(s, "= 3\n").c_str());
+}
+
+TEST(ConfigText, ADirectoryIsNotAConfigurationFile) {
+  DeviceSetup s = sample();
+  try {
+    host::apply_settings_file(s, "/tmp");
+    FAIL("a directory was read as a configuration file");
+  } catch (const std::runtime_error& e) {
+    STRCMP_EQUAL("/tmp: is a directory, not a configuration file", e.what());
+  }
+}
+
+// With the device's configuration: the key given is blamed; a device value
+// that the given keys break is named by its keys.
+TEST(ConfigText, DeviceCheckBlamesTheGivenKey) {
+  DeviceSetup device = sample();  // 40 columns
+  host::GivenSettings g;
+  g.add("cu0_px=63.5", "command line");
+  STRCMP_EQUAL("command line: cu0_px = 63.5: cu must be 0..width - 1 px", host::check_settings(device, g).c_str());
+  host::GivenSettings narrow;
+  narrow.add("width = 16", "command line");  // the device's lens table has 41 values
+  STRCMP_EQUAL("command line: width = 16: 41 values, but width 16 needs 17 (one per column edge)",
+               host::check_settings(device, narrow).c_str());
+  device.lens[1].clear();  // now the device's cu (19.5 px) no longer fits 16 columns
+  STRCMP_EQUAL("command line: width = 16: cu must be 0..width - 1 px", host::check_settings(device, narrow).c_str());
 }

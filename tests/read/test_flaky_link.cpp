@@ -56,11 +56,18 @@ Outcome run(F command) {
   return o;
 }
 
+// `config get` or `config set KEY=VALUE...`, as main.cpp dispatches them.
 Outcome config(const std::vector<std::string>& args) {
-  return run([&] { return lr::cmd_config(lr::Common{}, args); });
+  if (!args.empty() && args[0] == "get") return run([] { return lr::cmd_config_get(lr::Common{}); });
+  lr::ConfigInput in;
+  for (size_t i = 1; i < args.size(); ++i) {
+    if (args[i] == "--file" && i + 1 < args.size()) in.files.push_back(args[++i]);
+    else in.settings.push_back(args[i]);
+  }
+  return run([&] { return lr::cmd_config_set(lr::Common{}, in); });
 }
 Outcome info() {
-  return run([] { return lr::cmd_info(lr::Common{}, {}); });
+  return run([] { return lr::cmd_info(lr::Common{}); });
 }
 
 // A smooth table of 41 corrections (the default 40-column configuration).

@@ -1,5 +1,5 @@
-// Every "Bad input" case of the recording contract is refused with one message
-// that names the file and the line or frame.
+// Every "Bad input" case of the recording format (docs/recording-format.md)
+// is refused with one message that names the file and the line or frame.
 #include <png.h>
 
 #include <cstdio>

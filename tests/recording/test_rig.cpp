@@ -122,8 +122,13 @@ TEST(Rig, BadGeometryOrSizeIsRefused) {
   STRCMP_CONTAINS("/rec/mav0/cam0/sensor.yaml: cannot bin the 32x24 sensor up", e.c_str());
   const double up[3] = {0, 0, 1}, fwd[3] = {0, 1, 0};
   const Recording looking_up = rig(pose(kLeftX, fwd, up, 0), pose(kLeftX, kLeftY, kLeftZ, 0.08));
-  STRCMP_CONTAINS("/rec/mav0/cam0/sensor.yaml: T_BS: the optical axis is not horizontal",
-                  error_of([&] { derive_settings(looking_up, {}); }).c_str());
+  const std::string up_error = error_of([&] { derive_settings(looking_up, {}); });
+  STRCMP_CONTAINS("/rec/mav0/cam0/sensor.yaml: T_BS: this camera looks along body +z: its optical axis is (0, 0, 1) "
+                  "in the body frame, more than 60 degrees out of the body x-y plane",
+                  up_error.c_str());
+  STRCMP_CONTAINS("lumavel needs a rig whose cameras look sideways (optical axis along body +y or -y), with body x "
+                  "forward along the travel, y left, z up, and the baseline along x",
+                  up_error.c_str());
   const Recording no_baseline = rig(pose(kLeftX, kLeftY, kLeftZ, 0.02), pose(kLeftX, kLeftY, kLeftZ, 0.02));
   STRCMP_CONTAINS("no baseline", error_of([&] { derive_settings(no_baseline, {}); }).c_str());
 }

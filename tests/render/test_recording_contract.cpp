@@ -1,4 +1,4 @@
-// The files written follow /work/shared/spec/recording-format.md: layout,
+// The files written follow the recording format (docs/recording-format.md): layout,
 // exact headers, T_BS layout, timestamps, dropped and dark frames; the
 // recording library's validating reader accepts them; shipped scenarios load.
 #include <CppUTest/TestHarness.h>

@@ -35,49 +35,90 @@ TEST_GROUP(Cli) {
 TEST(Cli, HelpAndVersion) {
   Outcome r = sim("--help");
   LONGS_EQUAL(0, r.code);
-  STRCMP_CONTAINS("usage: lumavel-sim <command>", r.out.c_str());
-  STRCMP_CONTAINS("  run ", r.out.c_str());
+  CHECK(r.out.rfind("Usage: lumavel-sim", 0) == 0);
+  for (const char* cmd : {"run ", "render ", "reproduce ", "calibrate ", "import-slider "})
+    STRCMP_CONTAINS(cmd, r.out.c_str());
+  STRCMP_CONTAINS("Exit status: 0 done, 1 bad input or failure", r.out.c_str());
   r = sim("--version");
   LONGS_EQUAL(0, r.code);
   STRCMP_EQUAL("lumavel-sim " LUMAVEL_VERSION "\n", r.out.c_str());
   r = sim("run --help");
   LONGS_EQUAL(0, r.code);
-  for (const char* opt : {"--engine fixed|float", "-o, --output FILE", "--width W", "--height H", "--plot FILE.svg",
-                          "--quiet", "exit status"})
+  for (const char* opt : {"--engine fixed|float", "-o,--output FILE", "--width W", "--height H", "--plot FILE.svg",
+                          "--hid SPEC", "--hid-config FILE", "--hid-wait-ms N", "--hid-linger S", "--quiet",
+                          "--ignore-distortion", "--no-gyro-offset-learning", "Exit status"})
     STRCMP_CONTAINS(opt, r.out.c_str());
+}
+
+// One style: every command's help starts with its usage line and ends with
+// the exit status.
+TEST(Cli, EveryCommandHasUsageFirstAndTheExitStatus) {
+  for (const char* cmd : {"run", "render", "reproduce", "calibrate", "import-slider"}) {
+    const Outcome r = sim(std::string(cmd) + " --help");
+    LONGS_EQUAL(0, r.code);
+    const std::string usage = std::string("Usage: lumavel-sim ") + cmd + " [OPTIONS]";
+    CHECK_TEXT(r.out.rfind(usage, 0) == 0, cmd);
+    STRCMP_CONTAINS("Exit status: 0 done, 1 bad input or failure", r.out.c_str());
+    CHECK_TEXT(r.out.find("usage:") == std::string::npos, cmd);
+  }
 }
 
 TEST(Cli, UsageErrorsExitTwo) {
   Outcome r = sim("");
   LONGS_EQUAL(2, r.code);
-  STRCMP_CONTAINS("usage:", r.err.c_str());
+  STRCMP_CONTAINS("Usage: lumavel-sim", r.err.c_str());
   r = sim("bogus");
   LONGS_EQUAL(2, r.code);
-  STRCMP_CONTAINS("unknown command 'bogus'", r.err.c_str());
+  STRCMP_CONTAINS("lumavel-sim: unknown command 'bogus'\n(see lumavel-sim --help)", r.err.c_str());
   r = sim("run");
   LONGS_EQUAL(2, r.code);
-  STRCMP_CONTAINS("missing the recording folder REC", r.err.c_str());
+  STRCMP_CONTAINS("lumavel-sim run: REC is required", r.err.c_str());
   r = sim("run rec --engine turbo");
   LONGS_EQUAL(2, r.code);
-  STRCMP_CONTAINS("--engine must be 'fixed' or 'float', not 'turbo'", r.err.c_str());
+  STRCMP_CONTAINS("--engine: unknown engine 'turbo' (expected fixed or float)", r.err.c_str());
   r = sim("run rec --width 12");
   LONGS_EQUAL(2, r.code);
-  STRCMP_CONTAINS("--width must be in 16..160", r.err.c_str());
+  STRCMP_CONTAINS("--width: must be a whole number in 16..160, not '12'", r.err.c_str());
   r = sim("run rec --height=4x");
   LONGS_EQUAL(2, r.code);
-  STRCMP_CONTAINS("--height '4x' is not an integer", r.err.c_str());
+  STRCMP_CONTAINS("--height: must be a whole number in 1..128, not '4x'", r.err.c_str());
   r = sim("run rec --frobnicate");
   LONGS_EQUAL(2, r.code);
-  STRCMP_CONTAINS("unknown option '--frobnicate'", r.err.c_str());
+  STRCMP_CONTAINS("not expected: --frobnicate", r.err.c_str());
   r = sim("run rec -o");
   LONGS_EQUAL(2, r.code);
-  STRCMP_CONTAINS("option -o needs a value", r.err.c_str());
+  STRCMP_CONTAINS("--output: 1 required FILE missing", r.err.c_str());
+  r = sim("run rec --hid bogus:x");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("--hid: unknown HID link \"bogus:x\"", r.err.c_str());
+  r = sim("run rec --hid-linger 3");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("need --hid SPEC", r.err.c_str());
+  r = sim("run rec --hid file:x --hid-linger -2");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("--hid-linger: must be a number of seconds >= 0, or -1 (until interrupted), not '-2'", r.err.c_str());
+  r = sim("render a.yaml out --resolution 40by30");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("--resolution: must be WxH with W in 1..8192 and H in 1..8192 (e.g. 40x30), not '40by30'",
+                  r.err.c_str());
+  r = sim("calibrate rec --max-shift 0");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("--max-shift: must be a number in (0, 20], not '0'", r.err.c_str());
+  r = sim("calibrate rec --write-size 40x30");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("--write-size needs --write FILE", r.err.c_str());
+  r = sim("reproduce --threads 0");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("--threads: must be a whole number in 1..64, not '0'", r.err.c_str());
+  r = sim("reproduce --only 'no such study'");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("--only 'no such study': no study title contains it", r.err.c_str());
 }
 
 TEST(Cli, MissingRecordingExitsOne) {
   const Outcome r = sim("run nowhere");
   LONGS_EQUAL(1, r.code);
-  STRCMP_CONTAINS("lumavel-sim run: error: nowhere: recording folder does not exist", r.err.c_str());
+  STRCMP_CONTAINS("lumavel-sim run: error: nowhere:", r.err.c_str());
 }
 
 TEST(Cli, BadGyroNamesFileAndLineAndLeavesNoOutput) {
@@ -215,4 +256,110 @@ TEST(Cli, GyroOffsetLearningIsReportedAndCanBeTurnedOff) {
   r = sim("run rec -o quiet.csv --quiet --no-gyro-offset-learning");
   LONGS_EQUAL(0, r.code);
   STRCMP_EQUAL("", r.err.c_str());
+}
+
+// The default working size is 40x30, or the sensor's own size when smaller:
+// a 20x15 recording runs with no options, and the summary says where the
+// size came from.
+TEST(Cli, DefaultWorkingSizeIsTheSensorsWhenSmaller) {
+  fixture::Options o;
+  o.width = 20;
+  o.height = 15;
+  rec(o);
+  Outcome r = sim("run rec -o est.csv");
+  LONGS_EQUAL(0, r.code);
+  STRCMP_CONTAINS("20x15 working (the default 40x30 cut to the 20x15 sensor)", r.err.c_str());
+  r = sim("run rec -o est.csv --height 10");
+  LONGS_EQUAL(0, r.code);
+  STRCMP_CONTAINS("20x10 working,", r.err.c_str());
+}
+
+TEST(Cli, DefaultWorkingSizeOnALargerSensorIs40x30) {
+  fixture::Options o;
+  o.width = 64;
+  o.height = 48;
+  rec(o);
+  Outcome r = sim("run rec -o est.csv");
+  LONGS_EQUAL(0, r.code);
+  STRCMP_CONTAINS("40x30 working (the default)", r.err.c_str());
+  r = sim("run rec -o est.csv --width 64");
+  LONGS_EQUAL(0, r.code);
+  STRCMP_CONTAINS("64x30 working,", r.err.c_str());
+}
+
+// The summary counts the frames each flag was raised on, and a figure that
+// cannot be computed says why instead of printing nan.
+TEST(Cli, SummaryCountsFlagsAndNeverPrintsNan) {
+  fixture::Options o;
+  o.speed = 0;  // standing still: E is undefined
+  rec(o);
+  const Outcome r = sim("run rec -o est.csv");
+  LONGS_EQUAL(0, r.code);
+  STRCMP_CONTAINS("flags, frames of 12:", r.err.c_str());
+  STRCMP_CONTAINS("CONVERGING 12 (converging)", r.err.c_str());
+  STRCMP_CONTAINS("E (paper eq. 22): no figure: |V| < 0.05 m/s on every frame", r.err.c_str());
+  STRCMP_CONTAINS("L1 error: no figure: the true speed is 0 throughout", r.err.c_str());
+  STRCMP_CONTAINS("after the first 1.0 s: no figure: the run lasts 0.110 s", r.err.c_str());
+  CHECK(r.err.find("nan") == std::string::npos);
+  CHECK(r.err.find("inf ") == std::string::npos);
+}
+
+// A rig setting the firmware cannot take names the file it came from, the
+// value (in %g, not 300 digits) and the rule.
+TEST(Cli, ConfigurationRefusalsNameTheFileTheValueAndTheRule) {
+  const std::string yaml = rec() + "/mav0/cam1/sensor.yaml";
+  std::string text = fixture::read_text(yaml);
+  text.replace(text.find("0.04,"), 5, "200.04,");
+  fixture::write_text(yaml, text);
+  Outcome r = sim("run rec -o est.csv");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("rec/mav0/cam0/sensor.yaml and cam1/sensor.yaml: T_BS", r.err.c_str());
+  STRCMP_CONTAINS("baseline h = 200.08 m does not fit its fixed-point format (|value| < 128 m)", r.err.c_str());
+  fixture::Options slow;
+  slow.t0 = 5000000000ull;
+  slow.frame_dt = 2000000000ull;  // 2 s between frames
+  slow.frames = 4;
+  std::filesystem::remove_all(dir.path() + "/rec");
+  rec(slow);
+  r = sim("run rec -o est.csv");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("rec/mav0/cam0/data.csv: the median interval between frames: frame period = 2 s: frame period "
+                  "must be 0.1 ms..1 s",
+                  r.err.c_str());
+}
+
+// A quick or partial reproduce never replaces the committed full page,
+// whatever the current folder (the test runs in a temporary one).
+TEST(Cli, QuickReproduceNeverWritesTheCommittedPage) {
+  const std::string page = LUMAVEL_SOURCE_DIR "/docs/results.md";
+  const std::string before = fixture::read_text(page);
+  Outcome r = sim("reproduce --quick --doc '" + page + "'");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("a --quick run never replaces the full results page docs/results.md", r.err.c_str());
+  r = sim("reproduce --only Lens --doc '" LUMAVEL_SOURCE_DIR "/host_sim/../docs/results.md'");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("a --only run never replaces the full results page", r.err.c_str());
+  STRCMP_EQUAL(before.c_str(), fixture::read_text(page).c_str());
+  r = sim("reproduce --help");
+  LONGS_EQUAL(0, r.code);
+  STRCMP_CONTAINS("never\nin the current folder", r.out.c_str());
+  STRCMP_CONTAINS("--quick", r.out.c_str());
+}
+
+// The plot a run writes is an SVG that a real renderer draws (rsvg-convert,
+// Debian librsvg2-bin): what a user converts to look at it.
+TEST(Cli, ThePlotRendersToAPng) {
+  fixture::Options o;
+  o.frames = 150;  // 1.5 s: an error panel with the first second clipped
+  o.drop_frames = {60, 61};
+  rec(o);
+  LONGS_EQUAL(0, sim("run rec -o est.csv --quiet").code);
+  const std::string svg = dir.path() + "/rec_estimates.svg", png = dir.path() + "/plot.png";
+  const std::string cmd = "rsvg-convert '" + svg + "' -o '" + png + "' 2>'" + dir.path() + "/rsvg.err'";
+  LONGS_EQUAL(0, std::system(cmd.c_str()));
+  const std::string bytes = fixture::read_text(png);
+  CHECK(bytes.size() > 10000);
+  CHECK(bytes.compare(1, 3, "PNG") == 0);
+  STRCMP_EQUAL("", fixture::read_text(dir.path() + "/rsvg.err").c_str());
+  STRCMP_CONTAINS(">FRAME_GAP<", fixture::read_text(svg).c_str());
 }

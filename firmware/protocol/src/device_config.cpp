@@ -59,6 +59,45 @@ const char* to_string(ConfigField f) {
   return "unknown";
 }
 
+#define LUMAVEL_TEXT2(x) #x
+#define LUMAVEL_TEXT(x) LUMAVEL_TEXT2(x)
+
+// Next to the constants validate() uses: change one, change the other.
+const char* rule_of(ConfigField f) {
+  switch (f) {
+    case ConfigField::kOk: return "ok";
+    case ConfigField::kWidth: return "width must be 16.." LUMAVEL_TEXT(LUMAVEL_MAX_COLS) " columns";
+    case ConfigField::kHeight: return "height must be 1.." LUMAVEL_TEXT(LUMAVEL_MAX_ROWS) " rows";
+    case ConfigField::kBaseline: return "baseline |h| must be 0.001..1 m";
+    case ConfigField::kMisalignment: return "misalignment must be -0.35..0.35 rad";
+    case ConfigField::kFocalLength: return "fu must be 1..8 * width px";
+    case ConfigField::kPrincipalPoint: return "cu must be 0..width - 1 px";
+    case ConfigField::kOrientation: return "unknown orientation bits";
+    case ConfigField::kNormaliserSigma: return "normaliser sigma must be 0.001..2 rad";
+    case ConfigField::kKernelCount: return "kernels must list 1..min(6, LUMAVEL_MAX_KERNELS) kernels";
+    case ConfigField::kKernelOrder: return "kernel orders must be 0..3";
+    case ConfigField::kKernelSigma: return "kernel sigmas must be 0.001..2 rad";
+    case ConfigField::kTau: return "tau_us must be 1000..60000000 us";
+    case ConfigField::kFramePeriod: return "frame_period_us must be 1000..1000000 us";
+    case ConfigField::kMaxGap: return "max_gap_us must be frame_period_us..10000000 us";
+    case ConfigField::kGyroGap: return "gyro_gap_us must be 100..1000000 us";
+    case ConfigField::kLowTexture: return "low_texture must be 0..1";
+    case ConfigField::kSaturatedPermille: return "saturated_permille must be 0..1000";
+    case ConfigField::kOptions: return "unknown option bits";
+    case ConfigField::kStillDistance: return "still_distance_m must be 0.0001..0.1 m";
+    case ConfigField::kStillDuration: return "still_min_us must be 100000..60000000 us";
+    case ConfigField::kLens: return "a lens table must have width + 1 values";
+    case ConfigField::kLensEdges: return "lens column edges must be monotonic and within [-pi, pi]";
+    case ConfigField::kMalformed: return "the report was malformed";
+    case ConfigField::kEstimator: return "the estimator refused it (e.g. a kernel outside the view)";
+    case ConfigField::kStore: return "it could not be stored";
+  }
+  return "unknown";
+}
+
+#undef LUMAVEL_TEXT
+#undef LUMAVEL_TEXT2
+
 ConfigField validate(const DeviceConfig& c) {
   if (!in(c.width, kMinColumns, kMaxColumns)) return ConfigField::kWidth;
   if (!in(c.height, 1, kMaxRows)) return ConfigField::kHeight;
@@ -227,8 +266,8 @@ bool to_estimator_config(const DeviceConfig& c, EstimatorConfig& out, const Edge
 
 DeviceConfig default_device_config() {
   DeviceConfig c{};
-  c.width = 40;
-  c.height = 30;
+  c.width = kDefaultColumns;  // the default working size (limits.hpp)
+  c.height = kDefaultRows;
   c.baseline = 1342177;  // 0.08 m
   c.misalignment = 0;
   for (int i = 0; i < 2; ++i) {

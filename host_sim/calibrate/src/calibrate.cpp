@@ -254,6 +254,7 @@ Calibration calibrate_misalignment(const Recording& rec, const CalibrationOption
     const hal::CaptureStatus st = camera.capture(img);
     if (st == hal::CaptureStatus::kEnd) break;
     if (st == hal::CaptureStatus::kError) throw RecordingError(camera.error());
+    if (opt.progress) opt.progress("reading frames", times.size(), rec.frames.size());
     std::vector<double> c0(static_cast<size_t>(width)), c1(c0.size());
     for (int y = 0; y < height; ++y)
       for (int u = 0; u < width; ++u) {
@@ -291,8 +292,11 @@ Calibration calibrate_misalignment(const Recording& rec, const CalibrationOption
   const std::vector<double> taper = hann(window_len);
   const int window_slack = 30;
   Calibration out;
+  out.width = width;
+  out.height = height;
   std::vector<FrameShifts> shifts;
   for (size_t i = 0; i + 1 < p0.size(); ++i) {
+    if (opt.progress) opt.progress("registering", i, p0.size() - 1);
     // Standing still: every lag matches; such frames say nothing.
     if (correlation(p0[i], p0[i + 1], 0, lo_all, hi_all, nullptr) > 0.99995) continue;
     ++out.candidates;

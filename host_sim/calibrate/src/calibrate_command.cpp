@@ -1,110 +1,140 @@
+// Command line of `lumavel-sim calibrate`.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <exception>
 #include <fstream>
+#include <memory>
+#include <stdexcept>
 #include <string>
 
 #include "lumavel/host/calibrate.hpp"
 #include "lumavel/host/device_setup_from_rig.hpp"
+#include "lumavel/host/progress.hpp"
 #include "lumavel/host/rig.hpp"
 
 namespace lumavel::host {
 namespace {
 
-const char* const kHelp =
-    "usage: lumavel-sim calibrate REC [--width W] [--max-shift DEG] [--write FILE [--write-size WxH]]\n"
-    "\n"
+const char* const kDescription =
+    "estimate the misalignment between the cameras from a recording\n\n"
     "Estimates the misalignment (yaw from cam0 to cam1) of the rig that recorded\n"
     "REC, from the images and the gyro alone: where cam0 later stands where cam1\n"
     "stood, the two views differ by the misalignment plus the measured heading\n"
-    "change. The rig must move past a textured scene. Prints the estimate with its\n"
-    "uncertainty, the value in the recording's sensor.yaml for comparison, and the\n"
-    "lumavel-read command that sends it to a board.\n"
-    "\n"
-    "  --width W         working columns for the registration (default 160)\n"
-    "  --max-shift DEG   largest misalignment searched (default 6)\n"
-    "  --write FILE      also write the board's whole configuration for this rig,\n"
-    "                    with the calibrated misalignment and the lens tables from\n"
-    "                    sensor.yaml, as KEY=VALUE lines for\n"
-    "                    `lumavel-read config set --file FILE`\n"
-    "  --write-size WxH  working resolution of that configuration (default 40x30;\n"
-    "                    a line-scan recording gets height 1)\n"
-    "\n"
-    "exit status: 0 done, 1 bad recording or nothing registered, 2 usage error\n";
+    "change. The rig must move past a textured scene. Prints the working size used,\n"
+    "the estimate with its uncertainty, the value in the recording's sensor.yaml for\n"
+    "comparison, and the lumavel-read command that sends it to a board. Progress\n"
+    "goes to standard error.";
+
+// The registration is validated at this many columns (docs/results.md);
+// coarser recordings are registered at their own width, with a warning.
+constexpr int kRegistrationColumns = 160;
+
+struct CalibrateArgs {
+  std::string rec, write_path, write_size;
+  CalibrationOptions opt;
+  bool quiet = false;
+};
+
+// Progress of the two stages, one cli::Progress each.
+class StageProgress {
+ public:
+  void operator()(const char* stage, size_t done, size_t total) {
+    if (stage_ != stage) {
+      if (bar_) bar_->finish();
+      stage_ = stage;
+      bar_ = std::make_unique<cli::Progress>(static_cast<long>(total), std::string("calibrate: ") + stage);
+    }
+    bar_->update(static_cast<long>(done));
+  }
+  void finish() {
+    if (bar_) bar_->finish();
+    bar_.reset();
+  }
+
+ private:
+  std::string stage_;
+  std::unique_ptr<cli::Progress> bar_;
+};
+
+int calibrate(CalibrateArgs& a) {
+  if (!a.write_size.empty() && a.write_path.empty()) throw cli::UsageError("--write-size needs --write FILE");
+  const Recording rec = load_recording(a.rec);
+  WorkingSize write_size = default_working_size(rec);
+  if (!a.write_size.empty()) cli::parse_size(a.write_size, write_size.width, write_size.height);
+  const int columns = std::min(a.opt.width, rec.cam[0].width);
+  if (columns < kRegistrationColumns)
+    std::fprintf(stderr,
+                 "calibrate: warning: registering at %d columns (%s); calibrate is validated at %d\n"
+                 "columns (docs/results.md): on coarser images its estimate and its uncertainty are\n"
+                 "less reliable.\n",
+                 columns,
+                 columns < a.opt.width ? ("the sensor's width: " + a.rec + " has " + std::to_string(rec.cam[0].width) +
+                                          " columns").c_str()
+                                       : "--width",
+                 kRegistrationColumns);
+  auto stages = std::make_shared<StageProgress>();
+  if (!a.quiet) a.opt.progress = [stages](const char* s, size_t d, size_t t) { (*stages)(s, d, t); };
+  Calibration c;
+  try {
+    c = calibrate_misalignment(rec, a.opt);
+  } catch (...) {
+    stages->finish();
+    throw;
+  }
+  stages->finish();
+  const EstimatorSettings s = derive_settings(rec, {std::min(a.opt.width, rec.cam[0].width), 1});
+  const double in_yaml = s.cam[1].axis_yaw - s.cam[0].axis_yaw;
+  std::printf("registered at %dx%d (the %dx%d sensor%s)\n", c.width, c.height, rec.cam[0].width,
+              rec.cam[0].height, c.width < rec.cam[0].width ? " binned" : "'s own size");
+  std::printf("misalignment: %.4f deg +- %.4f deg (%zu of %zu frames registered)\n", c.misalignment * 180 / M_PI,
+              c.uncertainty * 180 / M_PI, c.samples, c.candidates);
+  std::printf("sensor.yaml says: %.4f deg\n", in_yaml * 180 / M_PI);
+  if (a.write_path.empty()) {
+    std::printf("send to a board: lumavel-read config set misalignment_rad=%.6f\n", c.misalignment);
+    return 0;
+  }
+  const DeviceSetup setup = device_setup_from_recording(rec, write_size, c.misalignment);
+  std::ofstream out(a.write_path, std::ios::binary | std::ios::trunc);
+  out << "# lumavel device configuration for " << a.rec << " (lumavel-sim calibrate --write)\n"
+      << "# send with: lumavel-read config set --file " << a.write_path << "\n"
+      << format_setup(setup);
+  out.close();
+  if (!out) throw std::runtime_error(a.write_path + ": cannot write the configuration file");
+  std::printf("wrote %s (%dx%d working, lens tables: %s); send to a board: lumavel-read config set --file %s\n",
+              a.write_path.c_str(), setup.config.width, setup.config.height,
+              setup.config.lens == 0 ? "none, pinhole" : setup.config.lens == 3 ? "both cameras" : "one camera",
+              a.write_path.c_str());
+  return 0;
+}
 
 }  // namespace
 
-int calibrate_main(int argc, char** argv) {
-  std::string rec_dir, write_path;
-  WorkingSize write_size;
-  CalibrationOptions opt;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    try {
-      if (a == "-h" || a == "--help") {
-        std::fputs(kHelp, stdout);
-        return 0;
-      } else if (a == "--width" && i + 1 < argc) {
-        opt.width = std::stoi(argv[++i]);
-        if (opt.width < 16 || opt.width > 160) throw std::invalid_argument("--width must be 16..160");
-      } else if (a == "--max-shift" && i + 1 < argc) {
-        opt.max_shift_deg = std::stod(argv[++i]);
-        if (!(opt.max_shift_deg > 0 && opt.max_shift_deg <= 20)) throw std::invalid_argument("--max-shift must be in (0, 20] deg");
-      } else if (a == "--write" && i + 1 < argc) {
-        write_path = argv[++i];
-      } else if (a == "--write-size" && i + 1 < argc) {
-        const std::string v = argv[++i];
-        size_t x = v.find('x'), end = 0;
-        if (x == std::string::npos) throw std::invalid_argument("--write-size wants WxH, e.g. 128x1");
-        write_size.width = std::stoi(v.substr(0, x), &end);
-        if (end != x) throw std::invalid_argument("--write-size wants WxH, e.g. 128x1");
-        write_size.height = std::stoi(v.substr(x + 1), &end);
-        if (end != v.size() - x - 1) throw std::invalid_argument("--write-size wants WxH, e.g. 128x1");
-      } else if (!a.empty() && a[0] == '-') {
-        throw std::invalid_argument("unknown option '" + a + "'");
-      } else if (rec_dir.empty()) {
-        rec_dir = a;
-      } else {
-        throw std::invalid_argument("unexpected argument '" + a + "'");
-      }
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "lumavel-sim calibrate: %s\n(see lumavel-sim calibrate --help)\n", e.what());
-      return 2;
-    }
-  }
-  if (rec_dir.empty()) {
-    std::fprintf(stderr, "lumavel-sim calibrate: missing the recording folder REC\n");
-    return 2;
-  }
-  try {
-    const Recording rec = load_recording(rec_dir);
-    const Calibration c = calibrate_misalignment(rec, opt);
-    const EstimatorSettings s = derive_settings(rec, {std::min(opt.width, rec.cam[0].width), 1});
-    const double in_yaml = s.cam[1].axis_yaw - s.cam[0].axis_yaw;
-    std::printf("misalignment: %.4f deg +- %.4f deg (%zu of %zu frames registered)\n", c.misalignment * 180 / M_PI,
-                c.uncertainty * 180 / M_PI, c.samples, c.candidates);
-    std::printf("sensor.yaml says: %.4f deg\n", in_yaml * 180 / M_PI);
-    if (write_path.empty()) {
-      std::printf("send to a board: lumavel-read config set misalignment_rad=%.6f\n", c.misalignment);
-      return 0;
-    }
-    const DeviceSetup setup = device_setup_from_recording(rec, write_size, c.misalignment);
-    std::ofstream out(write_path, std::ios::binary | std::ios::trunc);
-    out << "# lumavel device configuration for " << rec_dir << " (lumavel-sim calibrate --write)\n"
-        << "# send with: lumavel-read config set --file " << write_path << "\n"
-        << format_setup(setup);
-    out.close();
-    if (!out) throw std::runtime_error(write_path + ": cannot write the configuration file");
-    std::printf("wrote %s (%dx%d, lens tables: %s); send to a board: lumavel-read config set --file %s\n",
-                write_path.c_str(), setup.config.width, setup.config.height,
-                setup.config.lens == 0 ? "none, pinhole" : setup.config.lens == 3 ? "both cameras" : "one camera",
-                write_path.c_str());
-    return 0;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "lumavel-sim calibrate: %s\n", e.what());
-    return 1;
-  }
+void add_calibrate_command(cli::Tool& tool) {
+  auto a = std::make_shared<CalibrateArgs>();
+  a->opt.width = kRegistrationColumns;
+  CLI::App* c = tool.command("calibrate", kDescription, [a] { return calibrate(*a); });
+  c->add_option("REC", a->rec, "the recording folder (REC or REC/mav0)")->required()->type_name("");
+  c->add_option("--width", a->opt.width,
+                "working columns for the registration, 16..160 (default " +
+                    std::to_string(kRegistrationColumns) + ", or the\nsensor's width when smaller)")
+      ->type_name("W")
+      ->check(cli::whole_number_in(16, 160));
+  c->add_option("--max-shift", a->opt.max_shift_deg, "largest misalignment searched, (0, 20] deg (default 6)")
+      ->type_name("DEG")
+      ->check(cli::positive_number_up_to(20));
+  c->add_option("--write", a->write_path,
+                                     "also write the board's whole configuration for this rig,\n"
+                                     "with the calibrated misalignment and the lens tables from\n"
+                                     "sensor.yaml, as KEY=VALUE lines for\n"
+                                     "`lumavel-read config set --file FILE`")
+                           ->type_name("FILE");
+  c->add_option("--write-size", a->write_size,
+                "working resolution of that configuration (default 40x30, or\n"
+                "the sensor's size when smaller; a line-scan recording gets\n"
+                "height 1)")
+      ->type_name("WxH")
+      ->check(cli::size_wxh(kMaxWorkWidth, kMaxWorkHeight));
+  c->add_flag("-q,--quiet", a->quiet, "no progress on standard error");
 }
 
 }  // namespace lumavel::host

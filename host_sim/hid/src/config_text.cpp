@@ -1,11 +1,17 @@
 #include "lumavel/host/config_text.hpp"
 
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <limits>
+#include <utility>
 #include <stdexcept>
 
 namespace lumavel::host {
@@ -171,13 +177,53 @@ std::string format_setup(const DeviceSetup& d) {
   return s;
 }
 
+namespace {
+
+std::string trimmed(const std::string& s) {
+  const size_t a = s.find_first_not_of(" \t"), b = s.find_last_not_of(" \t");
+  return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
+}
+
+// KEY and VALUE of "KEY=VALUE", spaces around them dropped.
+std::pair<std::string, std::string> split_setting(const std::string& kv) {
+  const size_t eq = kv.find('=');
+  const std::string k = eq == std::string::npos ? std::string() : trimmed(kv.substr(0, eq));
+  if (k.empty()) throw std::runtime_error("\"" + kv + "\" is not KEY=VALUE (keys: `lumavel-read config --help`)");
+  return {k, trimmed(kv.substr(eq + 1))};
+}
+
+// The text of FILE; refuses what is not a readable regular file by its name.
+std::string read_settings_file(const std::string& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0)
+    throw std::runtime_error(path + ": cannot open configuration file: " + std::strerror(errno));
+  if (S_ISDIR(st.st_mode)) throw std::runtime_error(path + ": is a directory, not a configuration file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(path + ": cannot open configuration file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Calls f(line_number, line) for every setting line (no comment, no blank).
+template <typename F>
+void for_each_setting_line(const std::string& text, F f) {
+  std::istringstream in(text);
+  std::string line;
+  for (size_t n = 1; std::getline(in, line); ++n) {
+    if (n == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);  // UTF-8 byte-order mark
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    const size_t start = line.find_first_not_of(" \t");
+    if (start == std::string::npos || line[start] == '#') continue;
+    f(n, line.substr(start));
+  }
+}
+
+}  // namespace
+
 void apply_setting(DeviceSetup& d, const std::string& kv) {
   proto::DeviceConfig& c = d.config;
-  const size_t eq = kv.find('=');
-  if (eq == std::string::npos || eq == 0) {
-    throw std::runtime_error("\"" + kv + "\" is not KEY=VALUE (keys: `lumavel-read config --help`)");
-  }
-  const std::string k = kv.substr(0, eq), v = kv.substr(eq + 1);
+  const auto [k, v] = split_setting(kv);
   const long long u32 = 4294967295LL;
   auto option = [&](uint8_t b) {
     c.options = static_cast<uint8_t>(flag(k, v) ? (c.options | b) : (c.options & ~b));
@@ -218,26 +264,146 @@ void apply_setting(DeviceSetup& d, const std::string& kv) {
 }
 
 void apply_settings_text(DeviceSetup& s, const std::string& text, const std::string& name) {
-  std::istringstream in(text);
-  std::string line;
-  for (size_t n = 1; std::getline(in, line); ++n) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    const size_t start = line.find_first_not_of(" \t");
-    if (start == std::string::npos || line[start] == '#') continue;
+  for_each_setting_line(text, [&](size_t n, const std::string& line) {
     try {
-      apply_setting(s, line.substr(start));
+      apply_setting(s, line);
     } catch (const std::runtime_error& e) {
       throw std::runtime_error(name + ":" + std::to_string(n) + ": " + e.what());
     }
-  }
+  });
 }
 
 void apply_settings_file(DeviceSetup& s, const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path + ": cannot open configuration file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  apply_settings_text(s, text.str(), path);
+  apply_settings_text(s, read_settings_file(path), path);
+}
+
+void GivenSettings::add(const std::string& kv, const std::string& where) {
+  try {
+    const auto [k, v] = split_setting(kv);
+    DeviceSetup scratch;
+    scratch.config = proto::default_device_config();
+    apply_setting(scratch, kv);  // the value's own form
+    items.push_back({where, k, v});
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(where + ": " + e.what());
+  }
+}
+
+void GivenSettings::add_file(const std::string& path) {
+  const std::string text = read_settings_file(path);
+  for_each_setting_line(text, [&](size_t n, const std::string& line) { add(line, path + ":" + std::to_string(n)); });
+}
+
+bool GivenSettings::has(const std::string& key) const {
+  for (const GivenSetting& g : items)
+    if (g.key == key) return true;
+  return false;
+}
+
+void GivenSettings::apply_to(DeviceSetup& s) const {
+  for (const GivenSetting& g : items) apply_setting(s, g.key + "=" + g.value);
+}
+
+namespace {
+
+// The keys that set each refusable field (and the keys its rule involves).
+std::vector<std::string> keys_of(proto::ConfigField f) {
+  using F = proto::ConfigField;
+  switch (f) {
+    case F::kWidth: return {"width"};
+    case F::kHeight: return {"height"};
+    case F::kBaseline: return {"baseline_m"};
+    case F::kMisalignment: return {"misalignment_rad"};
+    case F::kFocalLength: return {"fu0_px", "fu1_px", "width"};
+    case F::kPrincipalPoint: return {"cu0_px", "cu1_px", "width"};
+    case F::kNormaliserSigma: return {"normaliser_sigma_rad"};
+    case F::kKernelCount:
+    case F::kKernelOrder:
+    case F::kKernelSigma: return {"kernels"};
+    case F::kTau: return {"tau_us"};
+    case F::kFramePeriod: return {"frame_period_us"};
+    case F::kMaxGap: return {"max_gap_us", "frame_period_us"};
+    case F::kGyroGap: return {"gyro_gap_us"};
+    case F::kLowTexture: return {"low_texture"};
+    case F::kSaturatedPermille: return {"saturated_permille"};
+    case F::kStillDistance: return {"still_distance_m"};
+    case F::kStillDuration: return {"still_min_us"};
+    case F::kLens: return {"lens_cam0", "lens_cam1", "width"};
+    default: return {};
+  }
+}
+
+// validate() after the lens tables are sealed; a table of the wrong length
+// is kLens, with seal_lens's reason in *why when asked.
+proto::ConfigField validate_setup(DeviceSetup s, std::string* why) {
+  try {
+    seal_lens(s);
+  } catch (const std::runtime_error& e) {
+    if (why) {
+      *why = e.what();
+      const size_t colon = why->find(": ");
+      if (colon != std::string::npos) why->erase(0, colon + 2);  // the key is said already
+    }
+    return proto::ConfigField::kLens;
+  }
+  return proto::validate(s.config);
+}
+
+proto::ConfigField validate_with(const DeviceSetup& base, const GivenSettings& given, const GivenSetting* skip,
+                                 std::string* why = nullptr) {
+  DeviceSetup s = base;
+  for (const GivenSetting& g : given.items)
+    if (&g != skip) apply_setting(s, g.key + "=" + g.value);
+  return validate_setup(s, why);
+}
+
+}  // namespace
+
+std::string check_settings(const DeviceSetup& base, const GivenSettings& given) {
+  std::string lens_why;
+  const proto::ConfigField f = validate_with(base, given, nullptr, &lens_why);
+  if (f == proto::ConfigField::kOk) return "";
+  const std::string rule = lens_why.empty() ? std::string(proto::rule_of(f)) : lens_why;
+  const std::vector<std::string> keys = keys_of(f);
+  // The given setting without which the field is no longer refused, latest first.
+  const GivenSetting* blamed = nullptr;
+  for (auto it = given.items.rbegin(); it != given.items.rend() && !blamed; ++it) {
+    if (std::find(keys.begin(), keys.end(), it->key) == keys.end()) continue;
+    if (validate_with(base, given, &*it) != f) blamed = &*it;
+  }
+  if (!blamed)
+    for (auto it = given.items.rbegin(); it != given.items.rend() && !blamed; ++it)
+      if (std::find(keys.begin(), keys.end(), it->key) != keys.end()) blamed = &*it;
+  if (blamed) {
+    std::string value = blamed->value;
+    if (value.size() > 40) value = value.substr(0, 37) + "...";
+    return blamed->where + ": " + blamed->key + " = " + value + ": " + rule;
+  }
+  std::string names;
+  for (const std::string& k : keys) names += (names.empty() ? "" : ", ") + k;
+  return (names.empty() ? std::string(proto::to_string(f)) : names) + ": " + rule;
+}
+
+void check_settings_offline(const GivenSettings& given) {
+  // Keys not given take their most permissive value: the widest frame for
+  // fu and cu, the shortest frame period for max_gap_us.
+  DeviceSetup base;
+  base.config = proto::default_device_config();
+  base.config.width = static_cast<uint16_t>(kMaxColumns);
+  base.config.fu[0] = base.config.fu[1] = 1 << 16;
+  base.config.cu[0] = base.config.cu[1] = 0;
+  base.config.frame_period_us = 1000;
+  base.config.max_gap_us = 10000000;
+  if (!given.has("width")) {  // a table's length cannot be checked without the width
+    GivenSettings known;
+    for (const GivenSetting& g : given.items)
+      if (g.key != "lens_cam0" && g.key != "lens_cam1") known.items.push_back(g);
+    const std::string why = check_settings(base, known);
+    if (!why.empty()) throw std::runtime_error(why);
+    return;
+  }
+  const std::string why = check_settings(base, given);
+  if (!why.empty()) throw std::runtime_error(why);
 }
 
 void seal_lens(DeviceSetup& s) {

@@ -9,17 +9,33 @@ const char* host_link_help() {
          "file:PATH          report-stream file, read back with `lumavel-read replay PATH`\n";
 }
 
-std::unique_ptr<hal::ReportLink> open_host_link(const std::string& spec) {
+namespace {
+
+struct LinkSpec {
+  std::string kind, arg;
+};
+
+LinkSpec split(const std::string& spec) {
   const size_t colon = spec.find(':');
-  const std::string kind = spec.substr(0, colon);
-  const std::string arg = colon == std::string::npos ? "" : spec.substr(colon + 1);
-  if (kind == "uhid") return make_uhid_link(arg.empty() ? "/dev/uhid" : arg);
-  if (kind == "hidg") return make_hidg_link(arg.empty() ? "/dev/hidg0" : arg);
-  if (kind == "file") {
-    if (arg.empty()) throw HidLinkError("--hid file: needs a path, e.g. file:run.hidrep");
-    return make_file_link(arg);
-  }
-  throw HidLinkError("unknown HID link \"" + spec + "\"; use one of:\n" + host_link_help());
+  return {spec.substr(0, colon), colon == std::string::npos ? "" : spec.substr(colon + 1)};
+}
+
+}  // namespace
+
+std::string check_host_link_spec(const std::string& spec) {
+  const LinkSpec s = split(spec);
+  if (s.kind == "uhid" || s.kind == "hidg") return {};
+  if (s.kind == "file") return s.arg.empty() ? "file: needs a path, e.g. file:run.hidrep" : "";
+  return "unknown HID link \"" + spec + "\"; use one of:\n" + host_link_help();
+}
+
+std::unique_ptr<hal::ReportLink> open_host_link(const std::string& spec) {
+  const std::string bad = check_host_link_spec(spec);
+  if (!bad.empty()) throw HidLinkError(bad);
+  const LinkSpec s = split(spec);
+  if (s.kind == "uhid") return make_uhid_link(s.arg.empty() ? "/dev/uhid" : s.arg);
+  if (s.kind == "hidg") return make_hidg_link(s.arg.empty() ? "/dev/hidg0" : s.arg);
+  return make_file_link(s.arg);
 }
 
 }  // namespace lumavel::host

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <stdexcept>
 #include <vector>
 
@@ -147,73 +148,41 @@ ImportSliderSummary import_slider(const std::string& data_dir, const std::string
   return sum;
 }
 
-namespace {
-
-void print_usage(std::FILE* f) {
-  std::fprintf(f,
-               "usage: lumavel-sim import-slider DATA_DIR OUT_REC [--baseline H]\n"
-               "\n"
-               "Turns a single-camera slider sequence of the Event-Camera Dataset (images.txt,\n"
-               "groundtruth.txt, calib.txt; e.g. slider_depth) into a two-camera recording:\n"
-               "cam1 at time t is the image cam0 took where the slider was h further on, a\n"
-               "pixelwise blend of the two frames bracketing x(t) + h, weighted by position.\n"
-               "Valid for a pure translation past a static scene; the gyro reads zero.\n"
-               "\n"
-               "  --baseline H   h in metres, cam1 ahead of cam0 (default %g)\n",
-               kDefaultSliderBaseline);
+void add_import_slider_command(cli::Tool& tool) {
+  struct Args {
+    std::string data, out;
+    ImportSliderOptions o;
+  };
+  auto a = std::make_shared<Args>();
+  CLI::App* c = tool.command(
+      "import-slider",
+      "turn a single-camera slider sequence into a two-camera recording\n\n"
+      "Turns a single-camera slider sequence of the Event-Camera Dataset (images.txt,\n"
+      "groundtruth.txt, calib.txt; e.g. slider_depth) into a two-camera recording\n"
+      "(docs/recording-format.md): cam1 at time t is the image cam0 took where the\n"
+      "slider was h further on, a pixelwise blend of the two frames bracketing\n"
+      "x(t) + h, weighted by position. Valid for a pure translation past a static\n"
+      "scene; the gyro reads zero.",
+      [a] {
+        const ImportSliderSummary s = import_slider(a->data, a->out, a->o);
+        std::printf("import-slider: %zu of %zu frames paired at h = %g m (largest blended frame spacing %.4f m), "
+                    "%zu gyro samples, %zu ground-truth samples -> %s\n",
+                    s.pairs, s.frames_in, a->o.baseline, s.max_blend_gap_m, s.imu_samples, s.groundtruth_samples,
+                    a->out.c_str());
+        return 0;
+      });
+  c->add_option("DATA_DIR", a->data, "the dataset folder (images.txt, groundtruth.txt, calib.txt)")
+      ->required()
+      ->type_name("");
+  c->add_option("OUT_REC", a->out, "the recording folder to write")->required()->type_name("");
+  char baseline_help[96];
+  std::snprintf(baseline_help, sizeof baseline_help, "h in metres, cam1 ahead of cam0, (0, 1] (default %g)",
+                kDefaultSliderBaseline);
+  c->add_option("--baseline", a->o.baseline, baseline_help)->type_name("H")->check(cli::positive_number_up_to(1));
 }
 
-}  // namespace
-
 int import_slider_main(int argc, char** argv) {
-  std::vector<std::string> pos;
-  ImportSliderOptions o;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "-h" || a == "--help") {
-      print_usage(stdout);
-      return 0;
-    }
-    if (a == "--baseline" || a.rfind("--baseline=", 0) == 0) {
-      std::string v;
-      if (a == "--baseline") {
-        if (i + 1 >= argc) {
-          std::fprintf(stderr, "import-slider: --baseline needs a value in metres\n");
-          return 2;
-        }
-        v = argv[++i];
-      } else {
-        v = a.substr(std::strlen("--baseline="));
-      }
-      char* end = nullptr;
-      o.baseline = std::strtod(v.c_str(), &end);
-      if (v.empty() || *end || !std::isfinite(o.baseline) || o.baseline <= 0 || o.baseline > 1) {
-        std::fprintf(stderr, "import-slider: --baseline must be a number of metres in (0, 1], not '%s'\n",
-                     v.c_str());
-        return 2;
-      }
-    } else if (!a.empty() && a[0] == '-') {
-      std::fprintf(stderr, "import-slider: unknown option '%s'\n", a.c_str());
-      return 2;
-    } else {
-      pos.push_back(a);
-    }
-  }
-  if (pos.size() != 2) {
-    print_usage(stderr);
-    return 2;
-  }
-  try {
-    const ImportSliderSummary s = import_slider(pos[0], pos[1], o);
-    std::printf("import-slider: %zu of %zu frames paired at h = %g m (largest blended frame spacing %.4f m), "
-                "%zu gyro samples, %zu ground-truth samples -> %s\n",
-                s.pairs, s.frames_in, o.baseline, s.max_blend_gap_m, s.imu_samples, s.groundtruth_samples,
-                pos[1].c_str());
-    return 0;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "import-slider: %s\n", e.what());
-    return 1;
-  }
+  return cli::run_command_alone("lumavel-sim", add_import_slider_command, argc, argv);
 }
 
 }  // namespace lumavel::host

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 #include "lumavel/host/recording_layout.hpp"
 
@@ -20,8 +22,17 @@ CameraModel derive_camera(const CameraSensor& c, int work_width, const std::stri
   axis(c.T_BS, 0, ex);
   axis(c.T_BS, 2, ez);
   // The optical axis must look sideways, roughly in the body x-y plane.
-  if (std::hypot(ez[0], ez[1]) < 0.5)
-    throw recording_error_in(yaml_path, "T_BS: the optical axis is not horizontal (tilted more than 60 degrees)");
+  if (std::hypot(ez[0], ez[1]) < 0.5) {
+    char axis_text[96];
+    std::snprintf(axis_text, sizeof axis_text, "(%.3g, %.3g, %.3g)", ez[0], ez[1], ez[2]);
+    throw recording_error_in(yaml_path, std::string("T_BS: this camera looks along body ") +
+                                            (ez[2] > 0 ? "+z" : "-z") + ": its optical axis is " + axis_text +
+                                            " in the body frame, more than 60 degrees out of the body x-y plane. "
+                                            "lumavel needs a rig whose cameras look sideways (optical axis along "
+                                            "body +y or -y), with body x forward along the travel, y left, z up, and "
+                                            "the baseline along x (README, \"The rig\"). A rig with forward-looking "
+                                            "cameras (such as EuRoC's, whose body z is forward) does not fit");
+  }
   const double cross_z = ez[0] * ex[1] - ez[1] * ex[0];  // ((R e_z) x (R e_x)).z
   if (std::fabs(cross_z) < 0.5)
     throw recording_error_in(yaml_path, "T_BS: the image u axis is not horizontal (camera rolled more than 60 degrees)");
@@ -58,6 +69,10 @@ std::vector<double> undistorted_column_edges(const CameraSensor& c, int work_wid
     edges[static_cast<size_t>(u)] = axis_yaw + u_sign * std::atan(x);
   }
   return edges;
+}
+
+WorkingSize default_working_size(const Recording& rec) {
+  return {default_columns(rec.cam[0].width), default_rows(rec.cam[0].height)};
 }
 
 EstimatorSettings derive_settings(const Recording& rec, WorkingSize size) {

@@ -1,6 +1,8 @@
 #include "lumavel/host/settings.hpp"
 
 #include <cmath>
+#include <cstdio>
+#include <utility>
 #include <stdexcept>
 #include <string>
 
@@ -9,16 +11,78 @@
 namespace lumavel::host {
 namespace {
 
-int64_t quantise(double v, int frac, const char* field, int64_t lo = INT32_MIN, int64_t hi = INT32_MAX) {
-  if (!std::isfinite(v)) throw std::invalid_argument(std::string(field) + " is not a finite number");
+// Values in messages: %g, 6 significant digits, never 300 digits.
+std::string g(double v) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%g", v);
+  return b;
+}
+
+// `what` names the setting in messages ("focal length fu"), `setting` is
+// its EstimatorSettings member, `unit` follows the value.
+struct Field {
+  const char* what;
+  std::string setting;
+  const char* unit;
+};
+
+int64_t quantise(double v, int frac, const Field& f, int64_t lo = INT32_MIN, int64_t hi = INT32_MAX) {
+  if (!std::isfinite(v)) throw SettingsError(f.setting, std::string(f.what) + " = " + g(v) + ": not a finite number");
   const double q = std::round(std::ldexp(v, frac));
   if (q < static_cast<double>(lo) || q > static_cast<double>(hi))
-    throw std::invalid_argument(std::string(field) + " = " + std::to_string(v) + " does not fit its fixed-point format");
+  {
+    const double top = std::ldexp(static_cast<double>(hi) + 1, -frac);
+    const std::string range = lo == -hi - 1 ? "|value| < " + g(top) : g(std::ldexp(static_cast<double>(lo), -frac)) +
+                                                                          " to " + g(top);
+    throw SettingsError(f.setting, std::string(f.what) + " = " + g(v) + " " + f.unit +
+                                       " does not fit its fixed-point format (" + range + " " + f.unit + ")");
+  }
   return static_cast<int64_t>(q);
 }
 
-uint32_t micros(double seconds, const char* field) {
-  return static_cast<uint32_t>(quantise(seconds * 1e6, 0, field, 0, UINT32_MAX));
+uint32_t micros(double seconds, const Field& f) {
+  return static_cast<uint32_t>(quantise(seconds * 1e6, 0, {f.what, f.setting, "us"}, 0, UINT32_MAX));
+}
+
+std::string cam_setting(int i, const char* member) { return "cam[" + std::to_string(i) + "]." + member; }
+
+// The setting behind a validate() error, with its value: "frame period = 2 s".
+std::pair<std::string, std::string> offending(const EstimatorSettings& s, ConfigError e) {
+  auto worst_cam = [&](auto value) { return std::fabs(value(s.cam[1])) > std::fabs(value(s.cam[0])) ? 1 : 0; };
+  switch (e) {
+    case ConfigError::kWidth: return {"width", "working width = " + std::to_string(s.width)};
+    case ConfigError::kHeight: return {"height", "working height = " + std::to_string(s.height)};
+    case ConfigError::kFocalLength: {
+      const int i = s.cam[0].fu < 1 || s.cam[0].fu > 30000 ? 0 : 1;
+      return {cam_setting(i, "fu"), "cam" + std::to_string(i) + " fu = " + g(s.cam[i].fu) + " px"};
+    }
+    case ConfigError::kPrincipalPoint: {
+      const int i = s.cam[0].cu < -s.width || s.cam[0].cu > 2 * s.width ? 0 : 1;
+      return {cam_setting(i, "cu"), "cam" + std::to_string(i) + " cu = " + g(s.cam[i].cu) + " px"};
+    }
+    case ConfigError::kAxisYaw: {
+      const int i = worst_cam([](const CameraModel& c) { return c.axis_yaw; });
+      return {cam_setting(i, "axis_yaw"), "cam" + std::to_string(i) + " axis yaw = " + g(s.cam[i].axis_yaw) + " rad"};
+    }
+    case ConfigError::kBaseline: return {"baseline", "baseline h = " + g(s.baseline) + " m"};
+    case ConfigError::kTau: return {"tau", "observer tau = " + g(s.tau) + " s"};
+    case ConfigError::kFramePeriod: return {"frame_period", "frame period = " + g(s.frame_period) + " s"};
+    case ConfigError::kMaxGap: return {"max_gap", "max gap = " + g(s.max_gap) + " s"};
+    case ConfigError::kGyroGap: return {"gyro_gap", "gyro gap = " + g(s.gyro_gap) + " s"};
+    case ConfigError::kLowTexture: return {"low_texture", "low-texture threshold = " + g(s.low_texture)};
+    case ConfigError::kStill:
+      return {"still_distance", "still distance = " + g(s.still_distance) + " m, duration " + g(s.still_min) + " s"};
+    case ConfigError::kColumnEdges: return {"cam[].edges", "a lens column-edge table"};
+    case ConfigError::kKernelCount:
+    case ConfigError::kKernelOrder:
+    case ConfigError::kKernelSigma:
+    case ConfigError::kKernelOutsideView: {
+      std::string k = "kernels (order:sigma rad) =";
+      for (const KernelModel& m : s.kernels) k += " " + std::to_string(m.order) + ":" + g(m.sigma);
+      return {"kernels", k + ", normaliser sigma " + g(s.normaliser.sigma) + " rad"};
+    }
+    default: return {"", "the configuration"};
+  }
 }
 
 }  // namespace
@@ -35,48 +99,53 @@ std::vector<KernelModel> default_kernels(double hfov) {
 EstimatorConfig to_fixed_config(const EstimatorSettings& s) {
   EstimatorConfig c{};
   if (s.width < kMinColumns || s.width > kMaxColumns)
-    throw std::invalid_argument("working width " + std::to_string(s.width) + " is outside 16.." + std::to_string(kMaxColumns));
+    throw SettingsError("width", "working width " + std::to_string(s.width) + " is outside " +
+                                     std::to_string(kMinColumns) + ".." + std::to_string(kMaxColumns));
   if (s.height < 1 || s.height > kMaxRows)
-    throw std::invalid_argument("working height " + std::to_string(s.height) + " is outside 1.." + std::to_string(kMaxRows));
+    throw SettingsError("height", "working height " + std::to_string(s.height) + " is outside 1.." + std::to_string(kMaxRows));
   c.width = static_cast<uint16_t>(s.width);
   c.height = static_cast<uint16_t>(s.height);
   for (int i = 0; i < 2; ++i) {
-    c.cam[i].fu = static_cast<PixelQ16>(quantise(s.cam[i].fu, fx::kPixelFrac, "focal length fu"));
-    c.cam[i].cu = static_cast<PixelQ16>(quantise(s.cam[i].cu, fx::kPixelFrac, "principal point cu"));
-    c.cam[i].axis_yaw = static_cast<AngleQ28>(quantise(s.cam[i].axis_yaw, fx::kAngleFrac, "axis yaw"));
+    c.cam[i].fu = static_cast<PixelQ16>(quantise(s.cam[i].fu, fx::kPixelFrac, {"focal length fu", cam_setting(i, "fu"), "px"}));
+    c.cam[i].cu = static_cast<PixelQ16>(quantise(s.cam[i].cu, fx::kPixelFrac, {"principal point cu", cam_setting(i, "cu"), "px"}));
+    c.cam[i].axis_yaw = static_cast<AngleQ28>(quantise(s.cam[i].axis_yaw, fx::kAngleFrac, {"axis yaw", cam_setting(i, "axis_yaw"), "rad"}));
     c.cam[i].u_sign = static_cast<int8_t>(s.cam[i].u_sign);
   }
-  c.baseline = static_cast<LengthQ24>(quantise(s.baseline, fx::kLengthFrac, "baseline"));
+  c.baseline = static_cast<LengthQ24>(quantise(s.baseline, fx::kLengthFrac, {"baseline h", "baseline", "m"}));
   c.normaliser.order = static_cast<uint8_t>(s.normaliser.order);
-  c.normaliser.sigma = static_cast<AngleQ28>(quantise(s.normaliser.sigma, fx::kAngleFrac, "normaliser sigma"));
+  c.normaliser.sigma = static_cast<AngleQ28>(quantise(s.normaliser.sigma, fx::kAngleFrac, {"normaliser sigma", "kernels", "rad"}));
   if (s.kernels.empty() || s.kernels.size() > static_cast<size_t>(kMaxKernels))
-    throw std::invalid_argument("kernel count " + std::to_string(s.kernels.size()) + " is outside 1.." + std::to_string(kMaxKernels));
+    throw SettingsError("kernels", "kernel count " + std::to_string(s.kernels.size()) + " is outside 1.." + std::to_string(kMaxKernels));
   c.kernel_count = static_cast<uint8_t>(s.kernels.size());
   for (size_t k = 0; k < s.kernels.size(); ++k) {
     if (s.kernels[k].order < 0 || s.kernels[k].order > kMaxKernelOrder)
-      throw std::invalid_argument("kernel order " + std::to_string(s.kernels[k].order) + " is outside 0..3");
+      throw SettingsError("kernels", "kernel order " + std::to_string(s.kernels[k].order) + " is outside 0.." +
+                                         std::to_string(kMaxKernelOrder));
     c.kernels[k].order = static_cast<uint8_t>(s.kernels[k].order);
-    c.kernels[k].sigma = static_cast<AngleQ28>(quantise(s.kernels[k].sigma, fx::kAngleFrac, "kernel sigma"));
+    c.kernels[k].sigma = static_cast<AngleQ28>(quantise(s.kernels[k].sigma, fx::kAngleFrac, {"kernel sigma", "kernels", "rad"}));
   }
-  c.tau_us = micros(s.tau, "observer tau");
-  c.frame_period_us = micros(s.frame_period, "frame period");
-  c.max_gap_us = micros(s.max_gap, "max gap");
-  c.gyro_gap_us = micros(s.gyro_gap, "gyro gap");
-  c.low_texture = static_cast<ValueQ28>(quantise(s.low_texture, fx::kValueFrac, "low-texture threshold"));
+  c.tau_us = micros(s.tau, {"observer tau", "tau", "s"});
+  c.frame_period_us = micros(s.frame_period, {"frame period", "frame_period", "s"});
+  c.max_gap_us = micros(s.max_gap, {"max gap", "max_gap", "s"});
+  c.gyro_gap_us = micros(s.gyro_gap, {"gyro gap", "gyro_gap", "s"});
+  c.low_texture = static_cast<ValueQ28>(quantise(s.low_texture, fx::kValueFrac, {"low-texture threshold", "low_texture", ""}));
   if (s.saturated_permille < 0 || s.saturated_permille > 1000)
-    throw std::invalid_argument("saturated permille is outside 0..1000");
+    throw SettingsError("saturated_permille", "saturated permille = " + std::to_string(s.saturated_permille) + " is outside 0..1000");
   c.saturated_permille = static_cast<uint16_t>(s.saturated_permille);
   c.options = static_cast<uint8_t>((s.baseline_correction ? kOptionBaselineCorrection : 0) |
                                    (s.gyro_offset_learning ? kOptionGyroOffsetLearning : 0));
-  c.still_distance = static_cast<LengthQ24>(quantise(s.still_distance, fx::kLengthFrac, "still distance"));
-  c.still_min_us = micros(s.still_min, "still duration");
+  c.still_distance = static_cast<LengthQ24>(quantise(s.still_distance, fx::kLengthFrac, {"still distance", "still_distance", "m"}));
+  c.still_min_us = micros(s.still_min, {"still duration", "still_min", "s"});
   std::vector<EdgeOffsetQ15> lens[2];
   for (int i = 0; i < 2; ++i) {
     lens[i] = to_fixed_edge_offsets(s.cam[i], c.cam[i], s.width);
     c.edge_offsets[i] = lens[i].empty() ? nullptr : lens[i].data();
   }
   const ConfigError e = validate(c);
-  if (e != ConfigError::kOk) throw std::invalid_argument(std::string("configuration: ") + to_string(e));
+  if (e != ConfigError::kOk) {
+    const auto [setting, value] = offending(s, e);
+    throw SettingsError(setting, value + ": " + to_string(e));
+  }
   c.edge_offsets[0] = c.edge_offsets[1] = nullptr;  // the vectors die here
   return c;
 }
@@ -93,9 +162,9 @@ std::vector<AngleQ28> to_fixed_edges(const CameraModel& c, int width) {
   std::vector<AngleQ28> out;
   if (c.edges.empty()) return out;
   if (c.edges.size() != static_cast<size_t>(width) + 1)
-    throw std::invalid_argument("column-edge table has " + std::to_string(c.edges.size()) + " values for " +
+    throw SettingsError("cam[].edges", "column-edge table has " + std::to_string(c.edges.size()) + " values for " +
                                 std::to_string(width) + " columns (want width + 1)");
-  for (double e : c.edges) out.push_back(static_cast<AngleQ28>(quantise(e, fx::kAngleFrac, "column edge")));
+  for (double e : c.edges) out.push_back(static_cast<AngleQ28>(quantise(e, fx::kAngleFrac, {"column edge", "cam[].edges", "rad"})));
   return out;
 }
 
@@ -110,7 +179,7 @@ std::vector<EdgeOffsetQ15> to_fixed_edge_offsets(const CameraModel& c, const Cam
   for (size_t u = 0; u < exact.size(); ++u) {
     const double d = std::ldexp(static_cast<double>(int64_t{exact[u]} - pin[u]), -fx::kAngleFrac);
     const std::string field = "lens correction of column edge " + std::to_string(u);
-    out.push_back(static_cast<EdgeOffsetQ15>(quantise(d, fx::kEdgeOffsetFrac, field.c_str(), INT16_MIN, INT16_MAX)));
+    out.push_back(static_cast<EdgeOffsetQ15>(quantise(d, fx::kEdgeOffsetFrac, {field.c_str(), "cam[].edges", "rad"}, INT16_MIN, INT16_MAX)));
   }
   return out;
 }

@@ -11,7 +11,7 @@
 #include "lumavel/host/image_io.hpp"
 #include "lumavel/host/recording_writer.hpp"
 #include "lumavel/host/render/frame_renderer.hpp"
-#include "lumavel/host/render/progress_bar.hpp"
+#include "lumavel/host/progress.hpp"
 #include "lumavel/host/render/scene.hpp"
 #include "lumavel/host/render/sensor_synthesis.hpp"
 
@@ -62,7 +62,7 @@ RenderSummary render_recording(const Scenario& s, const std::string& out_dir,
       failed = true;
     }
   };
-  ProgressBar bar(static_cast<long>(todo.size()), "render");
+  cli::Progress bar(static_cast<long>(todo.size()), "render");
   std::vector<std::thread> pool;
   const int n_threads = std::max(1, opt.threads);
   for (int k = 0; k < n_threads; ++k) pool.emplace_back(worker);

@@ -2,157 +2,102 @@
 #include "lumavel/host/render_command.hpp"
 
 #include <cstdio>
-#include <cstdlib>
+#include <memory>
+#include <stdexcept>
 #include <exception>
 #include <filesystem>
 #include <string>
 
-#include "lumavel/host/render/photometric_presets.hpp"
 #include "lumavel/host/render/recording_renderer.hpp"
+#include "lumavel/host/render/photometric_presets.hpp"
 #include "lumavel/host/render/scenario_loader.hpp"
 
 namespace lumavel::host {
 namespace {
 
-const char* const kHelpTop =
-    "Usage: lumavel-sim render SCENARIO.yaml OUT [options]\n"
-    "\n"
+const char* const kDescription =
+    "render a synthetic recording of a textured scene\n\n"
     "Renders a synthetic stereo camera + gyro recording from a scenario file into\n"
-    "OUT/mav0/ in the EuRoC layout (cam0/, cam1/, imu0/, state_groundtruth_estimate0/),\n"
-    "as specified by the recording-format contract. Scenario keys are documented in\n"
-    "host_sim/scenarios/README.md.\n"
-    "\n"
-    "Options:\n"
-    "  --resolution WxH  camera resolution (the field of view is kept), e.g. 40x30\n"
-    "  --exposure F      exposure time as a fraction of the frame period (0 = instant)\n"
-    "  --seed N          seed of pixel noise, fixed patterns, gyro noise and frame drops\n"
-    "  --duration S      length in seconds (the last segment continues if longer)\n"
-    "  --camera-mismatch NAME\n"
-    "                    photometric preset for cam0 and cam1, replacing the\n"
-    "                    scenario's photometric block (presets below)\n"
-    "  --threads N       worker threads (default 2)\n"
-    "  --force           replace an existing OUT/mav0\n"
-    "  --quiet           no progress bar and no summary\n"
-    "  -h, --help        this text\n"
-    "\n";
+    "OUT/mav0/ in the EuRoC layout (cam0/, cam1/, imu0/, state_groundtruth_estimate0/)\n"
+    "of the recording format (docs/recording-format.md). Scenario keys are\n"
+    "documented in host_sim/scenarios/README.md. Progress goes to standard error:\n"
+    "a bar on a terminal, otherwise a line every few seconds.";
 
-const char* const kHelpBottom =
-    "\n"
-    "Exit status: 0 done, 1 bad scenario or write error (message names the file and\n"
-    "line), 2 bad usage.\n";
+struct RenderArgs {
+  std::string scenario, out;
+  std::string resolution;
+  render::Overrides ov;
+  render::RenderOptions opt;
+  bool force = false, quiet = false;
+};
 
-int usage_error(const std::string& what) {
-  std::fprintf(stderr, "lumavel-sim render: %s\n(see lumavel-sim render --help)\n", what.c_str());
-  return 2;
-}
-
-bool parse_number(const char* text, double& out) {
-  char* end = nullptr;
-  out = std::strtod(text, &end);
-  return end != text && *end == '\0';
+int render_to_folder(RenderArgs& a) {
+  if (!a.resolution.empty()) cli::parse_size(a.resolution, a.ov.width, a.ov.height);
+  a.opt.progress = !a.quiet;
+  render::Scenario s = render::load_scenario(a.scenario);
+  render::apply_overrides(s, a.ov);
+  const std::string mav0 = a.out + "/mav0";
+  if (std::filesystem::exists(mav0)) {
+    if (!a.force) throw std::runtime_error(mav0 + " already exists (use --force to replace it)");
+    std::filesystem::remove_all(mav0);
+  }
+  const render::RenderSummary r = render::render_recording(s, a.out, a.opt);
+  if (!a.quiet) {
+    std::string bg = "no background visible";
+    if (r.max_background_frame >= 0) {
+      char buf[96];
+      std::snprintf(buf, sizeof buf, "background up to %.1f%% of an image (frame %d)", 100 * r.max_background,
+                    r.max_background_frame);
+      bg = buf;
+    }
+    std::printf(
+        "%s: %d frame pairs (%d dropped) %dx%d, %zu gyro samples, %zu ground-truth samples, "
+        "max %d sub-frames, %s, %.1f s\n",
+        mav0.c_str(), r.frames - r.dropped, r.dropped, s.camera.width, s.camera.height, r.imu_samples,
+        r.groundtruth_samples, r.max_subframes, bg.c_str(), r.seconds);
+  }
+  return 0;
 }
 
 }  // namespace
 
-int render_main(int argc, char** argv) {
-  std::string scenario_path, out_dir;
-  render::Overrides ov;
-  render::RenderOptions opt;
-  bool force = false, quiet = false;
-  for (int k = 1; k < argc; ++k) {
-    const std::string a = argv[k];
-    auto value = [&]() -> const char* { return k + 1 < argc ? argv[++k] : nullptr; };
-    if (a == "-h" || a == "--help") {
-      std::fputs(kHelpTop, stdout);
-      std::fputs("Photometric presets:\n", stdout);
-      for (const auto& p : render::photometric_presets())
-        std::printf("  %-16s %s\n", p.name, p.what);
-      std::fputs(kHelpBottom, stdout);
-      return 0;
-    } else if (a == "--resolution") {
-      const char* v = value();
-      int w = 0, h = 0;
-      char extra = 0;
-      if (!v || std::sscanf(v, "%dx%d%c", &w, &h, &extra) != 2 || w < 1 || h < 1 || w > 8192 || h > 8192)
-        return usage_error("--resolution needs WxH, e.g. 640x480");
-      ov.width = w;
-      ov.height = h;
-    } else if (a == "--exposure") {
-      const char* v = value();
-      double e = 0;
-      if (!v || !parse_number(v, e) || e < 0 || e > 10)
-        return usage_error("--exposure needs a fraction of the frame period in [0, 10]");
-      ov.exposure_frames = e;
-    } else if (a == "--seed") {
-      const char* v = value();
-      double sd = 0;
-      if (!v || !parse_number(v, sd) || sd < 0 || sd != static_cast<double>(static_cast<long long>(sd)))
-        return usage_error("--seed needs a whole number >= 0");
-      ov.seed = static_cast<long long>(sd);
-    } else if (a == "--duration") {
-      const char* v = value();
-      double d = 0;
-      if (!v || !parse_number(v, d) || d <= 0 || d > 1e6) return usage_error("--duration needs seconds > 0");
-      ov.duration_s = d;
-    } else if (a == "--camera-mismatch") {
-      const char* v = value();
-      if (!v || !render::find_photometric_preset(v))
-        return usage_error("--camera-mismatch needs one of: " + render::photometric_preset_names());
-      ov.camera_mismatch = v;
-    } else if (a == "--threads") {
-      const char* v = value();
-      double n = 0;
-      if (!v || !parse_number(v, n) || n < 1 || n > 256) return usage_error("--threads needs 1..256");
-      opt.threads = static_cast<int>(n);
-    } else if (a == "--force") {
-      force = true;
-    } else if (a == "--quiet") {
-      quiet = true;
-    } else if (!a.empty() && a[0] == '-') {
-      return usage_error("unknown option " + a);
-    } else if (scenario_path.empty()) {
-      scenario_path = a;
-    } else if (out_dir.empty()) {
-      out_dir = a;
-    } else {
-      return usage_error("unexpected argument " + a);
-    }
-  }
-  if (scenario_path.empty() || out_dir.empty()) return usage_error("needs SCENARIO.yaml and OUT");
-  opt.progress = !quiet;
-
-  try {
-    render::Scenario s = render::load_scenario(scenario_path);
-    render::apply_overrides(s, ov);
-    const std::string mav0 = out_dir + "/mav0";
-    if (std::filesystem::exists(mav0)) {
-      if (!force) {
-        std::fprintf(stderr, "lumavel-sim render: %s already exists (use --force to replace it)\n",
-                     mav0.c_str());
-        return 1;
-      }
-      std::filesystem::remove_all(mav0);
-    }
-    const render::RenderSummary r = render::render_recording(s, out_dir, opt);
-    if (!quiet) {
-      std::string bg = "no background visible";
-      if (r.max_background_frame >= 0) {
-        char buf[96];
-        std::snprintf(buf, sizeof buf, "background up to %.1f%% of an image (frame %d)",
-                      100 * r.max_background, r.max_background_frame);
-        bg = buf;
-      }
-      std::printf(
-          "%s: %d frame pairs (%d dropped) %dx%d, %zu gyro samples, %zu ground-truth samples, "
-          "max %d sub-frames, %s, %.1f s\n",
-          mav0.c_str(), r.frames - r.dropped, r.dropped, s.camera.width, s.camera.height,
-          r.imu_samples, r.groundtruth_samples, r.max_subframes, bg.c_str(), r.seconds);
-    }
-    return 0;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "lumavel-sim render: %s\n", e.what());
-    return 1;
-  }
+void add_render_command(cli::Tool& tool) {
+  auto a = std::make_shared<RenderArgs>();
+  CLI::App* c = tool.command("render", kDescription, [a] { return render_to_folder(*a); });
+  c->add_option("SCENARIO", a->scenario, "the scenario file (.yaml)")->required()->type_name("");
+  c->add_option("OUT", a->out, "the recording folder to write (OUT/mav0)")->required()->type_name("");
+  c->add_option("--resolution", a->resolution, "camera resolution (the field of view is kept), e.g. 40x30")
+      ->type_name("WxH")
+      ->check(cli::size_wxh(8192, 8192));
+  c->add_option("--exposure", a->ov.exposure_frames,
+                "exposure time as a fraction of the frame period, 0..10 (0 = instant)")
+      ->type_name("F")
+      ->check(cli::number_in(0, 10));
+  std::string presets;
+  for (const auto& p : render::photometric_presets()) presets += std::string("\n    ") + p.name + ": " + p.what;
+  c->add_option("--camera-mismatch", a->ov.camera_mismatch,
+                "photometric preset for cam0 and cam1, replacing the scenario's photometric block:" + presets)
+      ->type_name("NAME")
+      ->check(CLI::Validator(
+          [](const std::string& v) {
+            return render::find_photometric_preset(v) ? std::string()
+                                                      : "--camera-mismatch " + v + ": not a preset (one of: " +
+                                                            render::photometric_preset_names() + ")";
+          },
+          "PRESET"));
+  c->add_option("--seed", a->ov.seed, "seed of pixel noise, fixed patterns, gyro noise and random frame drops, >= 0")
+      ->type_name("N")
+      ->check(cli::whole_number_in(0, 9007199254740992LL));
+  c->add_option("--duration", a->ov.duration_s, "length in seconds, (0, 1e6] (the last segment continues if longer)")
+      ->type_name("S")
+      ->check(cli::positive_number_up_to(1e6));
+  c->add_option("--threads", a->opt.threads, "worker threads, 1..256 (default 2)")
+      ->type_name("N")
+      ->check(cli::whole_number_in(1, 256));
+  c->add_flag("--force", a->force, "replace an existing OUT/mav0");
+  c->add_flag("--quiet", a->quiet, "no progress and no summary");
 }
+
+int render_main(int argc, char** argv) { return cli::run_command_alone("lumavel-sim", add_render_command, argc, argv); }
 
 }  // namespace lumavel::host

@@ -9,7 +9,8 @@
 namespace lumavel::host::reproduce {
 
 struct CachedRender {
-  bool reused = false;
+  bool reused = false;         // the folder already held this render
+  bool from_earlier_run = false;  // ... and not from a render of this process
   int frames = 0;        // frame pairs rendered (0 when reused)
   double seconds = 0;    // time spent rendering (0 when reused)
 };
@@ -19,5 +20,16 @@ struct CachedRender {
 // modification time) and `key`, which must name everything `tweak` does.
 CachedRender render_cached(const std::string& scenario_path, const std::string& dir, const std::string& key,
                            const std::function<void(render::Scenario&)>& tweak, int threads);
+
+// Whether render_cached would reuse `dir` (for time estimates).
+bool render_is_cached(const std::string& scenario_path, const std::string& dir, const std::string& key);
+
+// What render_cached did in this process, for the page's header.
+struct RenderTally {
+  int rendered = 0;
+  double seconds = 0;
+  int reused_from_earlier_run = 0;
+};
+RenderTally render_tally();
 
 }  // namespace lumavel::host::reproduce

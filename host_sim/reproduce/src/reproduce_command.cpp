@@ -3,9 +3,9 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -18,11 +18,8 @@
 #include "render_cache.hpp"
 #include "results_markdown.hpp"
 #include "sections.hpp"
+#include "source_tree.hpp"
 #include "studies.hpp"
-
-#ifndef LUMAVEL_SOURCE_DIR
-#define LUMAVEL_SOURCE_DIR "."
-#endif
 
 namespace lumavel::host {
 namespace fs = std::filesystem;
@@ -32,49 +29,46 @@ namespace {
 
 struct Options {
   bool quick = false;
-  std::string out = "out/reproduce";
-  std::string doc = "docs/results.md";
-  std::string scenarios = std::string(LUMAVEL_SOURCE_DIR) + "/host_sim/scenarios";
+  std::string out;          // "": the source tree's out/reproduce (quick: out/reproduce-quick)
+  std::string doc;          // "": docs/results.md (quick or --only: OUT/results.md)
+  std::string scenarios;    // "": the source tree's host_sim/scenarios
   int threads = 2;
-  std::string only;       // run only the studies whose title contains this
-  std::string slider_data = std::string(LUMAVEL_SOURCE_DIR) + "/../shared/data/slider_depth";
-  bool doc_given = false;
+  std::string only;         // run only the studies whose title contains this
+  std::string slider_data;  // "": ../shared/data/slider_depth next to the source tree
 };
 
-void usage(std::FILE* f) {
-  std::fputs(
-      "usage: lumavel-sim reproduce [--quick] [--only TEXT] [--out DIR] [--doc FILE] [--scenarios DIR] [--threads N]\n"
-      "\n"
-      "Renders the paper's studies (Section IV-B simulations, Table I resolutions,\n"
-      "Table II exposures, the trolley, a turning run, untextured/dark/dropped\n"
-      "frames, lens distortion, gyro offset), runs the fixed-point and the double-precision\n"
-      "engines on each and writes the paper's figures and ours side by side to FILE,\n"
-      "with plots in a folder next to it; then calibrates the misalignment of\n"
-      "rendered rigs and runs the real slider_depth recording when its data is\n"
-      "there. Renders are cached in DIR between runs.\n"
-      "\n"
-      "  --quick          a small subset (40x30 and below, short runs) for CI\n"
-      "  --only TEXT      only the studies whose title contains TEXT (e.g. Lens); the\n"
-      "                   page then goes to DIR/results.md unless --doc is given\n"
-      "  --out DIR        recordings and plots (default out/reproduce)\n"
-      "  --doc FILE       results page (default docs/results.md; plots in docs/results/)\n"
-      "  --scenarios DIR  scenario folder (default the source tree's host_sim/scenarios)\n"
-      "  --threads N      render threads (default 2)\n"
-      "  --slider-data D  the slider_depth dataset (default ../shared/data/slider_depth next to\n"
-      "                   the source tree; its section is skipped when it is missing)\n",
-      f);
-}
+const char* const kDescription =
+    "render and run the paper's studies, write docs/results.md\n\n"
+    "Renders the paper's studies (Section IV-B simulations, Table I resolutions,\n"
+    "Table II exposures, the trolley, a turning run, untextured/dark/dropped\n"
+    "frames, lens distortion, gyro offset), runs the fixed-point and the\n"
+    "double-precision engines on each and writes the paper's figures and ours side\n"
+    "by side to a results page, with plots in a folder next to it; then calibrates\n"
+    "the misalignment of rendered rigs and runs the real slider_depth recording when\n"
+    "its data is there. Renders are cached in OUT between runs.\n"
+    "\n"
+    "Every default path is in the source tree that holds this binary's build, never\n"
+    "in the current folder. The full run writes docs/results.md; --quick and --only\n"
+    "never do: their page goes to OUT/results.md and says it is partial. Progress\n"
+    "and a time estimate go to standard error.";
 
-// Renders a case unless an identical render is already cached; adds the
-// render time to *render_s, or counts the reuse in *reused.
-std::string render_case(const Case& c, const Options& o, double* render_s, int* reused) {
+std::string render_dir(const Case& c, const Options& o) { return o.out + "/rec/" + gyro_variant(c).render_id; }
+
+std::string render_key(const Case& c) {
   const LensVariant lens = lens_variant(c);
-  const GyroVariant gyro = gyro_variant(c);  // its render_id is lens's for other cases
-  const std::string dir = o.out + "/rec/" + gyro.render_id;
+  const GyroVariant gyro = gyro_variant(c);
   std::ostringstream key;
   key << c.render_w << "x" << c.render_h << " e" << c.exposure << " d" << c.duration
       << (lens.no_lens ? " no-lens" : "") << (gyro.no_offset ? " no-gyro-offset" : "");
-  const CachedRender r = render_cached(o.scenarios + "/" + c.scenario, dir, key.str(), [&](render::Scenario& s) {
+  return key.str();
+}
+
+// Renders a case unless an identical render is already cached.
+std::string render_case(const Case& c, const Options& o) {
+  const LensVariant lens = lens_variant(c);
+  const GyroVariant gyro = gyro_variant(c);  // its render_id is lens's for other cases
+  const std::string dir = render_dir(c, o);
+  const CachedRender r = render_cached(o.scenarios + "/" + c.scenario, dir, render_key(c), [&](render::Scenario& s) {
     render::Overrides ov;
     ov.width = c.render_w;
     ov.height = c.render_h;
@@ -84,13 +78,37 @@ std::string render_case(const Case& c, const Options& o, double* render_s, int* 
     if (lens.no_lens) s.camera.distortion = {};  // same seed and motion, pinhole camera
     if (gyro.no_offset) s.imu.gyro_bias_z = 0;    // same seed, images and gyro noise
   }, o.threads);
-  if (r.reused) {
-    ++*reused;
-  } else {
-    std::fprintf(stderr, "    rendered %d frame pairs in %.1f s\n", r.frames, r.seconds);
-    *render_s += r.seconds;
-  }
+  if (!r.reused) std::fprintf(stderr, "    rendered %d frame pairs in %.1f s\n", r.frames, r.seconds);
   return dir;
+}
+
+// Work of a case for the time estimate, in pixel-frames: rendering (unless
+// cached; a rendered pixel costs several estimated ones) and both engines at
+// every working size. Only the ratios matter.
+double case_cost(const Case& c, const Options& o) {
+  render::Scenario s = render::load_scenario(o.scenarios + "/" + c.scenario);
+  render::Overrides ov;
+  ov.width = c.render_w;
+  ov.height = c.render_h;
+  ov.duration_s = c.duration;
+  ov.exposure_frames = c.exposure;
+  render::apply_overrides(s, ov);
+  const double frames = s.duration_s * s.camera.rate_hz;
+  double pixels = 0;
+  for (const WorkSize& w : c.work) pixels += 2.0 * w.width * w.height;
+  if (!render_is_cached(o.scenarios + "/" + c.scenario, render_dir(c, o), render_key(c))) {
+    // Each plane in view and each exposure sub-frame is drawn again.
+    const double subframes = s.camera.exposure_frames > 0 ? 1 + 16 * s.camera.exposure_frames : 1;
+    pixels += 4.0 * s.camera.width * s.camera.height * (1 + 0.5 * static_cast<double>(s.planes.size())) * subframes;
+  }
+  return frames * pixels;
+}
+
+std::string duration_text(double s) {
+  char b[64];
+  if (s < 90) std::snprintf(b, sizeof b, "%.0f s", s);
+  else std::snprintf(b, sizeof b, "%.0f min", s / 60);
+  return b;
 }
 
 // The paper's studies, the lens and the gyro offset studies, filtered by --only.
@@ -104,56 +122,77 @@ std::vector<Study> selected_studies(const Options& o) {
 }
 
 // The sections after the studies (sections.hpp), filtered by --only.
-std::vector<Section (*)(const SectionContext&)> selected_sections(const Options& o) {
-  std::vector<Section (*)(const SectionContext&)> kept;
-  if (std::string(kCalibrationTitle).find(o.only) != std::string::npos) kept.push_back(calibration_section);
-  if (std::string(kRealRecordingTitle).find(o.only) != std::string::npos) kept.push_back(real_recording_section);
+std::vector<std::pair<const char*, Section (*)(const SectionContext&)>> selected_sections(const Options& o) {
+  std::vector<std::pair<const char*, Section (*)(const SectionContext&)>> kept;
+  if (std::string(kCalibrationTitle).find(o.only) != std::string::npos)
+    kept.emplace_back(kCalibrationTitle, calibration_section);
+  if (std::string(kRealRecordingTitle).find(o.only) != std::string::npos)
+    kept.emplace_back(kRealRecordingTitle, real_recording_section);
   return kept;
+}
+
+CaseResult run_case(const Case& c, const Recording& rec, const WorkSize& w, EngineKind kind) {
+  RunOptions ro;
+  ro.engine = kind;
+  ro.size = {w.width, w.height};
+  ro.ignore_distortion = lens_variant(c).ignore_distortion;
+  ro.gyro_offset_learning = gyro_variant(c).learning;
+  double gyro_offset = 0;  // as learned by the end of the run
+  ro.sink = [&gyro_offset](const EngineEstimate& e) { gyro_offset = e.gyro_offset; };
+  const RunResult r = run_recording(rec, ro, nullptr);
+  CaseResult cr;
+  cr.c = c;
+  cr.work = w;
+  cr.engine = kind;
+  cr.metrics = compute_metrics(r.track);
+  cr.behaviour = flag_behaviour(r.track);
+  cr.bias_percent = bias_percent(r.track);
+  cr.rms_after = rms_after(r.track);
+  cr.gaps = rec.gaps;
+  cr.run_s = r.wall_s;
+  cr.gyro_offset = gyro_offset;
+  cr.track = r.track;
+  cr.rendered = {rec.cam[0].width, rec.cam[0].height};
+  cr.rendered_s = rec.frames.empty() ? 0
+                  : static_cast<double>(rec.frames.back().t_ns - rec.frames.front().t_ns) * 1e-9 + rec.frame_period_s;
+  return cr;
 }
 
 int run(const Options& o) {
   const auto t0 = std::chrono::steady_clock::now();
+  auto elapsed = [&t0] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
   const std::vector<Study> studies = selected_studies(o);
   const fs::path doc(o.doc);
   const fs::path plot_dir = doc.parent_path() / doc.stem();
   fs::create_directories(plot_dir);
   fs::create_directories(o.out);
+  const std::string machine = machine_description();
+  std::fprintf(stderr, "reproduce: page %s, renders in %s, on %s\n", o.doc.c_str(), o.out.c_str(), machine.c_str());
+
+  std::vector<double> costs;
+  for (const Study& st : studies)
+    for (const Case& c : st.cases) costs.push_back(case_cost(c, o));
+  double cost_total = 0, cost_done = 0;
+  for (double c : costs) cost_total += c;
+
   std::vector<StudyResult> results;
-  double render_s = 0;
-  int reused = 0;
-  size_t n_cases = 0, i_case = 0;
-  for (const Study& st : studies) n_cases += st.cases.size();
+  size_t i_case = 0;
   for (const Study& st : studies) {
     StudyResult sr{st, {}};
     for (const Case& c : st.cases) {
-      ++i_case;
-      std::fprintf(stderr, "[%zu/%zu] %s\n", i_case, n_cases, c.id.c_str());
-      const Recording rec = load_recording(render_case(c, o, &render_s, &reused));
+      const std::string eta = cost_done > 0 ? duration_text(elapsed()) + " elapsed, about " +
+                                                  duration_text(elapsed() * (cost_total - cost_done) / cost_done) +
+                                                  " left for the studies"
+                                            : "the time left is estimated after this case";
+      std::fprintf(stderr, "[%zu/%zu] %s (%s)\n", i_case + 1, costs.size(), c.id.c_str(), eta.c_str());
+      cost_done += costs[i_case++];
+      const Recording rec = load_recording(render_case(c, o));
       for (const WorkSize& w : c.work) {
         for (EngineKind kind : {EngineKind::kFixed, EngineKind::kFloat}) {
-          RunOptions ro;
-          ro.engine = kind;
-          ro.size = {w.width, w.height};
-          ro.ignore_distortion = lens_variant(c).ignore_distortion;
-          ro.gyro_offset_learning = gyro_variant(c).learning;
-          double gyro_offset = 0;  // as learned by the end of the run
-          ro.sink = [&gyro_offset](const EngineEstimate& e) { gyro_offset = e.gyro_offset; };
-          const RunResult r = run_recording(rec, ro, nullptr);
-          CaseResult cr;
-          cr.c = c;
-          cr.work = w;
-          cr.engine = kind;
-          cr.metrics = compute_metrics(r.track);
-          cr.behaviour = flag_behaviour(r.track);
-          cr.bias_percent = bias_percent(r.track);
-          cr.rms_after = rms_after(r.track);
-          cr.gaps = rec.gaps;
-          cr.run_s = r.wall_s;
-          cr.gyro_offset = gyro_offset;
-          cr.track = r.track;
+          CaseResult cr = run_case(c, rec, w, kind);
           if (kind == EngineKind::kFixed && &w == &c.work.front()) {
             const std::string name = c.id + "_" + std::to_string(w.width) + "x" + std::to_string(w.height) + ".svg";
-            write_track_svg((plot_dir / name).string(), r.track,
+            write_track_svg((plot_dir / name).string(), cr.track,
                             c.label + " at " + std::to_string(w.width) + "x" + std::to_string(w.height) + ", fixed engine");
             cr.plot = (fs::path(doc.stem()) / name).string();
           }
@@ -165,65 +204,86 @@ int run(const Options& o) {
   }
   std::vector<Section> sections;
   const SectionContext ctx{o.out, o.scenarios, o.slider_data, o.threads, o.quick};
-  for (auto* make : selected_sections(o)) sections.push_back(make(ctx));
-  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  for (const auto& [title, make] : selected_sections(o)) {
+    std::fprintf(stderr, "[section] %s (%s elapsed)\n", title, duration_text(elapsed()).c_str());
+    sections.push_back(make(ctx));
+  }
+  const RenderTally tally = render_tally();
+  PageInfo info;
+  info.quick = o.quick;
+  info.only = o.only;
+  info.seconds = elapsed();
+  info.render_seconds = tally.seconds;
+  info.renders_reused = tally.reused_from_earlier_run;
+  info.machine = machine;
   std::ofstream out(o.doc);
   if (!out) throw std::runtime_error(o.doc + ": cannot write");
-  out << results_markdown(results, sections, o.quick, secs, render_s, reused);
-  std::fprintf(stderr, "wrote %s (%.0f s)\n", o.doc.c_str(), secs);
+  out << results_markdown(results, sections, info);
+  out.close();
+  if (!out) throw std::runtime_error(o.doc + ": write error");
+  std::fprintf(stderr, "wrote %s (%s)\n", o.doc.c_str(), duration_text(info.seconds).c_str());
   return 0;
+}
+
+// The defaults come from the source tree; a partial run (--quick, --only)
+// never writes the committed page.
+void resolve_paths(Options& o) {
+  const bool need_tree = o.out.empty() || o.doc.empty() || o.scenarios.empty() || o.slider_data.empty();
+  const std::string tree = need_tree ? source_tree() : std::string();
+  if (o.scenarios.empty()) o.scenarios = tree + "/host_sim/scenarios";
+  if (o.slider_data.empty())
+    o.slider_data = (fs::path(tree).parent_path() / "shared" / "data" / "slider_depth").string();
+  if (o.out.empty()) o.out = tree + (o.quick ? "/out/reproduce-quick" : "/out/reproduce");
+  const bool partial = o.quick || !o.only.empty();
+  if (o.doc.empty()) o.doc = partial ? o.out + "/results.md" : tree + "/docs/results.md";
+  if (!partial) return;
+  // The committed page: docs/results.md of a source tree.
+  std::error_code ec;
+  const fs::path page = fs::weakly_canonical(o.doc, ec);
+  const fs::path root = page.parent_path().parent_path();
+  if (page.filename() == "results.md" && page.parent_path().filename() == "docs" &&
+      fs::is_directory(root / "host_sim" / "scenarios", ec))
+    throw cli::UsageError("--doc " + o.doc + ": a " + std::string(o.quick ? "--quick" : "--only") +
+                          " run never replaces the full results page docs/results.md; give another file (the "
+                          "default is OUT/results.md)");
 }
 
 }  // namespace
 
-int reproduce_main(int argc, char** argv) {
-  Options o;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto value = [&](const char* name) -> std::string {
-      if (i + 1 >= argc) throw std::invalid_argument(std::string(name) + " needs a value");
-      return argv[++i];
-    };
-    try {
-      if (a == "--help" || a == "-h") {
-        usage(stdout);
-        return 0;
-      } else if (a == "--quick") {
-        o.quick = true;
-      } else if (a == "--out") {
-        o.out = value("--out");
-      } else if (a == "--only") {
-        o.only = value("--only");
-      } else if (a == "--doc") {
-        o.doc = value("--doc");
-        o.doc_given = true;
-      } else if (a == "--scenarios") {
-        o.scenarios = value("--scenarios");
-      } else if (a == "--slider-data") {
-        o.slider_data = value("--slider-data");
-      } else if (a == "--threads") {
-        o.threads = std::stoi(value("--threads"));
-        if (o.threads < 1 || o.threads > 64) throw std::invalid_argument("--threads must be 1..64");
-      } else {
-        throw std::invalid_argument("unknown option '" + a + "'");
-      }
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "lumavel-sim reproduce: %s\n(see lumavel-sim reproduce --help)\n", e.what());
-      return 2;
-    }
-  }
-  if (selected_studies(o).empty() && selected_sections(o).empty()) {
-    std::fprintf(stderr, "lumavel-sim reproduce: --only '%s': no study title contains it\n(see lumavel-sim reproduce --help)\n",
-                 o.only.c_str());
-    return 2;
-  }
-  if (!o.only.empty() && !o.doc_given) o.doc = o.out + "/results.md";  // a partial page never replaces the full one
-  try {
-    return run(o);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "lumavel-sim reproduce: %s\n", e.what());
-    return 1;
-  }
+void add_reproduce_command(cli::Tool& tool) {
+  auto o = std::make_shared<Options>();
+  CLI::App* c = tool.command("reproduce", kDescription, [o] {
+    if (selected_studies(*o).empty() && selected_sections(*o).empty())
+      throw cli::UsageError("--only '" + o->only + "': no study title contains it");
+    resolve_paths(*o);
+    return run(*o);
+  });
+  c->add_flag("--quick", o->quick,
+              "a small subset (40x30 and below, short runs) for CI; its page\n"
+              "goes to OUT/results.md, marked quick");
+  c->add_option("--only", o->only,
+                "only the studies whose title contains TEXT (e.g. Lens); the\n"
+                "page then goes to OUT/results.md unless --doc is given")
+      ->type_name("TEXT");
+  c->add_option("--out", o->out,
+                "recordings and plots (default out/reproduce in the source\n"
+                "tree; with --quick out/reproduce-quick)")
+      ->type_name("DIR");
+  c->add_option("--doc", o->doc,
+                "results page (default docs/results.md in the source tree,\n"
+                "plots in docs/results/; with --quick or --only\n"
+                "OUT/results.md)")
+      ->type_name("FILE");
+  c->add_option("--scenarios", o->scenarios, "scenario folder (default the source tree's\nhost_sim/scenarios)")
+      ->type_name("DIR");
+  c->add_option("--threads", o->threads, "render threads, 1..64 (default 2)")
+      ->type_name("N")
+      ->check(cli::whole_number_in(1, 64));
+  c->add_option("--slider-data", o->slider_data,
+                "the slider_depth dataset (default ../shared/data/slider_depth\n"
+                "next to the source tree; its section is skipped when it is\n"
+                "missing)")
+      ->type_name("DIR");
 }
 
 }  // namespace lumavel::host

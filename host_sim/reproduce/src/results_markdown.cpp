@@ -1,5 +1,6 @@
 #include "results_markdown.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -31,6 +32,24 @@ struct Target {
   std::string what, target, measured;
   bool met;
 };
+
+// What a study ran, from the recordings themselves: per case, the rendered
+// resolution and length and the working sizes.
+std::string what_ran(const StudyResult& sr) {
+  std::vector<std::string> seen_ids, parts;
+  for (const CaseResult& c : sr.cases) {
+    if (std::find(seen_ids.begin(), seen_ids.end(), c.c.id) != seen_ids.end()) continue;
+    seen_ids.push_back(c.c.id);
+    std::string work;
+    for (const WorkSize& w : c.c.work) work += (work.empty() ? "" : ", ") + size_name(w);
+    const std::string part = c.c.label + ": " + size_name(c.rendered) + ", " + fmt("%.1f s", c.rendered_s) +
+                             ", run at " + work;
+    if (std::find(parts.begin(), parts.end(), part) == parts.end()) parts.push_back(part);  // variants of one render
+  }
+  std::string out;
+  for (const std::string& p : parts) out += (out.empty() ? "" : "; ") + p;
+  return out;
+}
 
 }  // namespace
 
@@ -96,14 +115,17 @@ FlagBehaviour flag_behaviour(const std::vector<TrackPoint>& track) {
 }
 
 std::string results_markdown(const std::vector<StudyResult>& results, const std::vector<Section>& sections,
-                             bool quick, double seconds, double render_seconds, int renders_reused) {
+                             const PageInfo& info) {
+  const bool quick = info.quick;
   std::ostringstream md, body;
   std::vector<Target> targets;
   const EngineKind F = EngineKind::kFixed, D = EngineKind::kFloat;
 
   for (const StudyResult& sr : results) {
     const Study& st = sr.study;
-    body << "\n## " << st.title << "\n\n" << st.what << "\n\n";
+    body << "\n## " << st.title << "\n\n";
+    if (quick) body << "The full study: " << st.what << "\n\n**This quick run:** " << what_ran(sr) << ".\n\n";
+    else body << st.what << "\n\nRan: " << what_ran(sr) << ".\n\n";
     if (st.metric == "lens") {
       body << lens_table(sr);
       continue;
@@ -184,24 +206,44 @@ std::string results_markdown(const std::vector<StudyResult>& results, const std:
       if (c.engine == F && !c.plot.empty()) body << "\n![" << c.c.label << "](" << c.plot << ")\n";
   }
 
-  md << "# Results: the paper's studies reproduced\n\n"
-     << "Written by `lumavel-sim reproduce" << (quick ? " --quick" : "") << "` (" << fmt("%.0f", seconds)
-     << " s on the 2-core build machine, of which " << fmt("%.0f", render_seconds) << " s rendering"
-     << (renders_reused ? "; " + std::to_string(renders_reused) + " renders reused from an earlier run, not counted" : std::string())
+  std::string command = "lumavel-sim reproduce";
+  if (quick) command += " --quick";
+  if (!info.only.empty()) command += " --only '" + info.only + "'";
+  const bool partial = quick || !info.only.empty();
+  md << (quick ? "# Results (quick run): the paper's studies reproduced\n\n"
+              : partial ? "# Results (partial run): the paper's studies reproduced\n\n"
+                        : "# Results: the paper's studies reproduced\n\n")
+     << "Written by `" << command << "` in " << fmt("%.0f", info.seconds) << " s on " << info.machine
+     << " (" << fmt("%.0f", info.render_seconds) << " s of it rendering"
+     << (info.renders_reused ? "; " + std::to_string(info.renders_reused) +
+                                   (info.renders_reused == 1 ? " render" : " renders") +
+                                   " reused from an earlier run, their time not counted"
+                             : std::string())
      << "). Every recording is rendered by `lumavel-sim render` from "
         "`host_sim/scenarios/`; both engines run on the same frames: `fixed` is the firmware core "
         "(integer only), `float` the double-precision reference. E is the paper's eq. 22 (time average "
         "of |V_est - V| / |V|, samples with |V| < 0.05 m/s left out), from the first frame on: "
         "convergence is included, as in the paper.\n\n";
-  if (quick) md << "**Quick subset** (CI): resolutions of 40x30 and below, shortened runs. Run without `--quick` for the full tables.\n\n";
+  if (quick)
+    md << "**Quick subset** (CI): fewer cases and resolutions, shortened runs; each study says what this run "
+          "rendered and ran. These are not the full study's figures: a target met here may be missed by the full "
+          "run (docs/results.md, `lumavel-sim reproduce` without `--quick`).\n\n";
+  else if (partial)
+    md << "**Partial run**: only the studies and sections whose title contains \"" << info.only
+       << "\"; the full page is docs/results.md.\n\n";
   for (const Section& sec : sections) {
     body << sec.markdown;
     for (const SectionTarget& t : sec.targets) targets.push_back({t.what, t.target, t.measured, t.met});
   }
   int met = 0;
   for (const Target& t : targets) met += t.met;
-  md << "## Targets\n\n" << met << " of " << targets.size() << " targets met.\n\n| target | wanted | measured (fixed engine) | |\n|---|---|---|---|\n";
-  for (const Target& t : targets) md << "| " << t.what << " | " << t.target << " | " << t.measured << " | " << (t.met ? "met" : "**missed**") << " |\n";
+  md << "## Targets\n\n" << met << " of " << targets.size() << " targets met"
+     << (quick ? " on the quick subset (not the full study's figures)" : "") << ".\n\n"
+     << "| target | wanted | measured (fixed engine" << (quick ? ", quick run" : "") << ") | |\n|---|---|---|---|\n";
+  const char* met_word = quick ? "met (quick run)" : "met";
+  const char* missed_word = quick ? "**missed** (quick run)" : "**missed**";
+  for (const Target& t : targets)
+    md << "| " << t.what << " | " << t.target << " | " << t.measured << " | " << (t.met ? met_word : missed_word) << " |\n";
   md << body.str();
   return md.str();
 }

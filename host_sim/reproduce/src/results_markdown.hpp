@@ -38,6 +38,8 @@ struct CaseResult {
   std::string plot;  // relative to the results page, fixed engine only
   double gyro_offset = 0;         // learned zero-rate offset at the end of the run, rad/s
   std::vector<TrackPoint> track;  // the estimates, for studies with their own figures
+  WorkSize rendered{0, 0};        // the recording's resolution, as rendered
+  double rendered_s = 0;          // and its length, s
 };
 
 struct StudyResult {
@@ -52,8 +54,18 @@ std::string lens_table(const StudyResult& sr);
 // The gyro offset study's table (study_gyro_offset.cpp); adds its targets.
 std::string gyro_offset_table(const StudyResult& sr, std::vector<SectionTarget>& targets);
 
+// How the page was made, for its header.
+struct PageInfo {
+  bool quick = false;
+  std::string only;           // --only TEXT ("" for all studies)
+  double seconds = 0;         // the whole run
+  double render_seconds = 0;  // of which rendering
+  int renders_reused = 0;     // renders from an earlier run, their time not counted
+  std::string machine;        // what it ran on (machine_description)
+};
+
 // `sections` (sections.hpp) follow the studies; their targets join the table.
 std::string results_markdown(const std::vector<StudyResult>& results, const std::vector<Section>& sections,
-                             bool quick, double seconds, double render_seconds, int renders_reused);
+                             const PageInfo& info);
 
 }  // namespace lumavel::host::reproduce

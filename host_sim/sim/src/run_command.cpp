@@ -1,77 +1,41 @@
 #include "run_command.hpp"
 
-#include <unistd.h>
-
 #include <chrono>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
 #include <string>
 #include <thread>
 #include <vector>
 
-#include "cli_args.hpp"
 #include "lumavel/core/status.hpp"
-#include "output_file.hpp"
 #include "lumavel/host/file_config_store.hpp"
 #include "lumavel/host/hid_link.hpp"
 #include "lumavel/host/hid_sender.hpp"
+#include "lumavel/host/output_file.hpp"
+#include "lumavel/host/progress.hpp"
 #include "lumavel/host/run_recording.hpp"
 #include "lumavel/host/track_plot.hpp"
 
 namespace lumavel::host {
 namespace {
 
-const char* const kRunHelp =
-    "usage: lumavel-sim run REC [options]\n"
-    "\n"
-    "Runs the estimator over the recording REC (EuRoC/ASL layout, REC or REC/mav0)\n"
-    "and writes the estimates CSV (docs/estimates-csv.md): one row per frame pair,\n"
+const char* const kRunDescription =
+    "run the estimator over a recording, write the estimates CSV\n\n"
+    "Runs the estimator over the recording REC (the recording format:\n"
+    "docs/recording-format.md; REC or REC/mav0) and writes the estimates CSV\n"
+    "(docs/estimates-csv.md): one row per frame pair,\n"
     "  timestamp_ns,v_xb_mps,distance_m,heading_rad,status,gyro_offset_radps,v_direct_mps,texture,\n"
     "  v_differential_mps,tof_s,scale\n"
     "\n"
-    "options:\n"
-    "  --engine fixed|float   estimator engine: the firmware's fixed-point core (default)\n"
-    "                         or the double-precision reference\n"
-    "  -o, --output FILE      write the CSV to FILE instead of standard output ('-')\n"
-    "  --width W              working resolution width, 16..160 (default 40)\n"
-    "  --height H             working resolution height, 1..128 (default 30; 1 for line-scan input)\n"
-    "  --ignore-distortion    estimate as if the lenses were pinhole, ignoring the\n"
-    "                         distortion_model and coefficients of sensor.yaml (by\n"
-    "                         default the column angles come from the undistorted\n"
-    "                         geometry); for comparisons or doubtful calibrations\n"
-    "  --no-gyro-offset-learning\n"
-    "                         take the gyro as it reads: do not learn its zero-rate\n"
-    "                         offset while the images show the rig standing still\n"
-    "                         (learned by default); for comparisons\n"
-    "  --plot FILE.svg        plot file (default: REC_estimates.svg next to the -o file,\n"
-    "                         or in the current folder); written when the recording has\n"
-    "                         ground truth or when --plot is given\n"
-    "  --hid SPEC             also send every estimate as a USB HID input report through\n"
-    "                         SPEC: uhid, hidg:/dev/hidgN or file:PATH (docs/usb-hid.md)\n"
-    "  --hid-config FILE      with --hid: configuration sets from the host (lumavel-read\n"
-    "                         config set) are validated, accepted and saved in FILE, and\n"
-    "                         config get returns them, also in later runs; the running\n"
-    "                         engine keeps the recording's configuration. Without it,\n"
-    "                         sets are refused\n"
-    "  --hid-wait-ms N        with --hid: how long a report waits for the host to take it\n"
-    "                         before it is dropped and counted as an overrun (default 20;\n"
-    "                         large values make the stream lossless with a slow host)\n"
-    "  --hid-linger S         with --hid: after the last estimate keep the device and\n"
-    "                         answer feature reports (info, config) for S seconds;\n"
-    "                         -1 until interrupted (SIGINT/SIGTERM, exit 0); default 0\n"
-    "  --quiet                no progress and no summary on standard error\n"
-    "  -h, --help             this help\n"
-    "\n"
-    "A summary goes to standard error: frames, gaps, whether the lens distortion was\n"
-    "corrected or ignored (when sensor.yaml has one or --ignore-distortion is given) and,\n"
-    "with ground truth (state_groundtruth_estimate0), the paper's error E (eq. 22), L1\n"
-    "and RMS errors, worst and mean error after the first second; last, the gyro\n"
-    "zero-rate offset learned at standstill (or why none was).\n"
-    "\n"
-    "exit status: 0 done, 1 bad recording or failure (the message names the file and\n"
-    "line or frame), 2 usage error\n";
+    "A summary goes to standard error: frames, gaps, the working size, the frames\n"
+    "each status flag was raised on, whether the lens distortion was corrected or\n"
+    "ignored and, with ground truth (state_groundtruth_estimate0), the paper's error\n"
+    "E (eq. 22), L1 and RMS errors, worst and mean error after the first second (or\n"
+    "why there is no figure); last, the gyro zero-rate offset learned at standstill\n"
+    "(or why none was).";
 
 struct RunArgs {
   std::string rec;
@@ -82,67 +46,40 @@ struct RunArgs {
   std::string hid_config;
   double hid_linger_s = 0;
   int hid_wait_ms = -1;  // -1: HidSender's default
-  WorkingSize size;
+  int width = 0, height = 0;  // 0: the default working size for the recording
   bool quiet = false;
-  bool help = false;
   bool ignore_distortion = false;
-  bool gyro_offset_learning = true;
+  bool no_gyro_offset_learning = false;
 };
 
-RunArgs parse(int argc, char** argv) {
-  RunArgs a;
-  std::string v;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "-h" || arg == "--help") {
-      a.help = true;
-    } else if (arg == "--quiet" || arg == "-q") {
-      a.quiet = true;
-    } else if (arg == "--ignore-distortion") {
-      a.ignore_distortion = true;
-    } else if (arg == "--no-gyro-offset-learning") {
-      a.gyro_offset_learning = false;
-    } else if (option_value(argc, argv, i, "--engine", v)) {
-      if (v != "fixed" && v != "float") throw UsageError("--engine must be 'fixed' or 'float', not '" + v + "'");
-      a.engine = v;
-    } else if (option_value(argc, argv, i, "-o", v) || option_value(argc, argv, i, "--output", v)) {
-      a.output = v == "-" ? std::string() : v;  // "-": standard output
-    } else if (option_value(argc, argv, i, "--plot", v)) {
-      a.plot = v;
-    } else if (option_value(argc, argv, i, "--hid", v)) {
-      a.hid = v;
-    } else if (option_value(argc, argv, i, "--hid-config", v)) {
-      if (v.empty()) throw UsageError("--hid-config needs a file name");
-      a.hid_config = v;
-    } else if (option_value(argc, argv, i, "--hid-wait-ms", v)) {
-      a.hid_wait_ms = parse_int(v, "--hid-wait-ms");
-      if (a.hid_wait_ms < 0 || a.hid_wait_ms > 600000) throw UsageError("--hid-wait-ms must be in 0..600000");
-    } else if (option_value(argc, argv, i, "--hid-linger", v)) {
-      char* end = nullptr;
-      a.hid_linger_s = std::strtod(v.c_str(), &end);
-      if (v.empty() || *end != '\0' || !std::isfinite(a.hid_linger_s) || (a.hid_linger_s < 0 && a.hid_linger_s != -1))
-        throw UsageError("--hid-linger must be a number of seconds >= 0, or -1, not '" + v + "'");
-    } else if (option_value(argc, argv, i, "--width", v)) {
-      a.size.width = parse_int(v, "--width");
-    } else if (option_value(argc, argv, i, "--height", v)) {
-      a.size.height = parse_int(v, "--height");
-    } else if (!arg.empty() && arg[0] == '-') {
-      throw UsageError("unknown option '" + arg + "'");
-    } else if (a.rec.empty()) {
-      a.rec = arg;
-    } else {
-      throw UsageError("unexpected argument '" + arg + "' (one recording per run)");
-    }
-  }
-  if (a.help) return a;
-  if (a.rec.empty()) throw UsageError("missing the recording folder REC");
-  if (a.hid.empty() && (!a.hid_config.empty() || a.hid_linger_s != 0 || a.hid_wait_ms >= 0))
-    throw UsageError("--hid-config, --hid-wait-ms and --hid-linger need --hid SPEC");
-  if (a.size.width < kMinWorkWidth || a.size.width > kMaxWorkWidth)
-    throw UsageError("--width must be in " + std::to_string(kMinWorkWidth) + ".." + std::to_string(kMaxWorkWidth));
-  if (a.size.height < 1 || a.size.height > kMaxWorkHeight)
-    throw UsageError("--height must be in 1.." + std::to_string(kMaxWorkHeight));
-  return a;
+// --hid-linger: seconds >= 0, or -1 for "until interrupted".
+CLI::Validator linger_seconds() {
+  return CLI::Validator(
+      [](std::string& s) -> std::string {
+        char* end = nullptr;
+        const double v = std::strtod(s.c_str(), &end);
+        if (s.empty() || *end != '\0' || !std::isfinite(v) || (v < 0 && v != -1))
+          return "must be a number of seconds >= 0, or -1 (until interrupted), not '" + s + "'";
+        return {};
+      },
+      "");
+}
+
+CLI::Validator host_link_spec() {
+  return CLI::Validator([](std::string& s) { return check_host_link_spec(s); }, "");
+}
+
+CLI::Validator engine_kind() {
+  return CLI::Validator(
+      [](std::string& s) -> std::string {
+        try {
+          parse_engine_kind(s);
+          return {};
+        } catch (const std::exception& e) {
+          return e.what();
+        }
+      },
+      "");
 }
 
 // "path/to/REC/" or "path/to/REC/mav0" -> "REC".
@@ -174,6 +111,16 @@ std::string gaps_line(const Recording& rec) {
                 rec.gaps.frame_gaps, rec.gaps.frames_missing, rec.gaps.longest_frame_gap_s, rec.gaps.gyro_holes,
                 rec.gaps.longest_gyro_hole_s);
   return buf;
+}
+
+// Where the working size came from, when not from --width/--height.
+std::string working_size_origin(const RunArgs& a, const Recording& rec) {
+  if (a.width > 0 || a.height > 0) return "";
+  const WorkingSize d = default_working_size(rec);
+  const bool own = d.width < kDefaultColumns || d.height < kDefaultRows;
+  if (!own) return " (the default)";
+  return " (the default " + std::to_string(kDefaultColumns) + "x" + std::to_string(kDefaultRows) +
+         " cut to the " + std::to_string(rec.cam[0].width) + "x" + std::to_string(rec.cam[0].height) + " sensor)";
 }
 
 const char* lens_line(bool distorted, bool ignored) {
@@ -218,12 +165,15 @@ void linger(HidSender& hid, double seconds) {
 }
 
 int run(const RunArgs& a) {
+  if (a.hid.empty() && (!a.hid_config.empty() || a.hid_linger_s != 0 || a.hid_wait_ms >= 0))
+    throw cli::UsageError("--hid-config, --hid-wait-ms and --hid-linger need --hid SPEC");
   const Recording rec = load_recording(a.rec);
   RunOptions options;
   options.engine = parse_engine_kind(a.engine);
-  options.size = a.size;
+  const WorkingSize fallback = default_working_size(rec);
+  options.size = {a.width > 0 ? a.width : fallback.width, a.height > 0 ? a.height : fallback.height};
   options.ignore_distortion = a.ignore_distortion;
-  options.gyro_offset_learning = a.gyro_offset_learning;
+  options.gyro_offset_learning = !a.no_gyro_offset_learning;
 
   std::unique_ptr<HidSender> hid;
   if (!a.hid.empty()) {
@@ -243,24 +193,22 @@ int run(const RunArgs& a) {
     if (hid_sink) hid_sink(e);
   };
 
-  OutputFile out(a.output);
+  OutputFile out(a.output == "-" ? std::string() : a.output);
   static char out_buf[1 << 16];
   if (out.get() == stdout) std::setvbuf(stdout, out_buf, _IOFBF, sizeof out_buf);
 
-  const bool show_progress = !a.quiet && ::isatty(STDERR_FILENO);
-  auto progress = [](size_t done, size_t total) {
-    std::fprintf(stderr, "\rframe %zu/%zu", done, total);
-    std::fflush(stderr);
-  };
+  std::unique_ptr<cli::Progress> bar;
+  if (!a.quiet) bar = std::make_unique<cli::Progress>(static_cast<long>(rec.frames.size()), "run");
+  auto progress = [&bar](size_t done, size_t) { bar->update(static_cast<long>(done)); };
   RunResult result;
   try {
-    result = run_recording(rec, options, out.get(), show_progress ? progress : std::function<void(size_t, size_t)>{});
+    result = run_recording(rec, options, out.get(), bar ? progress : std::function<void(size_t, size_t)>{});
     out.commit();
   } catch (...) {
-    if (show_progress) std::fputc('\n', stderr);
+    if (bar) bar->finish();
     throw;
   }
-  if (show_progress) std::fprintf(stderr, "\r%*s\r", 40, "");
+  if (bar) bar->finish();
 
   const std::string plot = a.plot.empty() ? default_plot_path(a) : a.plot;
   const bool want_plot = result.has_truth || !a.plot.empty();
@@ -272,16 +220,17 @@ int run(const RunArgs& a) {
     const double span = rec.frames.size() > 1
                             ? static_cast<double>(rec.frames.back().t_ns - rec.frames.front().t_ns) * 1e-9
                             : 0.0;
-    std::fprintf(stderr, "%s: %zu frame pairs over %.3f s, %s engine, %dx%d working, %.0f frames/s\n",
+    std::fprintf(stderr, "%s: %zu frame pairs over %.3f s, %s engine, %dx%d working%s, %.0f frames/s\n",
                  recording_name(a.rec).c_str(), result.frames, span, engine_name(options.engine),
-                 result.width, result.height,
+                 result.width, result.height, working_size_origin(a, rec).c_str(),
                  result.wall_s > 0 ? static_cast<double>(result.frames) / result.wall_s : 0.0);
     std::fprintf(stderr, "%s\n", gaps_line(rec).c_str());
+    std::fprintf(stderr, "%s\n", format_flag_counts(count_flags(result.track)).c_str());
     if (result.lens_distorted || a.ignore_distortion)
       std::fprintf(stderr, "%s\n", lens_line(result.lens_distorted, a.ignore_distortion));
     if (result.has_truth) std::fprintf(stderr, "%s\n", format_metrics(compute_metrics(result.track)).c_str());
     else std::fprintf(stderr, "no ground truth (state_groundtruth_estimate0/data.csv): no error figures\n");
-    std::fprintf(stderr, "%s\n", gyro_offset_line(a.gyro_offset_learning, result.track, last_offset).c_str());
+    std::fprintf(stderr, "%s\n", gyro_offset_line(!a.no_gyro_offset_learning, result.track, last_offset).c_str());
     if (want_plot) std::fprintf(stderr, "plot: %s\n", plot.c_str());
     if (hid) std::fprintf(stderr, "hid: %u reports sent through %s, %u overruns\n", hid->sent(), a.hid.c_str(), hid->overruns());
     if (hid && a.hid_linger_s != 0) {
@@ -295,24 +244,69 @@ int run(const RunArgs& a) {
 
 }  // namespace
 
-int run_main(int argc, char** argv) {
-  RunArgs args;
-  try {
-    args = parse(argc, argv);
-  } catch (const UsageError& e) {
-    std::fprintf(stderr, "lumavel-sim run: %s\n(see lumavel-sim run --help)\n", e.what());
-    return 2;
-  }
-  if (args.help) {
-    std::fputs(kRunHelp, stdout);
-    return 0;
-  }
-  try {
-    return run(args);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "lumavel-sim run: error: %s\n", e.what());
-    return 1;
-  }
+void add_run_command(cli::Tool& tool) {
+  auto a = std::make_shared<RunArgs>();
+  CLI::App* c = tool.command("run", kRunDescription, [a] { return run(*a); });
+  c->add_option("REC", a->rec, "the recording folder (REC or REC/mav0)")->required()->type_name("");
+  c->add_option("--engine", a->engine,
+                "estimator engine: the firmware's fixed-point core (default)\n"
+                "or the double-precision reference")
+      ->type_name("fixed|float")
+      ->check(engine_kind());
+  c->add_option("-o,--output", a->output, "write the CSV to FILE instead of standard output ('-')")
+      ->type_name("FILE");
+  c->add_option("--width", a->width,
+                "working resolution width, " + std::to_string(kMinWorkWidth) + ".." +
+                    std::to_string(kMaxWorkWidth) + " (default " + std::to_string(kDefaultColumns) +
+                    ", or the\nsensor's width when smaller)")
+      ->type_name("W")
+      ->check(cli::whole_number_in(kMinWorkWidth, kMaxWorkWidth));
+  c->add_option("--height", a->height,
+                "working resolution height, 1.." + std::to_string(kMaxWorkHeight) + " (default " +
+                    std::to_string(kDefaultRows) + ", or the\nsensor's height when smaller; 1 for line-scan input)")
+      ->type_name("H")
+      ->check(cli::whole_number_in(1, kMaxWorkHeight));
+  c->add_flag("--ignore-distortion", a->ignore_distortion,
+              "estimate as if the lenses were pinhole, ignoring the\n"
+              "distortion_model and coefficients of sensor.yaml (by\n"
+              "default the column angles come from the undistorted\n"
+              "geometry); for comparisons or doubtful calibrations");
+  c->add_flag("--no-gyro-offset-learning", a->no_gyro_offset_learning,
+              "take the gyro as it reads: do not learn its zero-rate\n"
+              "offset while the images show the rig standing still\n"
+              "(learned by default); for comparisons");
+  c->add_option("--plot", a->plot,
+                "plot file (default: REC_estimates.svg next to the -o file,\n"
+                "or in the current folder); written when the recording has\n"
+                "ground truth or when --plot is given")
+      ->type_name("FILE.svg");
+  c->add_option("--hid", a->hid,
+                                   "also send every estimate as a USB HID input report through\n"
+                                   "SPEC: uhid, hidg:/dev/hidgN or file:PATH (docs/usb-hid.md)")
+                         ->type_name("SPEC")
+                         ->check(host_link_spec());
+  c->add_option("--hid-config", a->hid_config,
+                "with --hid: configuration sets from the host (lumavel-read\n"
+                "config set) are validated, accepted and saved in FILE, and\n"
+                "config get returns them, also in later runs; the running\n"
+                "engine keeps the recording's configuration. Without it,\n"
+                "sets are refused")
+      ->type_name("FILE")
+      ->check(CLI::Validator([](std::string& s) { return s.empty() ? std::string("needs a file name") : std::string(); }, ""));
+  c->add_option("--hid-wait-ms", a->hid_wait_ms,
+                "with --hid: how long a report waits for the host to take it\n"
+                "before it is dropped and counted as an overrun, 0..600000\n"
+                "(default 20; large values make the stream lossless with a\n"
+                "slow host)")
+      ->type_name("N")
+      ->check(cli::whole_number_in(0, 600000));
+  c->add_option("--hid-linger", a->hid_linger_s,
+                "with --hid: after the last estimate keep the device and\n"
+                "answer feature reports (info, config) for S seconds;\n"
+                "-1 until interrupted (SIGINT/SIGTERM, exit 0); default 0")
+      ->type_name("S")
+      ->check(linger_seconds());
+  c->add_flag("-q,--quiet", a->quiet, "no progress and no summary on standard error");
 }
 
 }  // namespace lumavel::host

@@ -1,9 +1,10 @@
-// `lumavel-sim run`: argument parsing and reporting around run_recording().
+// `lumavel-sim run`: the command line and the report around run_recording().
 #pragma once
+#include "lumavel/host/cli.hpp"
 
 namespace lumavel::host {
 
-// argv[0] is "run". Exit status: 0 ok, 1 bad recording or failure, 2 usage.
-int run_main(int argc, char** argv);
+// Adds `run` to lumavel-sim. Exit status: 0 ok, 1 bad recording or failure, 2 usage.
+void add_run_command(cli::Tool& tool);
 
 }  // namespace lumavel::host

@@ -2,7 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdarg>
 #include <cstdio>
+#include <iterator>
+
+#include "lumavel/core/status.hpp"
 
 namespace lumavel::host {
 namespace {
@@ -30,12 +34,20 @@ RunMetrics compute_metrics(const std::vector<TrackPoint>& track, const MetricOpt
   m.samples = track.size();
   const std::vector<double> w = point_weights(track);
   const uint64_t t0 = track.empty() ? 0 : track.front().t_ns;
-  double e_num = 0, e_den = 0, abs_sum = 0, v_sum = 0, sq_sum = 0, after_abs = 0, after_signed = 0;
+  if (!track.empty()) m.span_s = static_cast<double>(track.back().t_ns - t0) * 1e-9;
+  // long double: the squares of any finite errors stay finite.
+  long double e_num = 0, e_den = 0, abs_sum = 0, v_sum = 0, sq_sum = 0, after_abs = 0, after_signed = 0;
+  size_t counted = 0;
   for (size_t i = 0; i < track.size(); ++i) {
     const TrackPoint& p = track[i];
     if (std::isnan(p.v_true)) continue;
     ++m.with_truth;
-    const double err = p.v_est - p.v_true;
+    if (!std::isfinite(p.v_est)) {
+      ++m.not_finite;
+      continue;
+    }
+    ++counted;
+    const long double err = static_cast<long double>(p.v_est) - p.v_true;
     abs_sum += std::fabs(err);
     v_sum += std::fabs(p.v_true);
     sq_sum += err * err;
@@ -51,34 +63,90 @@ RunMetrics compute_metrics(const std::vector<TrackPoint>& track, const MetricOpt
       after_abs += std::fabs(err);
       after_signed += err;
       if (std::fabs(err) > m.worst_after) {
-        m.worst_after = std::fabs(err);
+        m.worst_after = static_cast<double>(std::fabs(err));
         m.worst_after_t = t;
       }
     }
   }
   const double nan = std::nan("");
-  m.e_percent = e_den > 0 ? 100.0 * e_num / e_den : nan;
-  m.l1_percent = v_sum > 0 ? 100.0 * abs_sum / v_sum : nan;
-  m.rms = m.with_truth ? std::sqrt(sq_sum / static_cast<double>(m.with_truth)) : nan;
-  m.mean_abs_after = m.after_count ? after_abs / static_cast<double>(m.after_count) : nan;
-  m.mean_after = m.after_count ? after_signed / static_cast<double>(m.after_count) : nan;
+  m.e_percent = e_den > 0 ? static_cast<double>(100 * e_num / e_den) : nan;
+  m.l1_percent = v_sum > 0 ? static_cast<double>(100 * abs_sum / v_sum) : nan;
+  m.rms = counted ? static_cast<double>(std::sqrt(sq_sum / static_cast<long double>(counted))) : nan;
+  m.mean_abs_after = m.after_count ? static_cast<double>(after_abs / static_cast<long double>(m.after_count)) : nan;
+  m.mean_after = m.after_count ? static_cast<double>(after_signed / static_cast<long double>(m.after_count)) : nan;
   if (!m.after_count) m.worst_after = nan;
   return m;
 }
 
-std::string format_metrics(const RunMetrics& m) {
-  char buf[1024];
-  std::snprintf(buf, sizeof buf,
-                "ground truth: %zu of %zu frames\n"
-                "E (paper eq. 22, time average of |V_est - V|/|V|): %.2f %%"
-                " (%zu frames with |V| < %.2f m/s excluded)\n"
-                "L1 error sum|err|/sum|V|: %.2f %%\n"
-                "RMS error: %.4f m/s\n"
-                "after the first %.1f s (%zu frames): worst |err| %.4f m/s at t = %.3f s,"
-                " mean |err| %.4f m/s, mean err %+.4f m/s",
-                m.with_truth, m.samples, m.e_percent, m.excluded_slow, m.options.min_speed, m.l1_percent, m.rms,
-                m.options.settle_s, m.after_count, m.worst_after, m.worst_after_t, m.mean_abs_after, m.mean_after);
+namespace {
+
+std::string printf_text(const char* f, ...) __attribute__((format(printf, 1, 2)));
+std::string printf_text(const char* f, ...) {
+  char buf[512];
+  va_list ap;
+  va_start(ap, f);
+  std::vsnprintf(buf, sizeof buf, f, ap);
+  va_end(ap);
   return buf;
+}
+
+// Why a figure over the frames with ground truth cannot be given.
+std::string no_truth_reason(const RunMetrics& m) {
+  if (m.with_truth == 0) return "no frame has ground truth";
+  return "no estimate with ground truth is a finite number";
+}
+
+}  // namespace
+
+std::string format_metrics(const RunMetrics& m) {
+  std::string s = printf_text("ground truth: %zu of %zu frames", m.with_truth, m.samples);
+  if (m.not_finite)
+    s += printf_text("\n%zu estimates are not finite numbers (NaN or infinite): left out of every figure below",
+                     m.not_finite);
+  const bool any = m.with_truth > m.not_finite;
+  if (std::isfinite(m.e_percent))
+    s += printf_text("\nE (paper eq. 22, time average of |V_est - V|/|V|): %.2f %% (%zu frames with |V| < %.2f m/s excluded)",
+                     m.e_percent, m.excluded_slow, m.options.min_speed);
+  else if (!any)
+    s += "\nE (paper eq. 22): no figure: " + no_truth_reason(m);
+  else
+    s += printf_text("\nE (paper eq. 22): no figure: |V| < %.2f m/s on every frame (the relative error is "
+                     "undefined at standstill; see the RMS error)",
+                     m.options.min_speed);
+  if (std::isfinite(m.l1_percent)) s += printf_text("\nL1 error sum|err|/sum|V|: %.2f %%", m.l1_percent);
+  else s += "\nL1 error: no figure: " + (any ? std::string("the true speed is 0 throughout") : no_truth_reason(m));
+  if (std::isfinite(m.rms)) s += printf_text("\nRMS error: %.4g m/s", m.rms);
+  else s += "\nRMS error: no figure: " + no_truth_reason(m);
+  if (m.after_count)
+    s += printf_text("\nafter the first %.1f s (%zu frames): worst |err| %.4g m/s at t = %.3f s, mean |err| %.4g m/s, "
+                     "mean err %+.4g m/s",
+                     m.options.settle_s, m.after_count, m.worst_after, m.worst_after_t, m.mean_abs_after, m.mean_after);
+  else if (any)
+    s += printf_text("\nafter the first %.1f s: no figure: the run lasts %.3f s", m.options.settle_s, m.span_s);
+  return s;
+}
+
+FlagCounts count_flags(const std::vector<TrackPoint>& track) {
+  FlagCounts c;
+  c.frames = track.size();
+  constexpr uint16_t kNotFaults = kStatusConverging | kStatusStill | kStatusNoTof;
+  for (const TrackPoint& p : track) {
+    c.flagged += (p.status & ~kNotFaults) != 0;
+    for (size_t k = 0; k < std::size(kStatusFlags); ++k) c.count[k] += (p.status & kStatusFlags[k].flag) != 0;
+  }
+  return c;
+}
+
+std::string format_flag_counts(const FlagCounts& c) {
+  std::string s = printf_text("flags, frames of %zu:", c.frames);
+  bool any = false;
+  for (size_t k = 0; k < std::size(kStatusFlags); ++k) {
+    if (!c.count[k]) continue;
+    s += printf_text("%s %s %zu (%s)", any ? "," : "", kStatusFlags[k].name, c.count[k], kStatusFlags[k].meaning);
+    any = true;
+  }
+  if (!any) s += " none raised";
+  return s;
 }
 
 }  // namespace lumavel::host

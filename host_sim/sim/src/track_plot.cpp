@@ -1,128 +1,268 @@
 #include "lumavel/host/track_plot.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iterator>
 #include <stdexcept>
+
+#include "lumavel/core/status.hpp"
+#include "svg_axis.hpp"
 
 namespace lumavel::host {
 namespace {
 
-constexpr double kWidth = 960, kLeft = 80, kRight = 20, kPanelH = 260, kTop = 40, kGap = 60;
+using svg::Axis;
+using svg::escape;
+using svg::fmt;
 
-struct Axis {
-  double lo, hi;
-  double map(double v, double a, double b) const { return a + (v - lo) / (hi - lo) * (b - a); }
+// Layout, px.
+constexpr double kWidth = 960, kLeft = 104, kRight = 24;
+constexpr double kX0 = kLeft, kX1 = kWidth - kRight;
+constexpr double kTitleY = 22, kStatsY = 42, kTop = 56;
+constexpr double kSpeedH = 250, kErrorH = 200, kGap = 14, kLaneH = 11, kLaneGap = 3;
+
+// Colours (Okabe-Ito, distinguishable with colour-blindness).
+constexpr const char* kEstimateColour = "#0072B2";
+constexpr const char* kTruthColour = "#9a9a9a";
+constexpr const char* kErrorColour = "#D55E00";
+
+struct FlagStyle {
+  StatusFlag flag;
+  const char* colour;
+  bool fault;  // shaded across the panels (CONVERGING, STILL and NO_TOF are not faults)
+};
+constexpr FlagStyle kFlagStyles[] = {
+    {kStatusConverging, "#c8c8c8", false}, {kStatusLowTexture, "#E69F00", true},
+    {kStatusSaturated, "#CC79A7", true},   {kStatusFrameGap, "#56B4E9", true},
+    {kStatusGyroGap, "#009E73", true},     {kStatusNoLight, "#333333", true},
+    {kStatusRestarted, "#8B4513", true},   {kStatusStill, "#9ecae1", false},
+    {kStatusNoStereo, "#F0E442", true},    {kStatusNoTof, "#dadaeb", false},
+};
+static_assert(sizeof(kFlagStyles) / sizeof(kFlagStyles[0]) == sizeof(kStatusFlags) / sizeof(kStatusFlags[0]),
+              "a style for every status flag");
+
+const StatusFlagInfo& info_of(StatusFlag f) {
+  for (const StatusFlagInfo& i : kStatusFlags)
+    if (i.flag == f) return i;
+  return kStatusFlags[0];
+}
+
+std::string px(double v) { return fmt("%.1f", v); }
+
+struct Panel {
+  double top, height;
+  double bottom() const { return top + height; }
 };
 
-// 1, 2 or 5 times a power of ten, about range / 6.
-double nice_step(double range) {
-  const double raw = range / 6.0;
-  const double p = std::pow(10.0, std::floor(std::log10(raw)));
-  const double f = raw / p;
-  return (f < 1.5 ? 1 : f < 3.5 ? 2 : f < 7.5 ? 5 : 10) * p;
-}
-
-Axis padded(double lo, double hi) {
-  if (!(hi > lo)) {
-    lo -= 0.5;
-    hi += 0.5;
+// Time spans (s) where `flag` is raised, merged when closer than a pixel.
+// A frame covers half an interval on each side; a frame gap covers the gap.
+std::vector<std::pair<double, double>> flag_runs(const std::vector<double>& t, const std::vector<uint16_t>& status,
+                                                 StatusFlag flag, const Axis& ax) {
+  std::vector<std::pair<double, double>> runs;
+  const double half = t.size() > 1 ? 0.5 * (t.back() - t.front()) / static_cast<double>(t.size() - 1) : 0.5;
+  const double pixel = (ax.hi - ax.lo) / (kX1 - kX0);
+  for (size_t i = 0; i < t.size(); ++i) {
+    if (!(status[i] & flag)) continue;
+    double a = t[i] - half, b = t[i] + half;
+    if (flag == kStatusFrameGap && i > 0) a = t[i - 1], b = t[i];
+    if (b - a < 1.5 * pixel) a -= 0.75 * pixel, b += 0.75 * pixel;  // a single frame stays visible
+    if (!runs.empty() && a <= runs.back().second + pixel) runs.back().second = std::max(runs.back().second, b);
+    else runs.emplace_back(a, b);
   }
-  const double pad = 0.05 * (hi - lo);
-  return {lo - pad, hi + pad};
+  for (auto& r : runs) r = {std::max(r.first, ax.lo), std::min(r.second, ax.hi)};
+  return runs;
 }
 
-std::string fmt(const char* f, double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
+std::string rect(double x0, double y0, double x1, double y1, const char* fill, double opacity) {
+  return "<rect x=\"" + px(x0) + "\" y=\"" + px(y0) + "\" width=\"" + px(std::max(x1 - x0, 0.5)) + "\" height=\"" +
+         px(y1 - y0) + "\" fill=\"" + fill + "\" fill-opacity=\"" + fmt("%.2f", opacity) + "\"/>\n";
 }
 
-// Polyline of (x, y) with at most ~2 points per pixel column (min and max).
-std::string polyline(const std::vector<double>& x, const std::vector<double>& y, const Axis& ax, const Axis& ay,
-                     double top, const char* colour) {
-  std::string pts;
-  const double x0 = kLeft, x1 = kWidth - kRight, y0 = top + kPanelH, y1 = top;
+std::string text(double x, double y, const std::string& s, const char* anchor = "start", const char* extra = "") {
+  return "<text x=\"" + px(x) + "\" y=\"" + px(y) + "\" text-anchor=\"" + anchor + "\"" + extra + ">" + escape(s) +
+         "</text>\n";
+}
+
+// The line of (t, v) in a panel: at most two points per pixel column (min
+// and max), broken where v is NaN; isolated points as dots. Values beyond the
+// axis are drawn on its edge; each run of them gets a triangle there.
+struct Line {
+  std::string svg;
+  size_t clipped = 0;     // points drawn on an edge
+  double lowest = INFINITY, highest = -INFINITY;  // of those below and above the axis
+  std::vector<std::pair<double, double>> drawn;  // the points drawn, px (for the legend's place)
+};
+
+Line line(const std::vector<double>& t, const std::vector<double>& v, const Axis& ax, const Axis& ay, const Panel& p,
+          const char* colour, double width) {
+  Line out;
+  std::string pts, markers;
+  size_t seg_points = 0;
+  double last_x = 0, last_y = 0;
   long column = -1;
   double lo = 0, hi = 0, lo_x = 0, hi_x = 0;
-  auto flush = [&] {
+  auto y_of = [&](double val) { return ay.map(val, p.bottom(), p.top); };
+  auto flush_column = [&] {
     if (column < 0) return;
     const bool lo_first = lo_x <= hi_x;
     const double a = lo_first ? lo : hi, b = lo_first ? hi : lo;
-    pts += fmt("%.1f", static_cast<double>(column)) + "," + fmt("%.1f", ay.map(a, y0, y1)) + " ";
-    if (b != a) pts += fmt("%.1f", static_cast<double>(column)) + "," + fmt("%.1f", ay.map(b, y0, y1)) + " ";
+    pts += px(static_cast<double>(column)) + "," + px(y_of(a)) + " ";
+    ++seg_points;
+    last_x = static_cast<double>(column);
+    last_y = y_of(a);
+    out.drawn.emplace_back(last_x, last_y);
+    if (b != a) {
+      pts += px(static_cast<double>(column)) + "," + px(y_of(b)) + " ";
+      ++seg_points;
+      out.drawn.emplace_back(last_x, y_of(b));
+    }
   };
-  std::string out;
-  auto end_line = [&] {
-    flush();
+  auto end_segment = [&] {
+    flush_column();
     column = -1;
-    if (!pts.empty()) out += "<polyline fill=\"none\" stroke=\"" + std::string(colour) +
-                             "\" stroke-width=\"1.2\" points=\"" + pts + "\"/>\n";
+    if (seg_points == 1)
+      out.svg += "<circle cx=\"" + px(last_x) + "\" cy=\"" + px(last_y) + "\" r=\"" + fmt("%.1f", width + 1.5) +
+                 "\" fill=\"" + colour + "\"/>\n";
+    else if (seg_points > 1)
+      out.svg += "<polyline fill=\"none\" stroke=\"" + std::string(colour) + "\" stroke-width=\"" + fmt("%.1f", width) +
+                 "\" stroke-linejoin=\"round\" points=\"" + pts + "\"/>\n";
     pts.clear();
+    seg_points = 0;
   };
-  for (size_t i = 0; i < x.size(); ++i) {
-    if (std::isnan(y[i])) {  // no data: break the line
-      end_line();
+  int side = 0;  // the side of the current run of clipped points
+  long last_marker_col = -10;
+  for (size_t i = 0; i < t.size(); ++i) {
+    if (!std::isfinite(v[i])) {  // no data: break the line
+      end_segment();
+      side = 0;
       continue;
     }
-    const long c = std::lround(ax.map(x[i], x0, x1));
+    double val = v[i];
+    const int s = val > ay.hi ? 1 : val < ay.lo ? -1 : 0;
+    if (s != 0) {
+      ++out.clipped;
+      if (s < 0) out.lowest = std::min(out.lowest, val);
+      else out.highest = std::max(out.highest, val);
+      val = s > 0 ? ay.hi : ay.lo;
+      const long c = std::lround(ax.map(t[i], kX0, kX1));
+      if (s != side && c > last_marker_col + 3) {  // one triangle per run, a few pixels apart
+        const double x = static_cast<double>(c), y = s > 0 ? p.top : p.bottom(), d = s > 0 ? 7 : -7;
+        markers += "<path d=\"M" + px(x - 4) + "," + px(y + d) + " L" + px(x + 4) + "," + px(y + d) + " L" + px(x) +
+                   "," + px(y) + " Z\" fill=\"" + colour + "\"/>\n";
+        last_marker_col = c;
+      }
+    }
+    side = s;
+    const long c = std::lround(ax.map(t[i], kX0, kX1));
     if (c != column) {
-      flush();
+      flush_column();
       column = c;
-      lo = hi = y[i];
-      lo_x = hi_x = x[i];
+      lo = hi = val;
+      lo_x = hi_x = t[i];
     } else {
-      if (y[i] < lo) lo = y[i], lo_x = x[i];
-      if (y[i] > hi) hi = y[i], hi_x = x[i];
+      if (val < lo) lo = val, lo_x = t[i];
+      if (val > hi) hi = val, hi_x = t[i];
     }
   }
-  end_line();
+  end_segment();
+  out.svg += markers;
   return out;
 }
 
-std::string panel_frame(const Axis& ax, const Axis& ay, double top, const std::string& ylabel, bool xlabels) {
-  const double x0 = kLeft, x1 = kWidth - kRight, y0 = top + kPanelH, y1 = top;
-  std::string s = "<rect x=\"" + fmt("%.1f", x0) + "\" y=\"" + fmt("%.1f", y1) + "\" width=\"" +
-                  fmt("%.1f", x1 - x0) + "\" height=\"" + fmt("%.1f", kPanelH) +
-                  "\" fill=\"white\" stroke=\"#444\"/>\n";
-  const double sx = nice_step(ax.hi - ax.lo), sy = nice_step(ay.hi - ay.lo);
-  for (double v = std::ceil(ax.lo / sx) * sx; v <= ax.hi; v += sx) {
-    const double px = ax.map(v, x0, x1);
-    s += "<line x1=\"" + fmt("%.1f", px) + "\" y1=\"" + fmt("%.1f", y1) + "\" x2=\"" + fmt("%.1f", px) +
-         "\" y2=\"" + fmt("%.1f", y0) + "\" stroke=\"#ddd\"/>\n";
-    if (xlabels)
-      s += "<text x=\"" + fmt("%.1f", px) + "\" y=\"" + fmt("%.1f", y0 + 16) + "\" text-anchor=\"middle\">" +
-           fmt("%g", std::fabs(v) < 1e-12 ? 0.0 : v) + "</text>\n";
+std::string frame(const Panel& p, const Axis& ax, const Axis& ay, const std::string& ylabel) {
+  std::string s = "<rect x=\"" + px(kX0) + "\" y=\"" + px(p.top) + "\" width=\"" + px(kX1 - kX0) + "\" height=\"" +
+                  px(p.height) + "\" fill=\"white\" stroke=\"#444\"/>\n";
+  for (const svg::Tick& k : svg::ticks(ax, kX1 - kX0, true)) {
+    const double x = ax.map(k.value, kX0, kX1);
+    s += "<line x1=\"" + px(x) + "\" y1=\"" + px(p.top) + "\" x2=\"" + px(x) + "\" y2=\"" + px(p.bottom()) +
+         "\" stroke=\"#e4e4e4\"/>\n";
   }
-  for (double v = std::ceil(ay.lo / sy) * sy; v <= ay.hi; v += sy) {
-    const double py = ay.map(v, y0, y1);
-    s += "<line x1=\"" + fmt("%.1f", x0) + "\" y1=\"" + fmt("%.1f", py) + "\" x2=\"" + fmt("%.1f", x1) +
-         "\" y2=\"" + fmt("%.1f", py) + "\" stroke=\"#ddd\"/>\n";
-    s += "<text x=\"" + fmt("%.1f", x0 - 6) + "\" y=\"" + fmt("%.1f", py + 4) + "\" text-anchor=\"end\">" +
-         fmt("%g", std::fabs(v) < 1e-12 ? 0.0 : v) + "</text>\n";
+  for (const svg::Tick& k : svg::ticks(ay, p.height, false)) {
+    const double y = ay.map(k.value, p.bottom(), p.top);
+    s += "<line x1=\"" + px(kX0) + "\" y1=\"" + px(y) + "\" x2=\"" + px(kX1) + "\" y2=\"" + px(y) + "\" stroke=\"" +
+         (k.value == 0 ? "#999" : "#e4e4e4") + "\"/>\n";
+    s += text(kX0 - 6, y + 4, k.label, "end");
   }
-  s += "<text transform=\"translate(18," + fmt("%.1f", top + kPanelH / 2) +
-       ") rotate(-90)\" text-anchor=\"middle\">" + ylabel + "</text>\n";
+  s += "<text transform=\"translate(16," + px(p.top + p.height / 2) + ") rotate(-90)\" text-anchor=\"middle\">" +
+       escape(ylabel) + "</text>\n";
   return s;
 }
 
-std::string escape(const std::string& t) {
-  std::string o;
-  for (char c : t) {
-    if (c == '<') o += "&lt;";
-    else if (c == '>') o += "&gt;";
-    else if (c == '&') o += "&amp;";
-    else if (c == '"') o += "&quot;";
-    else o += c;
+double legend_height(size_t entries) { return 8 + 16.0 * static_cast<double>(entries); }
+
+// A legend box inside the panel, in the top corner that hides the fewest
+// of the points drawn (the axes leave headroom for it): entries of
+// (sample, words).
+std::string legend(const Panel& p, const std::vector<std::pair<std::string, std::string>>& entries,
+                   const std::vector<const Line*>& lines) {
+  size_t widest = 0;
+  for (const auto& e : entries) widest = std::max(widest, e.second.size());
+  const double w = 44 + 6.6 * static_cast<double>(widest), h = legend_height(entries.size());
+  double x = kX1 - w - 8, y = p.top + 8;
+  size_t fewest = SIZE_MAX;
+  for (const auto& [cx, cy] : {std::pair<double, double>{kX1 - w - 8, p.top + 8}, {kX0 + 8, p.top + 8}}) {
+    size_t hidden = 0;
+    for (const Line* l : lines)
+      for (const auto& [lx, ly] : l->drawn) hidden += lx >= cx - 4 && lx <= cx + w + 4 && ly >= cy - 4 && ly <= cy + h + 4;
+    if (hidden < fewest) fewest = hidden, x = cx, y = cy;
   }
-  return o;
+  std::string s = "<rect x=\"" + px(x) + "\" y=\"" + px(y) + "\" width=\"" + px(w) + "\" height=\"" + px(h) +
+                  "\" fill=\"white\" fill-opacity=\"0.88\" stroke=\"#bbb\"/>\n";
+  for (size_t i = 0; i < entries.size(); ++i) {
+    const double yy = y + 14 + 16.0 * static_cast<double>(i);
+    s += "<g transform=\"translate(" + px(x + 8) + "," + px(yy - 4) + ")\">" + entries[i].first + "</g>\n";
+    s += text(x + 38, yy, entries[i].second);
+  }
+  return s;
+}
+
+std::string frames_text(size_t n) { return std::to_string(n) + (n == 1 ? " frame" : " frames"); }
+
+// "down to -0.5, up to 6.7 m/s": how far beyond the axis the clipped points lie.
+std::string beyond_text(const Line& l, const char* format) {
+  std::string s;
+  if (std::isfinite(l.lowest)) s += "down to " + fmt(format, l.lowest);
+  if (std::isfinite(l.highest)) s += (s.empty() ? "up to " : ", up to ") + fmt(format, l.highest);
+  return s + " m/s";
+}
+
+std::string sample_line(const char* colour, double width) {
+  return "<line x1=\"0\" y1=\"0\" x2=\"24\" y2=\"0\" stroke=\"" + std::string(colour) + "\" stroke-width=\"" +
+         fmt("%.1f", width) + "\"/>";
+}
+
+std::string sample_triangle(const char* colour) {
+  return "<path d=\"M8,-5 L16,-5 L12,2 Z\" fill=\"" + std::string(colour) + "\"/>";
+}
+
+#define kSep " \u00b7 "
+
+// The figures of the run, said on one line above the panels.
+std::string stats_line(const RunMetrics& m, bool any_truth, const FlagCounts& flags) {
+  std::string s;
+  if (!any_truth) {
+    s = "no ground truth: no error figures";
+  } else {
+    s = std::isfinite(m.e_percent) ? fmt("E %.2f %%", m.e_percent) : std::string("E: no figure (|V| < 0.05 m/s)");
+    if (std::isfinite(m.l1_percent)) s += fmt(kSep "L1 %.2f %%", m.l1_percent);
+    if (std::isfinite(m.rms)) s += kSep "RMS " + fmt("%.3g m/s", m.rms);
+    if (m.after_count)
+      s += kSep "worst |err| after " + fmt("%.0f s ", m.options.settle_s) + fmt("%.3g m/s", m.worst_after) +
+           fmt(" at %.2f s", m.worst_after_t);
+  }
+  const double share = flags.frames ? 100.0 * static_cast<double>(flags.flagged) / static_cast<double>(flags.frames) : 0;
+  s += flags.flagged ? fmt(kSep "flagged: %.0f %% of frames", share) : std::string(kSep "no frame flagged");
+  return s;
 }
 
 }  // namespace
 
 std::string track_svg(const std::vector<TrackPoint>& track, const std::string& title) {
   std::vector<double> t, est, truth, err;
+  std::vector<uint16_t> status;
   bool any_truth = false;
   const uint64_t t0 = track.empty() ? 0 : track.front().t_ns;
   for (const TrackPoint& p : track) {
@@ -130,50 +270,141 @@ std::string track_svg(const std::vector<TrackPoint>& track, const std::string& t
     est.push_back(p.v_est);
     truth.push_back(p.v_true);
     err.push_back(p.v_est - p.v_true);  // NaN without truth
+    status.push_back(p.status);
     any_truth = any_truth || !std::isnan(p.v_true);
   }
-  auto range = [](const std::vector<double>& a, const std::vector<double>& b) {
-    double lo = INFINITY, hi = -INFINITY;
-    for (const auto* v : {&a, &b})
-      for (double x : *v)
-        if (std::isfinite(x)) lo = std::min(lo, x), hi = std::max(hi, x);
-    if (!(lo <= hi)) lo = hi = 0;
-    return padded(lo, hi);
-  };
-  const Axis ax = t.empty() ? Axis{0, 1} : Axis{t.front(), t.back() > t.front() ? t.back() : t.front() + 1};
-  const Axis av = range(est, truth);
-  const int panels = any_truth ? 2 : 1;
-  const double height = kTop + panels * kPanelH + (panels - 1) * kGap + 50;
+  const RunMetrics metrics = compute_metrics(track);
+  const FlagCounts counts = count_flags(track);
+  const double settle = metrics.options.settle_s;
+
+  const Axis ax = t.empty() || !(t.back() > t.front()) ? Axis{t.empty() ? 0 : t.front() - 0.5, t.empty() ? 1 : t.front() + 0.5}
+                                                        : Axis{t.front(), t.back()};
+  // Speed axis: the truth and the estimate after the first second, without
+  // its outermost 1 % (shown on the edge, marked); never forced to hold 0.
+  std::vector<double> speeds;
+  for (size_t i = 0; i < t.size(); ++i) {
+    if (std::isfinite(truth[i])) speeds.push_back(truth[i]);
+    if (t[i] >= settle || t.back() < settle) speeds.push_back(est[i]);
+  }
+  const double room = legend_height(3) + 14;  // a legend has up to three entries
+  const Axis av = svg::with_headroom(svg::robust_range(speeds, any_truth ? 0.005 : 0.01, 0.02), kSpeedH, room);
+
+  // Present flags, in bit order: one lane each under the panels.
+  std::vector<const FlagStyle*> lanes;
+  for (const FlagStyle& f : kFlagStyles)
+    if (std::any_of(status.begin(), status.end(), [&](uint16_t s) { return s & f.flag; })) lanes.push_back(&f);
+
+  const Panel speed{kTop, kSpeedH};
+  const Panel error{speed.bottom() + kGap, any_truth ? kErrorH : 0};
+  const double lanes_top = (any_truth ? error.bottom() : speed.bottom()) + kGap;
+  const double lanes_h = lanes.empty() ? 14 : static_cast<double>(lanes.size()) * (kLaneH + kLaneGap);
+  // The key of the lanes under the time axis: "NAME: meaning, N frames" each,
+  // wrapped to the width.
+  std::vector<std::pair<const FlagStyle*, std::string>> key;
+  for (const FlagStyle* f : lanes) {
+    size_t n = 0;
+    for (size_t i = 0; i < std::size(kStatusFlags); ++i)
+      if (kStatusFlags[i].flag == f->flag) n = counts.count[i];
+    key.emplace_back(f, std::string(info_of(f->flag).name) + ": " + info_of(f->flag).meaning + ", " + frames_text(n));
+  }
+  std::vector<std::vector<size_t>> key_rows(key.empty() ? 0 : 1);
+  double row_x = kX0;
+  for (size_t i = 0; i < key.size(); ++i) {
+    const double w = 14 + 5.7 * static_cast<double>(key[i].second.size()) + 18;
+    if (row_x + w > kX1 && !key_rows.back().empty()) key_rows.emplace_back(), row_x = kX0;
+    key_rows.back().push_back(i);
+    row_x += w;
+  }
+  const double key_top = lanes_top + lanes_h + 46;
+  const double height = key_top + 16.0 * static_cast<double>(key_rows.size()) + 6;
+
   std::string s = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + fmt("%.0f", kWidth) + "\" height=\"" +
                   fmt("%.0f", height) + "\" font-family=\"sans-serif\" font-size=\"12\">\n";
   s += "<rect width=\"100%\" height=\"100%\" fill=\"#fafafa\"/>\n";
-  s += "<text x=\"" + fmt("%.0f", kWidth / 2) + "\" y=\"24\" text-anchor=\"middle\" font-size=\"15\">" +
-       escape(title) + "</text>\n";
-  s += panel_frame(ax, av, kTop, "V (m/s)", panels == 1);
-  if (any_truth) s += polyline(t, truth, ax, av, kTop, "#222");
-  s += polyline(t, est, ax, av, kTop, "#1f6fd0");
-  // Legend above the top panel, right-aligned, clear of the data.
-  s += "<text x=\"" + fmt("%.0f", kWidth - kRight - (any_truth ? 130 : 0)) + "\" y=\"" + fmt("%.0f", kTop - 6) +
-       "\" text-anchor=\"end\" fill=\"#1f6fd0\">estimate V_est</text>\n";
+  s += text(kWidth / 2, kTitleY, title, "middle", " font-size=\"15\"");
+  s += text(kWidth / 2, kStatsY, stats_line(metrics, any_truth, counts), "middle");
+
+  // Speed panel: flagged time shaded behind the lines, truth thick and light
+  // underneath, the estimate thin on top.
+  s += frame(speed, ax, av, "V (m/s)");
+  auto shade = [&](const Panel& p) {
+    std::string b;
+    for (const FlagStyle* f : lanes)
+      if (f->fault)
+        for (const auto& [a, e] : flag_runs(t, status, f->flag, ax))
+          b += rect(ax.map(a, kX0, kX1), p.top, ax.map(e, kX0, kX1), p.bottom(), f->colour, 0.16);
+    return b;
+  };
+  s += shade(speed);
+  const Line truth_line = any_truth ? line(t, truth, ax, av, speed, kTruthColour, 4.5) : Line{};
+  s += truth_line.svg;
+  const Line est_line = line(t, est, ax, av, speed, kEstimateColour, 1.3);
+  s += est_line.svg;
+  std::vector<std::pair<std::string, std::string>> speed_legend;
+  if (any_truth) speed_legend.emplace_back(sample_line(kTruthColour, 4.5), "ground truth V");
+  speed_legend.emplace_back(sample_line(kEstimateColour, 1.3), "estimate V_est");
+  if (est_line.clipped)
+    speed_legend.emplace_back(sample_triangle(kEstimateColour),
+                              frames_text(est_line.clipped) + " beyond the axis, " + beyond_text(est_line, "%.3g"));
+  s += legend(speed, speed_legend, {&truth_line, &est_line});
+
   if (any_truth) {
-    s += "<text x=\"" + fmt("%.0f", kWidth - kRight) + "\" y=\"" + fmt("%.0f", kTop - 6) +
-         "\" text-anchor=\"end\" fill=\"#222\">ground truth V</text>\n";
-    const double top = kTop + kPanelH + kGap;
-    // The error scale comes from the errors after the first second (as in the
-    // paper's Fig. 4): the start-up frames would flatten everything else.
-    // Earlier points beyond the scale are clipped to its edge.
+    // Error panel: scaled on the errors after the first second (as the
+    // paper's Fig. 4); the start-up frames beyond it are drawn on the edge and marked.
     std::vector<double> settled;
     for (size_t i = 0; i < err.size(); ++i)
-      if (t[i] >= 1.0) settled.push_back(err[i]);
-    const Axis ae = range(settled.empty() ? err : settled, settled.empty() ? err : settled);
-    std::vector<double> shown = err;
-    for (double& e : shown)
-      if (std::isfinite(e)) e = std::min(std::max(e, ae.lo), ae.hi);
-    s += panel_frame(ax, ae, top, settled.empty() ? "V_est - V (m/s)" : "V_est - V (m/s), scaled after 1 s", true);
-    s += polyline(t, shown, ax, ae, top, "#c0392b");
+      if (t[i] >= settle || t.back() < settle) settled.push_back(err[i]);
+    const Axis ae = svg::with_headroom(svg::including(svg::robust_range(settled, 0, 0.002), 0.0), kErrorH, room);
+    s += frame(error, ax, ae, "V_est - V (m/s)");
+    s += shade(error);
+    const Line err_line = line(t, err, ax, ae, error, kErrorColour, 1.2);
+    s += err_line.svg;
+    std::vector<std::pair<std::string, std::string>> error_legend{{sample_line(kErrorColour, 1.2), "error V_est - V"}};
+    if (err_line.clipped)
+      error_legend.emplace_back(sample_triangle(kErrorColour),
+                                frames_text(err_line.clipped) + " beyond the axis (scaled after " +
+                                    fmt("%.0f s", settle) + "), " + beyond_text(err_line, "%+.3g"));
+    if (metrics.after_count && std::isfinite(metrics.worst_after)) {
+      // Where it went most wrong after the start.
+      size_t worst = 0;
+      for (size_t i = 0; i < t.size(); ++i)
+        if (std::fabs(t[i] - metrics.worst_after_t) < std::fabs(t[worst] - metrics.worst_after_t)) worst = i;
+      const double wx = ax.map(t[worst], kX0, kX1);
+      const double wy = ae.map(std::min(std::max(err[worst], ae.lo), ae.hi), error.bottom(), error.top);
+      s += "<circle cx=\"" + px(wx) + "\" cy=\"" + px(wy) + "\" r=\"5\" fill=\"none\" stroke=\"#000\"/>\n";
+      error_legend.emplace_back("<circle cx=\"12\" cy=\"0\" r=\"5\" fill=\"none\" stroke=\"#000\"/>",
+                                "worst after " + fmt("%.0f s", settle) + ": " + fmt("%+.3g m/s", err[worst]) +
+                                    fmt(" at %.2f s", t[worst]));
+    }
+    s += legend(error, error_legend, {&err_line});
   }
-  s += "<text x=\"" + fmt("%.0f", kWidth / 2) + "\" y=\"" + fmt("%.0f", height - 10) +
-       "\" text-anchor=\"middle\">time (s)</text>\n</svg>\n";
+
+  // Flag lanes: when each flag was raised, with its name and meaning.
+  if (lanes.empty()) {
+    s += text(kX0, lanes_top + 10, "no status flag raised", "start", " fill=\"#555\"");
+  } else {
+    for (size_t k = 0; k < lanes.size(); ++k) {
+      const FlagStyle& f = *lanes[k];
+      const double y = lanes_top + static_cast<double>(k) * (kLaneH + kLaneGap);
+      s += rect(kX0, y, kX1, y + kLaneH, "#eeeeee", 1.0);
+      for (const auto& [a, e] : flag_runs(t, status, f.flag, ax))
+        s += rect(ax.map(a, kX0, kX1), y, ax.map(e, kX0, kX1), y + kLaneH, f.colour, 0.95);
+      s += text(kX0 - 6, y + kLaneH - 1, info_of(f.flag).name, "end", " font-size=\"10\"");
+    }
+  }
+  const double axis_y = lanes_top + lanes_h + 14;
+  for (const svg::Tick& k : svg::ticks(ax, kX1 - kX0, true)) s += text(ax.map(k.value, kX0, kX1), axis_y, k.label, "middle");
+  s += text(kWidth / 2, axis_y + 17, "time (s)", "middle");
+  for (size_t r = 0; r < key_rows.size(); ++r) {
+    double x = kX0;
+    const double y = key_top + 16.0 * static_cast<double>(r);
+    for (size_t i : key_rows[r]) {
+      s += rect(x, y - 9, x + 10, y + 1, key[i].first->colour, 0.95);
+      s += text(x + 14, y, key[i].second, "start", " font-size=\"11\"");
+      x += 14 + 5.7 * static_cast<double>(key[i].second.size()) + 18;
+    }
+  }
+  s += "</svg>\n";
   return s;
 }
 

@@ -7,6 +7,7 @@
 
 #include "commands.hpp"
 #include "device.hpp"
+#include "lumavel/host/cli.hpp"
 #include "lumavel/host/config_text.hpp"
 #include "lumavel/protocol/lens.hpp"
 
@@ -112,22 +113,16 @@ bool same(const DeviceSetup& a, const DeviceSetup& b) {
   return std::equal(x, x + sizeof x, y) && a.lens[0] == b.lens[0] && a.lens[1] == b.lens[1];
 }
 
-int set_config(Device& dev, const std::vector<std::string>& args) {
-  DeviceSetup want = read_setup(dev);
-  for (size_t i = 1; i < args.size(); ++i) {
-    if (args[i] == "--file") {
-      if (i + 1 >= args.size()) throw std::runtime_error("--file needs a file name");
-      host::apply_settings_file(want, args[++i]);
-    } else {
-      host::apply_setting(want, args[i]);
-    }
-  }
-  host::seal_lens(want);
-  const proto::ConfigField f = proto::validate(want.config);
-  if (f != proto::ConfigField::kOk) {
-    std::fprintf(stderr, "lumavel-read config set: %s is out of range (nothing sent)\n", proto::to_string(f));
+int set_config(Device& dev, const host::GivenSettings& given) {
+  const DeviceSetup current = read_setup(dev);
+  const std::string why = host::check_settings(current, given);
+  if (!why.empty()) {
+    std::fprintf(stderr, "lumavel-read config set: %s (with the device's configuration; nothing sent)\n", why.c_str());
     return kExitRefused;
   }
+  DeviceSetup want = current;
+  given.apply_to(want);
+  host::seal_lens(want);
   uint8_t buf[proto::kConfigSize];
   proto::encode_config(want.config, buf, sizeof buf);
   // A set is idempotent: when the read-back shows it did not arrive (a lost
@@ -176,42 +171,34 @@ int set_config(Device& dev, const std::vector<std::string>& args) {
 
 }  // namespace
 
-int cmd_config(const Common& c, const std::vector<std::string>& args) {
-  if (args.empty() || wants_help(args)) {
-    std::printf("usage: lumavel-read [--backend B] [--device PATH] config get\n"
-                "       lumavel-read [--backend B] [--device PATH] config set [--file FILE] [KEY=VALUE...]\n"
-                "get prints the device's configuration as KEY=VALUE lines; set changes the\n"
-                "given keys (from FILE, KEY=VALUE lines as get prints them, # comments allowed,\n"
-                "then from the command line), checks every range before sending, sends the lens\n"
-                "tables and the whole configuration (versioned, CRC-protected), then reads back\n"
-                "and prints what is in force. The device validates again, applies and stores it.\nKeys:\n%s",
-                host::config_keys_help());
-    return args.empty() ? kExitUsage : kExitOk;
-  }
-  if (args[0] == "get" && args.size() == 1) {
-    Device dev(load_hidapi(c.backend), c.device);
-    std::fputs(host::format_setup(read_setup(dev)).c_str(), stdout);
-    return kExitOk;
-  }
-  if (args[0] != "set" || args.size() < 2) {
-    std::fprintf(stderr, "lumavel-read config: use `config get` or `config set [--file FILE] [KEY=VALUE...]`\n");
-    return kExitUsage;
-  }
-  // The file and the keys are checked before any device is opened.
-  DeviceSetup dry;
-  dry.config = proto::default_device_config();
-  dry.config.width = 0;  // unknown until the device answers, unless given
-  for (size_t i = 1; i < args.size(); ++i) {
-    if (args[i] == "--file") {
-      if (i + 1 >= args.size()) throw std::runtime_error("--file needs a file name");
-      host::apply_settings_file(dry, args[++i]);
-    } else {
-      host::apply_setting(dry, args[i]);
-    }
-  }
-  if (dry.config.width != 0) host::seal_lens(dry);  // table lengths against the width given
-  Device dev(load_hidapi(c.backend), c.device);
-  return set_config(dev, args);
+host::GivenSettings ConfigInput::read_and_check() const {
+  host::GivenSettings given;
+  for (const std::string& f : files) given.add_file(f);
+  for (const std::string& kv : settings) given.add(kv, "command line");
+  host::check_settings_offline(given);
+  return given;
+}
+
+int cmd_config_get(const Common& c) {
+  Device dev(load_hidapi(c.backend_kind()), c.device);
+  std::fputs(host::format_setup(read_setup(dev)).c_str(), stdout);
+  return kExitOk;
+}
+
+int cmd_config_set(const Common& c, const ConfigInput& in) {
+  if (in.files.empty() && in.settings.empty()) throw cli::UsageError("nothing to set: give --file FILE or KEY=VALUE");
+  const host::GivenSettings given = in.read_and_check();  // before any device is opened
+  Device dev(load_hidapi(c.backend_kind()), c.device);
+  return set_config(dev, given);
+}
+
+int cmd_config_check(const ConfigInput& in) {
+  if (in.files.empty() && in.settings.empty()) throw cli::UsageError("nothing to check: give --file FILE or KEY=VALUE");
+  const host::GivenSettings given = in.read_and_check();
+  std::printf("ok: %zu setting(s) checked", given.items.size());
+  for (const std::string& f : in.files) std::printf(", %s", f.c_str());
+  std::printf("\n");
+  return kExitOk;
 }
 
 }  // namespace lumavel::read

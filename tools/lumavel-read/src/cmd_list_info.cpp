@@ -11,25 +11,8 @@ namespace lumavel::read {
 
 namespace proto = lumavel::protocol;
 
-bool wants_help(const std::vector<std::string>& args) {
-  for (const std::string& a : args) {
-    if (a == "-h" || a == "--help") return true;
-  }
-  return false;
-}
-
-int cmd_list(const Common& c, const std::vector<std::string>& args) {
-  if (wants_help(args)) {
-    std::printf("usage: lumavel-read [--backend hidraw|libusb] list\n"
-                "Lists lumavel devices (USB 1209:0001, vendor usage page 0xFF00), one per line:\n"
-                "PATH  VID:PID  interface  manufacturer / product / serial.\n");
-    return kExitOk;
-  }
-  if (!args.empty()) {
-    std::fprintf(stderr, "lumavel-read list: unexpected argument \"%s\"\n", args[0].c_str());
-    return kExitUsage;
-  }
-  const HidApi& api = load_hidapi(c.backend);
+int cmd_list(const Common& c) {
+  const HidApi& api = load_hidapi(c.backend_kind());
   const auto found = list_devices(api);
   for (const DeviceEntry& e : found) {
     std::printf("%s  %04x:%04x  if %d  %s / %s / %s\n", e.path.c_str(), e.vid, e.pid,
@@ -38,22 +21,14 @@ int cmd_list(const Common& c, const std::vector<std::string>& args) {
   }
   if (found.empty()) {
     std::fprintf(stderr, "no lumavel device (1209:0001) found with the %s backend\n",
-                 backend_name(c.backend));
+                 backend_name(c.backend_kind()));
     return kExitNoDevice;
   }
   return kExitOk;
 }
 
-int cmd_info(const Common& c, const std::vector<std::string>& args) {
-  if (wants_help(args)) {
-    std::printf("usage: lumavel-read [--backend B] [--device PATH] info\n"
-                "Prints the device information report: firmware version, board, working\n"
-                "resolution, build capacities, the outcome of the last configuration set and of\n"
-                "the last lens piece, and which cameras have lens pieces uploaded that no\n"
-                "configuration set has taken yet (lens_upload_pending).\n");
-    return kExitOk;
-  }
-  Device dev(load_hidapi(c.backend), c.device);
+int cmd_info(const Common& c) {
+  Device dev(load_hidapi(c.backend_kind()), c.device);
   const auto raw = dev.get_feature(proto::kReportDeviceInfo, [](const uint8_t* b, size_t n) {
     proto::DeviceInfo d{};
     return proto::decode_device_info(b, n, d);

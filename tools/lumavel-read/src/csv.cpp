@@ -43,18 +43,10 @@ std::string csv_row(const protocol::Measurement& m) {
 }
 
 std::string status_names(uint16_t status) {
-  static const struct {
-    uint16_t bit;
-    const char* name;
-  } kNames[] = {{kStatusConverging, "CONVERGING"}, {kStatusLowTexture, "LOW_TEXTURE"},
-                {kStatusSaturated, "SATURATED"},   {kStatusFrameGap, "FRAME_GAP"},
-                {kStatusGyroGap, "GYRO_GAP"},      {kStatusNoLight, "NO_LIGHT"},
-                {kStatusRestarted, "RESTARTED"},   {kStatusStill, "STILL"},
-                {kStatusNoStereo, "NO_STEREO"}, {kStatusNoTof, "NO_TOF"}};
   if (status == 0) return "ok";
   std::string s;
-  for (const auto& n : kNames) {
-    if (status & n.bit) s += (s.empty() ? "" : "|") + std::string(n.name);
+  for (const StatusFlagInfo& n : kStatusFlags) {
+    if (status & n.flag) s += (s.empty() ? "" : "|") + std::string(n.name);
   }
   return s;
 }

@@ -1,85 +1,150 @@
 // lumavel-read: list, stream, inspect and configure lumavel HID devices.
+// The command line (CLI11, lumavel/host/cli.hpp); the commands are cmd_*.cpp.
 #include <cstdio>
-#include <exception>
+#include <functional>
+#include <memory>
 #include <string>
-#include <vector>
 
 #include "commands.hpp"
 #include "device.hpp"
+#include "lumavel/host/cli.hpp"
+
+#ifndef LUMAVEL_VERSION
+#define LUMAVEL_VERSION "unknown"
+#endif
 
 using namespace lumavel::read;
+namespace cli = lumavel::cli;
 
 namespace {
 
-void usage(std::FILE* f) {
-  std::fprintf(f,
-               "usage: lumavel-read [--backend hidraw|libusb] [--device PATH] COMMAND [args]\n"
-               "Talks to lumavel velocity sensors (USB HID 1209:0001) through hidapi.\n"
-               "commands:\n"
-               "  list                      lumavel devices seen by the backend\n"
-               "  stream [-o CSV] [-n N]    input reports as CSV, or a live line on a terminal\n"
-               "  info                      firmware version, board, working resolution\n"
-               "  config get                the configuration as KEY=VALUE lines\n"
-               "  config set KEY=VALUE...   change, validate, store and read back\n"
-               "  replay FILE [-o CSV]      decode a report file (lumavel-sim --hid file:FILE)\n"
-               "options:\n"
-               "  --backend hidraw|libusb   hidapi backend (default hidraw; libusb detaches the\n"
-               "                            kernel driver and reads the USB device directly)\n"
-               "  --device PATH             a path from `list` (default: the first device)\n"
-               "`lumavel-read COMMAND --help` describes each command.\n"
-               "exit status: 0 ok, 1 usage or other error, 2 malformed reports, 3 no device,\n"
-               "4 permission denied, 5 configuration refused.\n");
+const char* const kExitStatus =
+    "Exit status: 0 done, 1 bad input or failure (a configuration refused before\n"
+    "anything is sent, malformed reports, a file that cannot be written), 2 usage\n"
+    "error, 3 no device, 4 permission denied, 5 the device refused the\n"
+    "configuration.";
+
+// Device errors have exit codes of their own.
+cli::Action with_device_errors(std::function<int()> f) {
+  return [f] {
+    try {
+      return f();
+    } catch (const DeviceError& e) {
+      std::fprintf(stderr, "lumavel-read: %s\n", e.what());
+      switch (e.kind()) {
+        case DeviceErrorKind::kPermission: return static_cast<int>(kExitPermission);
+        case DeviceErrorKind::kNoDevice:
+        case DeviceErrorKind::kGone: return static_cast<int>(kExitNoDevice);
+        default: return static_cast<int>(kExitFailure);
+      }
+    }
+  };
+}
+
+void add_stream_options(CLI::App* c, StreamOptions& o, bool live_options) {
+  c->add_option("-o,--output", o.output, "write the CSV to FILE (nothing is left behind if it\ncannot be written)")
+      ->type_name("FILE");
+  c->add_option("-n,--count", o.count, "stop after N measurements")
+      ->type_name("N")
+      ->check(cli::whole_number_in(0, 1000000000000LL));
+  if (!live_options) return;
+  c->add_option("--timeout", o.timeout_s, "give up after S seconds without a report (default: never)")
+      ->type_name("S")
+      ->check(cli::number_in(0, 1e9));
+  c->add_flag("--no-reconnect", o.no_reconnect, "exit when the device goes away instead of waiting for it");
+  CLI::Option* live = c->add_flag("--live", o.live, "force the live line on");
+  CLI::Option* no_live = c->add_flag("--no-live", o.no_live, "force the live line off");
+  live->excludes(no_live);
+  c->add_flag("--csv", o.csv_on_tty, "CSV even on a terminal");
+}
+
+void add_config_input(CLI::App* c, ConfigInput& in) {
+  c->add_option("--file", in.files, "KEY=VALUE lines as `config get` prints them (# comments\nallowed); may be repeated")
+      ->type_name("FILE");
+  c->add_option("SETTINGS", in.settings, "KEY=VALUE settings, after the files")->type_name("KEY=VALUE...");
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  Common common;
-  std::vector<std::string> rest;
-  try {
-    int i = 1;
-    for (; i < argc; ++i) {
-      const std::string a = argv[i];
-      if (a == "-h" || a == "--help") {
-        usage(stdout);
-        return kExitOk;
-      } else if (a == "--backend" && i + 1 < argc) {
-        common.backend = parse_backend(argv[++i]);
-      } else if (a == "--device" && i + 1 < argc) {
-        common.device = argv[++i];
-      } else if (!a.empty() && a[0] == '-') {
-        std::fprintf(stderr, "lumavel-read: unknown or incomplete option %s\n", a.c_str());
-        usage(stderr);
-        return kExitUsage;
-      } else {
-        break;
-      }
-    }
-    if (i >= argc) {
-      usage(stderr);
-      return kExitUsage;
-    }
-    const std::string cmd = argv[i];
-    const std::vector<std::string> args(argv + i + 1, argv + argc);
-    if (cmd == "list") return cmd_list(common, args);
-    if (cmd == "stream") return cmd_stream(common, args);
-    if (cmd == "info") return cmd_info(common, args);
-    if (cmd == "config") return cmd_config(common, args);
-    if (cmd == "replay") return cmd_replay(common, args);
-    std::fprintf(stderr, "lumavel-read: unknown command \"%s\"\n", cmd.c_str());
-    usage(stderr);
-    return kExitUsage;
-  } catch (const DeviceError& e) {
-    std::fprintf(stderr, "lumavel-read: %s\n", e.what());
-    switch (e.kind()) {
-      case DeviceErrorKind::kPermission: return kExitPermission;
-      case DeviceErrorKind::kNoDevice:
-      case DeviceErrorKind::kGone: return kExitNoDevice;
-      case DeviceErrorKind::kProtocol: return kExitMalformed;
-      default: return kExitUsage;
-    }
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "lumavel-read: %s\n", e.what());
-    return kExitUsage;
-  }
+  cli::Tool tool("lumavel-read",
+                 "Talks to lumavel velocity sensors (USB HID 1209:0001) through hidapi.\n"
+                 "`lumavel-read COMMAND --help` describes each command.",
+                 LUMAVEL_VERSION, kExitStatus);
+  auto common = std::make_shared<Common>();
+  CLI::App& app = tool.app();
+  app.add_option("--backend", common->backend,
+                 "hidapi backend (default hidraw; libusb detaches the kernel\ndriver and reads the USB device directly)")
+      ->type_name("hidraw|libusb")
+      ->check(cli::one_of({"hidraw", "libusb"}));
+  app.add_option("--device", common->device, "a path from `list` (default: the first device)")->type_name("PATH");
+
+  tool.command("list",
+               "lumavel devices seen by the backend\n\n"
+               "Lists lumavel devices (USB 1209:0001, vendor usage page 0xFF00), one per line:\n"
+               "PATH  VID:PID  interface  manufacturer / product / serial.",
+               with_device_errors([common] { return cmd_list(*common); }));
+
+  auto stream = std::make_shared<StreamOptions>();
+  CLI::App* s = tool.command(
+      "stream",
+      "input reports as CSV, or a live line on a terminal\n\n"
+      "Reads input reports and writes them as CSV (header: timestamp_ns,v_xb_mps,\n"
+      "distance_m,heading_rad,status,gyro_offset_radps,frame_index,seq,overruns). When\n"
+      "stdout is a terminal it shows a live line (rate, V, distance, heading, status)\n"
+      "instead, unless --csv. Lost reports (sequence gaps), duplicated and malformed\n"
+      "reports are reported on stderr.",
+      with_device_errors([common, stream] { return cmd_stream(*common, *stream); }));
+  add_stream_options(s, *stream, true);
+
+  tool.command("info",
+               "firmware version, board, working resolution\n\n"
+               "Prints the device information report: firmware version, board, working\n"
+               "resolution, build capacities, the outcome of the last configuration set and of\n"
+               "the last lens piece, and which cameras have lens pieces uploaded that no\n"
+               "configuration set has taken yet (lens_upload_pending).",
+               with_device_errors([common] { return cmd_info(*common); }));
+
+  CLI::App* config = tool.command(tool.app(), "config",
+                                  "the configuration: get, set, or check a file offline\n\n"
+                                  "The device configuration as KEY=VALUE lines. Keys:\n" +
+                                      std::string(lumavel::host::config_keys_help()));
+  tool.command(*config, "get", "print the device's configuration as KEY=VALUE lines",
+               with_device_errors([common] { return cmd_config_get(*common); }));
+  auto set_in = std::make_shared<ConfigInput>();
+  CLI::App* set = tool.command(
+      *config, "set",
+      "change, validate, store and read back\n\n"
+      "Changes the given keys (from the files, then from the command line), checks\n"
+      "every range before any device is opened (as `config check`), then against the\n"
+      "device's configuration, sends the lens tables and the whole configuration\n"
+      "(versioned, CRC-protected), reads back and prints what is in force. The device\n"
+      "validates again, applies and stores it.",
+      with_device_errors([common, set_in] { return cmd_config_set(*common, *set_in); }));
+  add_config_input(set, *set_in);
+  auto check_in = std::make_shared<ConfigInput>();
+  CLI::App* check = tool.command(
+      *config, "check",
+      "check a configuration file and settings without any device\n\n"
+      "Checks the files and KEY=VALUE settings as `config set` does before it opens a\n"
+      "device: every value's form and range, and the rules between the keys given\n"
+      "(fu and cu against width, lens tables against width, max_gap_us against\n"
+      "frame_period_us). Keys not given are not checked. Prints \"ok\" or the refusal\n"
+      "(file, line, key, value, rule).",
+      [check_in] { return cmd_config_check(*check_in); });
+  add_config_input(check, *check_in);
+
+  auto replay = std::make_shared<StreamOptions>();
+  auto replay_file = std::make_shared<std::string>();
+  CLI::App* r = tool.command(
+      "replay",
+      "decode a report file (lumavel-sim run --hid file:FILE)\n\n"
+      "Decodes a report file (as written by `lumavel-sim run --hid file:FILE`) into the\n"
+      "same CSV as `stream`. Malformed reports are named (record, byte offset) on\n"
+      "stderr and make the exit status 1; the others are still written.",
+      [replay, replay_file] { return cmd_replay(*replay_file, *replay); });
+  r->add_option("FILE", *replay_file, "the report file")->required()->type_name("");
+  add_stream_options(r, *replay, false);
+
+  return tool.run(argc, argv);
 }

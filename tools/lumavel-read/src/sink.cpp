@@ -15,6 +15,7 @@ Sink::~Sink() { finish(); }
 
 void Sink::finish() {
   if (csv_ != nullptr) std::fflush(csv_);
+  csv_ = nullptr;  // once: the file may be closed after this
   if (live_) {
     std::fputc('\n', stdout);
     live_ = false;
@@ -35,9 +36,20 @@ bool Sink::take(const uint8_t* buf, size_t len, const std::string& where) {
   }
   if (have_seq_ && m.seq != next_seq_) {
     const unsigned gap = static_cast<uint16_t>(m.seq - next_seq_);
-    lost_ += gap;
-    std::fprintf(stderr, "%slost %u report(s) before seq %u (host too slow, or reconnect)\n",
-                 live_ ? "\n" : "", gap, unsigned{m.seq});
+    if (gap == 0xFFFFu) {  // the previous report again: not new data
+      ++duplicated_;
+      std::fprintf(stderr, "%sduplicated report %s: seq %u again, skipped\n", live_ ? "\n" : "", where.c_str(),
+                   unsigned{m.seq});
+      return false;
+    }
+    if (gap >= 0x8000u) {  // behind the expected one: not a loss
+      std::fprintf(stderr, "%sseq went back from %u to %u %s (the device restarted, or reports out of order)\n",
+                   live_ ? "\n" : "", unsigned{static_cast<uint16_t>(next_seq_ - 1)}, unsigned{m.seq}, where.c_str());
+    } else {
+      lost_ += gap;
+      std::fprintf(stderr, "%slost %u report(s) before seq %u %s (host too slow, or reconnect)\n",
+                   live_ ? "\n" : "", gap, unsigned{m.seq}, where.c_str());
+    }
   }
   have_seq_ = true;
   next_seq_ = static_cast<uint16_t>(m.seq + 1);

@@ -1,5 +1,6 @@
 // Where decoded input reports go: CSV (stdout or file), the live terminal
-// line, and the bookkeeping of lost (sequence gaps) and malformed reports.
+// line, and the bookkeeping of lost (sequence gaps), duplicated (a sequence
+// number seen again) and malformed reports.
 #pragma once
 #include <chrono>
 #include <cstdint>
@@ -23,6 +24,7 @@ class Sink {
   uint64_t measurements() const { return count_; }
   uint64_t malformed() const { return malformed_; }
   uint64_t lost() const { return lost_; }
+  uint64_t duplicated() const { return duplicated_; }
 
  private:
   void draw(const protocol::Measurement& m);
@@ -31,7 +33,7 @@ class Sink {
   bool live_;
   bool have_seq_ = false;
   uint16_t next_seq_ = 0;
-  uint64_t count_ = 0, malformed_ = 0, lost_ = 0;
+  uint64_t count_ = 0, malformed_ = 0, lost_ = 0, duplicated_ = 0;
   std::deque<std::chrono::steady_clock::time_point> window_;
   std::chrono::steady_clock::time_point last_draw_{};
 };

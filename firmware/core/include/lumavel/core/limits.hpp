@@ -23,6 +23,16 @@ constexpr int kMaxKernels = LUMAVEL_MAX_KERNELS;
 constexpr int kMaxKernelOrder = 3;
 constexpr int kTofFrames = LUMAVEL_TOF_FRAMES;
 static_assert(kTofFrames >= 4, "the time of flight needs a few frames of history");
+// The default working resolution: 40x30 (plenty for the method, cheap on a
+// microcontroller), or the sensor's own size on an axis where it is smaller
+// (a 20x15 sensor works at 20x15, a line scan at height 1). The one rule for
+// the host tools and the device defaults.
+constexpr int kDefaultColumns = 40;
+constexpr int kDefaultRows = 30;
+constexpr int default_columns(int sensor_columns) {
+  return sensor_columns < kDefaultColumns ? sensor_columns : kDefaultColumns;
+}
+constexpr int default_rows(int sensor_rows) { return sensor_rows < kDefaultRows ? sensor_rows : kDefaultRows; }
 static_assert(kMaxRows <= 128, "column sums must fit 15 bits");
 static_assert(kMaxColumns >= kMinColumns, "at least 16 columns");
 }  // namespace lumavel

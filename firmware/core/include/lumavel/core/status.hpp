@@ -23,5 +23,24 @@ enum StatusFlag : uint16_t {
 // Every bit defined above (a decoder refuses the others).
 constexpr uint16_t kKnownStatusFlags = 0x03FFu;
 
+// Every flag with its name (as lumavel-read prints it) and what it means in
+// words, in bit order: the one table for summaries, plots and readers.
+struct StatusFlagInfo {
+  StatusFlag flag;
+  const char* name;
+  const char* meaning;
+};
+inline constexpr StatusFlagInfo kStatusFlags[] = {
+    {kStatusConverging, "CONVERGING", "converging"},
+    {kStatusLowTexture, "LOW_TEXTURE", "low texture, V held"},
+    {kStatusSaturated, "SATURATED", "saturated pixels or arithmetic"},
+    {kStatusFrameGap, "FRAME_GAP", "frame gap"},
+    {kStatusGyroGap, "GYRO_GAP", "gyro gap"},
+    {kStatusNoLight, "NO_LIGHT", "no light, V held"},
+    {kStatusRestarted, "RESTARTED", "observer restarted"},
+    {kStatusStill, "STILL", "still, gyro offset learned"},
+    {kStatusNoStereo, "NO_STEREO", "both cameras the same image, V held"},
+    {kStatusNoTof, "NO_TOF", "no time of flight, differential alone"},
+};
 
 }  // namespace lumavel

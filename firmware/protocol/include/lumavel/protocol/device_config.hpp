@@ -97,6 +97,9 @@ enum class ConfigField : uint8_t {
   kStore,      // accepted but could not be persisted
 };
 const char* to_string(ConfigField f);
+// The range validate() holds the field to, in the units of the configuration
+// text (m, rad, px, us), e.g. "baseline |h| must be 0.001..1 m".
+const char* rule_of(ConfigField f);
 
 // First field out of range, kOk if none.
 ConfigField validate(const DeviceConfig& c);

@@ -18,9 +18,12 @@
 // a 50 deg view, so the extrapolation amplifies registration noise ~10x; a
 // gyro offset b adds b * (lag time) (see docs/results.md for figures).
 #pragma once
+#include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
+#include "lumavel/host/cli.hpp"
 #include "lumavel/host/recording.hpp"
 
 namespace lumavel::host {
@@ -30,6 +33,9 @@ struct CalibrationOptions {
   double max_shift_deg = 6;  // search range of the rotation
   int max_lag = 60;          // frames
   double min_correlation = 0.95;
+  // Called now and then with the stage ("reading frames", "registering"),
+  // the work done and the total; optional.
+  std::function<void(const char* stage, size_t done, size_t total)> progress;
 };
 
 struct Calibration {
@@ -37,13 +43,14 @@ struct Calibration {
   double uncertainty = 0;    // rad, 1 sigma of the median (from the spread over blocks of frames)
   size_t samples = 0;        // registered frame pairs used
   size_t candidates = 0;     // frames tried
+  int width = 0, height = 0;  // working size the frames were registered at
 };
 
 // Throws RecordingError for a bad recording, std::runtime_error when no
 // frame pair registers (no motion, no texture).
 Calibration calibrate_misalignment(const Recording& rec, const CalibrationOptions& opt = {});
 
-// `lumavel-sim calibrate REC ...`; argv[0] is "calibrate".
-int calibrate_main(int argc, char** argv);
+// Adds `lumavel-sim calibrate REC ...`.
+void add_calibrate_command(cli::Tool& tool);
 
 }  // namespace lumavel::host

@@ -24,6 +24,10 @@ class HidLinkError : public std::runtime_error {
 // Throws HidLinkError for an unknown spec or a device that cannot be opened.
 std::unique_ptr<hal::ReportLink> open_host_link(const std::string& spec);
 
+// Why `spec` is not a link spec ("" when it is one): for command-line
+// checks before anything is opened.
+std::string check_host_link_spec(const std::string& spec);
+
 // The accepted specs, for --help texts.
 const char* host_link_help();
 

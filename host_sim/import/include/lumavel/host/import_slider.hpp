@@ -6,6 +6,8 @@
 #include <cstddef>
 #include <string>
 
+#include "lumavel/host/cli.hpp"
+
 namespace lumavel::host {
 
 // Default baseline: above the frame spacing (~1.2 cm at the slider's
@@ -31,7 +33,9 @@ struct ImportSliderSummary {
 ImportSliderSummary import_slider(const std::string& data_dir, const std::string& out_rec,
                                   const ImportSliderOptions& options = {});
 
-// The command line; returns the exit status (0 done, 1 failure, 2 usage).
+// Adds `lumavel-sim import-slider` (exit status 0 done, 1 failure, 2 usage).
+void add_import_slider_command(cli::Tool& tool);
+// The command alone; argv[0] is "import-slider".
 int import_slider_main(int argc, char** argv);
 
 }  // namespace lumavel::host

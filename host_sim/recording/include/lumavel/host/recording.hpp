@@ -1,4 +1,4 @@
-// A recording in the EuRoC/ASL layout (the recording-format contract),
+// A recording in the EuRoC/ASL layout (docs/recording-format.md),
 // loaded and validated in one go: everything that can be checked without
 // decoding every frame is checked here; frames are checked as they are decoded.
 #pragma once

@@ -9,12 +9,16 @@
 namespace lumavel::host {
 
 struct WorkingSize {
-  int width = 40;
-  int height = 30;  // forced to 1 for line-scan input (sensor height 1)
+  int width = kDefaultColumns;
+  int height = kDefaultRows;  // forced to 1 for line-scan input (sensor height 1)
 };
 
 // Working resolution limits: those of the firmware core (limits.hpp).
 constexpr int kMinWorkWidth = kMinColumns, kMaxWorkWidth = kMaxColumns, kMaxWorkHeight = kMaxRows;
+
+// The default working size for a recording: 40x30, or cam0's own size on an
+// axis where it is smaller (limits.hpp, default_columns/default_rows).
+WorkingSize default_working_size(const Recording& rec);
 
 // Camera model of one camera at the working width. Throws RecordingError
 // naming the sensor.yaml when the optical axis is not horizontal.

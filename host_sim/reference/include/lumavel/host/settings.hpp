@@ -3,6 +3,7 @@
 // double reference engine directly, so the two see the same problem.
 #pragma once
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -42,11 +43,26 @@ struct EstimatorSettings {
   double still_min = 0.5;           // s of stillness before the offset is taken
 };
 
+// A setting the firmware configuration cannot take: what() names it, its
+// value and the rule ("frame period = 2 s: frame period must be 0.1 ms..1 s");
+// setting() is the EstimatorSettings member ("frame_period", "cam[1].fu",
+// "baseline", "kernels", ...), for callers that know where it came from.
+class SettingsError : public std::invalid_argument {
+ public:
+  SettingsError(std::string setting, const std::string& what)
+      : std::invalid_argument(what), setting_(std::move(setting)) {}
+  const std::string& setting() const { return setting_; }
+
+ private:
+  std::string setting_;
+};
+
 // Default kernel bank for a field of view (radians, horizontal).
 std::vector<KernelModel> default_kernels(double hfov);
 
-// Quantises to the firmware configuration. Throws std::invalid_argument
-// naming the field when a value does not fit its fixed-point format. Column
+// Quantises to the firmware configuration. Throws SettingsError naming the
+// field, its value and the rule when a value does not fit its fixed-point
+// format or is out of the core's range (validate()). Column
 // edge tables are checked too but not attached (edge_offsets stay nullptr):
 // attach to_fixed_edge_offsets() of each camera before configure().
 EstimatorConfig to_fixed_config(const EstimatorSettings& s);

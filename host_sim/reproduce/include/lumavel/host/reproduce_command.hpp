@@ -1,10 +1,11 @@
 // `lumavel-sim reproduce`: renders and runs the paper's studies and writes
 // docs/results.md (the paper's figures and ours side by side, both engines).
 #pragma once
+#include "lumavel/host/cli.hpp"
 
 namespace lumavel::host {
 
-// argv[0] is "reproduce". Returns the exit code (0 done, 1 failure, 2 usage).
-int reproduce_main(int argc, char** argv);
+// Adds `reproduce` to lumavel-sim (exit status 0 done, 1 failure, 2 usage).
+void add_reproduce_command(cli::Tool& tool);
 
 }  // namespace lumavel::host

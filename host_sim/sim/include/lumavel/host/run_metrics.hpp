@@ -2,6 +2,7 @@
 // (Zarrouati et al. 2012, eq. 22) plus the usual extras. Shared by `run` and
 // `reproduce`.
 #pragma once
+#include "lumavel/core/status.hpp"
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -32,6 +33,8 @@ struct RunMetrics {
   double mean_abs_after = 0;     // mean |err| after settle_s, m/s
   double mean_after = 0;         // mean signed err (bias) after settle_s, m/s
   size_t after_count = 0;        // points after settle_s with truth
+  size_t not_finite = 0;         // estimates that are NaN or infinite: left out of every figure
+  double span_s = 0;             // from the first point to the last, s
   MetricOptions options;
 };
 
@@ -39,7 +42,21 @@ struct RunMetrics {
 // interval), so E is a time average even across frame gaps.
 RunMetrics compute_metrics(const std::vector<TrackPoint>& track, const MetricOptions& options = {});
 
-// Multi-line human summary (no trailing newline).
+// Multi-line human summary (no trailing newline). A figure that cannot be
+// computed is replaced by why (no ground truth, too slow, too short), never
+// printed as nan or inf.
 std::string format_metrics(const RunMetrics& m);
+
+// How many points carry each status flag (lumavel::kStatusFlags order).
+struct FlagCounts {
+  size_t frames = 0;
+  size_t flagged = 0;   // points with any flag but CONVERGING, STILL and NO_TOF (which are not faults)
+  size_t count[sizeof(kStatusFlags) / sizeof(kStatusFlags[0])] = {};
+};
+FlagCounts count_flags(const std::vector<TrackPoint>& track);
+
+// "flags, frames of 600: SATURATED 600 (saturated pixels or arithmetic), ..."
+// or "flags, frames of 600: none raised" (no trailing newline).
+std::string format_flag_counts(const FlagCounts& c);
 
 }  // namespace lumavel::host

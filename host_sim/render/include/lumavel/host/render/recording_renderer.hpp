@@ -10,7 +10,7 @@ namespace lumavel::host::render {
 
 struct RenderOptions {
   int threads = 2;
-  bool progress = true;  // progress bar (only drawn when stderr is a terminal)
+  bool progress = true;  // progress on stderr (cli::Progress: a bar on a terminal, else a line every few seconds)
 };
 
 struct RenderSummary {
