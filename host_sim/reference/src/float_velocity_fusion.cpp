@@ -15,8 +15,13 @@ FloatFusionOutput FloatVelocityFusion::update(const FloatFusionInput& in) {
   const bool use_tof = tof.ok && tof.tau_ns < kTofMaxTau * 1e9;
   if (in.direct && std::fabs(in.v_direct) > kFusionResidualMinSpeed)
     residual_ += kFusionResidualGain * (in.residual - residual_);
-  const bool steady = std::fabs(accel_) * tof.tau_ns * 1e-9 < kFusionScaleMaxChange * std::fabs(tof.v);
-  if (use_tof && residual_ < kFusionScaleMaxResidual && steady) {
+  // The scale's measurement weighed by how clean and how steady (the core's comment).
+  if (scale_started_ && in.dt > 0) scale_var_ = std::min(scale_var_ + kFusionScaleWalk * in.dt, kFusionScaleStartVar);
+  const double change = std::fabs(accel_) * tof.tau_ns * 1e-9;
+  const double change_limit = kFusionScaleMaxChange * std::fabs(tof.v);
+  const double q_res = std::max(residual_, 0.0) / kFusionScaleMaxResidual;
+  const double q_change = change_limit > 0 ? change / change_limit : HUGE_VAL;
+  if (use_tof && q_res < kFusionScaleSoftCut && q_change < kFusionScaleSoftCut) {
     const double ratio = (in.y - tof.y_then) / (tof.direction * in.baseline);
     if (ratio > 0) {
       const double measured = std::clamp(ratio, kFusionScaleMin, kFusionScaleMax);
@@ -25,10 +30,10 @@ FloatFusionOutput FloatVelocityFusion::update(const FloatFusionInput& in) {
         scale_var_ = kFusionScaleStartVar;
         scale_started_ = true;
       }
-      scale_var_ += kFusionScaleWalk * in.dt;
-      const double sig = std::max(tof.sig, kFusionTofFloor);
+      const double sig = std::clamp(tof.sig, kFusionTofFloor, 1.0);
       const double frames = std::max(1.0, std::ceil(tof.tau_ns / (in.dt * 1e9)));
-      const double k = scale_var_ / (scale_var_ + 4 * sig * sig * frames);
+      const double penalty = 1 + std::pow(q_res, 4) + std::pow(q_change, 4);
+      const double k = scale_var_ / (scale_var_ + 4 * sig * sig * frames * penalty);
       scale_ = std::clamp(scale_ + k * (measured - scale_), kFusionScaleMin, kFusionScaleMax);
       scale_var_ *= 1 - k;
     }

@@ -51,15 +51,19 @@ constexpr double kFusionSpeedFloor = 0.003;
 constexpr double kFusionTofFloor = 0.01;
 constexpr double kFusionTofInflationGain = 0.02;
 constexpr double kFusionTofInflationMax = 100.0;
-// The differential's scale is learned from the time of flight only while its
-// residual ratio is below this (a clean differential), as a random walk of
-// this variance per second, from measurements whose variance is
-// 4 max(sig, kFusionTofFloor)^2 times the frames in the window (consecutive
-// frames share most of their window: one independent measurement per tau).
+// The differential's scale is learned from the time of flight where its
+// residual ratio is small against this (a clean differential), as a random
+// walk of this variance per second (never above the prior's), from
+// measurements whose variance is 4 max(sig, kFusionTofFloor)^2 times the
+// frames in the window (consecutive frames share most of their window: one
+// independent measurement per tau) ...
 constexpr double kFusionScaleMaxResidual = 0.02;
-// ... and while V changes by less than this fraction over the window (during
-// an acceleration the direct values lag it, which would read as a scale).
+// ... and where V changes little over the window against this fraction
+// (during an acceleration the direct values lag it, which reads as a scale).
+// Each ratio q to its limit multiplies that variance by 1 + q^4; beyond
+// kFusionScaleSoftCut the measurement is not used at all.
 constexpr double kFusionScaleMaxChange = 0.01;
+constexpr double kFusionScaleSoftCut = 3.0;
 constexpr double kFusionScaleWalk = 1e-4;
 constexpr double kFusionScaleStartVar = 1e-3;  // the prior: 1 +- 3 %
 constexpr double kFusionScaleMin = 0.5, kFusionScaleMax = 2.0;
