@@ -41,7 +41,7 @@ TEST(Cli, HelpAndVersion) {
   STRCMP_EQUAL("lumavel-sim " LUMAVEL_VERSION "\n", r.out.c_str());
   r = sim("run --help");
   LONGS_EQUAL(0, r.code);
-  for (const char* opt : {"--engine fixed|float", "-o, --output FILE", "--width W", "--height H", "--plot FILE.svg",
+  for (const char* opt : {"--engine fixed|float|vo", "-o, --output FILE", "--width W", "--height H", "--plot FILE.svg",
                           "--quiet", "exit status"})
     STRCMP_CONTAINS(opt, r.out.c_str());
 }
@@ -58,10 +58,17 @@ TEST(Cli, UsageErrorsExitTwo) {
   STRCMP_CONTAINS("missing the recording folder REC", r.err.c_str());
   r = sim("run rec --engine turbo");
   LONGS_EQUAL(2, r.code);
-  STRCMP_CONTAINS("--engine must be 'fixed' or 'float', not 'turbo'", r.err.c_str());
+  STRCMP_CONTAINS("--engine must be 'fixed', 'float' or 'vo', not 'turbo'", r.err.c_str());
   r = sim("run rec --width 12");
   LONGS_EQUAL(2, r.code);
   STRCMP_CONTAINS("--width must be in 16..160", r.err.c_str());
+  r = sim("run rec --width 240");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("--width must be in 16..160 (the firmware core's limit; --engine vo goes up to the sensor's width)",
+                  r.err.c_str());
+  r = sim("run rec --engine vo --width 4096");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("--width must be in 16..2048 with --engine vo", r.err.c_str());
   r = sim("run rec --height=4x");
   LONGS_EQUAL(2, r.code);
   STRCMP_CONTAINS("--height '4x' is not an integer", r.err.c_str());

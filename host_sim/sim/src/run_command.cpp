@@ -31,11 +31,19 @@ const char* const kRunHelp =
     "  timestamp_ns,v_xb_mps,distance_m,heading_rad,status,gyro_offset_radps,v_direct_mps,texture\n"
     "\n"
     "options:\n"
-    "  --engine fixed|float   estimator engine: the firmware's fixed-point core (default)\n"
-    "                         or the double-precision reference\n"
+    "  --engine fixed|float|vo\n"
+    "                         estimator engine: the firmware's fixed-point core (default),\n"
+    "                         the double-precision reference, or vo: a conventional\n"
+    "                         keypoint stereo visual odometry (OpenCV KLT, triangulation,\n"
+    "                         gyro-fixed rotation, RANSAC) for comparison, on the same\n"
+    "                         binned frames; it learns no gyro offset, and its 'texture'\n"
+    "                         column is the number of tracks that agreed on the motion\n"
     "  -o, --output FILE      write the CSV to FILE instead of standard output ('-')\n"
-    "  --width W              working resolution width, 16..160 (default 40)\n"
-    "  --height H             working resolution height, 1..128 (default 30; 1 for line-scan input)\n"
+    "  --width W              working resolution width, 16..160 (default 40); the vo engine\n"
+    "                         also runs unbinned at the sensor's own resolution (e.g.\n"
+    "                         --width 240 --height 180 on a 240x180 sensor)\n"
+    "  --height H             working resolution height, 1..128 (default 30; 1 for line-scan input);\n"
+    "                         the vo engine needs 12 or more (it refuses line-scan input)\n"
     "  --ignore-distortion    estimate as if the lenses were pinhole, ignoring the\n"
     "                         distortion_model and coefficients of sensor.yaml (by\n"
     "                         default the column angles come from the undistorted\n"
@@ -72,6 +80,10 @@ const char* const kRunHelp =
     "exit status: 0 done, 1 bad recording or failure (the message names the file and\n"
     "line or frame), 2 usage error\n";
 
+// The vo engine's native-resolution path: the recording's sensor size bounds
+// it further (run_settings).
+constexpr int kMaxVoWorkSize = 2048;
+
 struct RunArgs {
   std::string rec;
   std::string engine = "fixed";
@@ -102,7 +114,8 @@ RunArgs parse(int argc, char** argv) {
     } else if (arg == "--no-gyro-offset-learning") {
       a.gyro_offset_learning = false;
     } else if (option_value(argc, argv, i, "--engine", v)) {
-      if (v != "fixed" && v != "float") throw UsageError("--engine must be 'fixed' or 'float', not '" + v + "'");
+      if (v != "fixed" && v != "float" && v != "vo")
+        throw UsageError("--engine must be 'fixed', 'float' or 'vo', not '" + v + "'");
       a.engine = v;
     } else if (option_value(argc, argv, i, "-o", v) || option_value(argc, argv, i, "--output", v)) {
       a.output = v == "-" ? std::string() : v;  // "-": standard output
@@ -137,8 +150,19 @@ RunArgs parse(int argc, char** argv) {
   if (a.rec.empty()) throw UsageError("missing the recording folder REC");
   if (a.hid.empty() && (!a.hid_config.empty() || a.hid_linger_s != 0 || a.hid_wait_ms >= 0))
     throw UsageError("--hid-config, --hid-wait-ms and --hid-linger need --hid SPEC");
+  if (a.engine == "vo") {
+    // The sensors' sizes bound it when the recording is read.
+    if (a.size.width < kMinWorkWidth || a.size.width > kMaxVoWorkSize)
+      throw UsageError("--width must be in " + std::to_string(kMinWorkWidth) + ".." + std::to_string(kMaxVoWorkSize) +
+                       " with --engine vo");
+    if (a.size.height < 1 || a.size.height > kMaxVoWorkSize)
+      throw UsageError("--height must be in 1.." + std::to_string(kMaxVoWorkSize) + " with --engine vo");
+    return a;
+  }
   if (a.size.width < kMinWorkWidth || a.size.width > kMaxWorkWidth)
-    throw UsageError("--width must be in " + std::to_string(kMinWorkWidth) + ".." + std::to_string(kMaxWorkWidth));
+    throw UsageError("--width must be in " + std::to_string(kMinWorkWidth) + ".." + std::to_string(kMaxWorkWidth) +
+                     (a.size.width > kMaxWorkWidth ? " (the firmware core's limit; --engine vo goes up to the sensor's width)"
+                                                   : ""));
   if (a.size.height < 1 || a.size.height > kMaxWorkHeight)
     throw UsageError("--height must be in 1.." + std::to_string(kMaxWorkHeight));
   return a;
@@ -185,7 +209,9 @@ const char* lens_line(bool distorted, bool ignored) {
 // still (status bit kStatusStill: the offset was being learned).
 constexpr double kDegPerRad = 57.29577951308232;
 
-std::string gyro_offset_line(bool learning, const std::vector<TrackPoint>& track, double last_offset) {
+std::string gyro_offset_line(EngineKind engine, bool learning, const std::vector<TrackPoint>& track,
+                             double last_offset) {
+  if (engine == EngineKind::kVo) return "gyro offset: not learned (the vo engine takes the gyro as it reads)";
   if (!learning) return "gyro offset: not learned (--no-gyro-offset-learning)";
   double still_s = 0;
   for (size_t i = 1; i < track.size(); ++i)
@@ -231,7 +257,7 @@ int run(const RunArgs& a) {
     HidSenderOptions hid_options = hid_sender_options_for(a.hid);
     if (a.hid_wait_ms >= 0) hid_options.wait_ms = a.hid_wait_ms;
     hid = std::make_unique<HidSender>(open_host_link(a.hid), hid_options, std::move(store));
-    const EstimatorSettings settings = derive_settings(rec, options.size);
+    const EstimatorSettings settings = run_settings(rec, options);
     hid->set_resolution(static_cast<uint16_t>(settings.width), static_cast<uint16_t>(settings.height));
     options.sink = [&hid](const EngineEstimate& e) { hid->send(e.t_ns, e.v, e.distance, e.heading, e.status, e.gyro_offset); };
   }
@@ -271,16 +297,17 @@ int run(const RunArgs& a) {
     const double span = rec.frames.size() > 1
                             ? static_cast<double>(rec.frames.back().t_ns - rec.frames.front().t_ns) * 1e-9
                             : 0.0;
-    std::fprintf(stderr, "%s: %zu frame pairs over %.3f s, %s engine, %dx%d working, %.0f frames/s\n",
+    std::fprintf(stderr, "%s: %zu frame pairs over %.3f s, %s engine, %dx%d working, %.0f frames/s (engine %.1f us/frame)\n",
                  recording_name(a.rec).c_str(), result.frames, span, engine_name(options.engine),
                  result.width, result.height,
-                 result.wall_s > 0 ? static_cast<double>(result.frames) / result.wall_s : 0.0);
+                 result.wall_s > 0 ? static_cast<double>(result.frames) / result.wall_s : 0.0,
+                 result.frames ? 1e6 * result.step_s / static_cast<double>(result.frames) : 0.0);
     std::fprintf(stderr, "%s\n", gaps_line(rec).c_str());
     if (result.lens_distorted || a.ignore_distortion)
       std::fprintf(stderr, "%s\n", lens_line(result.lens_distorted, a.ignore_distortion));
     if (result.has_truth) std::fprintf(stderr, "%s\n", format_metrics(compute_metrics(result.track)).c_str());
     else std::fprintf(stderr, "no ground truth (state_groundtruth_estimate0/data.csv): no error figures\n");
-    std::fprintf(stderr, "%s\n", gyro_offset_line(a.gyro_offset_learning, result.track, last_offset).c_str());
+    std::fprintf(stderr, "%s\n", gyro_offset_line(options.engine, a.gyro_offset_learning, result.track, last_offset).c_str());
     if (want_plot) std::fprintf(stderr, "plot: %s\n", plot.c_str());
     if (hid) std::fprintf(stderr, "hid: %u reports sent through %s, %u overruns\n", hid->sent(), a.hid.c_str(), hid->overruns());
     if (hid && a.hid_linger_s != 0) {
