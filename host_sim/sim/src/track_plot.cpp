@@ -25,7 +25,9 @@ double nice_step(double range) {
 }
 
 Axis padded(double lo, double hi) {
-  if (!(hi > lo)) {
+  // A range of a few ulps is a constant: its tick step would be below the
+  // resolution of the values and the tick loops would never end.
+  if (!(hi - lo > 1e-9 * std::max({1.0, std::fabs(lo), std::fabs(hi)}))) {
     lo -= 0.5;
     hi += 0.5;
   }
