@@ -11,8 +11,9 @@ namespace lumavel::host::vo {
 
 struct VoParams {
   // --- features (Shi-Tomasi corners in cam0, tracked by pyramidal KLT) ---
-  // Enough points that the translation averages pixel noise down by ~10x,
-  // few enough that corners stay a window apart at 40x30.
+  // Up to a hundred or so agreeing tracks average KLT's noise down about
+  // 10x; more costs time for little. (At 40x30 the texture floor and the
+  // corner spacing leave 20-80 tracks anyway.)
   int max_features = 150;
   // Re-detect when fewer tracks than this fraction of max_features survive:
   // waiting for a few losses keeps tracks long (their stereo depth is then
@@ -23,16 +24,17 @@ struct VoParams {
   double corner_quality = 0.01;
   // Absolute texture floor: the smaller eigenvalue of the mean structure
   // tensor over the KLT window, as a gradient in gray levels per pixel.
-  // Cheap sensors have 1-2 gray levels of noise; pure noise of sigma 2 reads
-  // as about 1.3 here, and its "corners" would be tracked as motion: below
-  // 2.5 a window is not texture (untextured and dark frames raise the
-  // low-texture bit instead of producing V).
+  // Cheap sensors have 1-3 gray levels of noise; pure Gaussian noise reads
+  // 0.4 (sigma 1), 0.75 (sigma 2, at most 1.1) and 1.1 (sigma 3, at most
+  // 1.7) here, and its "corners" would be tracked as motion. 2.5, about 1.5x
+  // the worst noise reading: untextured and dark frames raise the
+  // low-texture bit instead of producing V.
   double min_gradient = 2.5;
 
   // --- tracking ---
   // Forward-backward consistency of every KLT track (temporal and stereo),
-  // in working pixels: 10x the sub-pixel accuracy KLT reaches on these
-  // images, far below a mismatch.
+  // in working pixels: 10-30x the accuracy KLT reaches on these images
+  // (0.01-0.03 px), far below a mismatch.
   double max_forward_backward_px = 0.3;
   // Stereo matches must lie on the epipolar line of the calibrated rig
   // within this (Sampson distance, working pixels): the calibration error of
