@@ -1,5 +1,6 @@
 #include <CppUTest/TestHarness.h>
 
+#include <initializer_list>
 #include <vector>
 
 #include "lumavel/core/column_profile.hpp"
@@ -9,7 +10,7 @@ using namespace lumavel;
 TEST_GROUP(ColumnProfile){};
 
 TEST(ColumnProfile, SumsEveryColumnWhateverTheWidth) {
-  for (uint16_t w : {16, 17, 18, 19, 40, 159, 160}) {
+  for (const uint16_t w : std::initializer_list<uint16_t>{16, 17, 18, 19, 40, 159, 160}) {
     const uint16_t h = 7, stride = static_cast<uint16_t>(w + 3);
     std::vector<uint8_t> img(static_cast<size_t>(stride) * h, 0xEE);
     for (uint16_t y = 0; y < h; ++y)
