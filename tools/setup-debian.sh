@@ -8,6 +8,9 @@ packages=(
   build-essential cmake pkg-config cpputest libeigen3-dev libbenchmark-dev libcli11-dev
   # recordings, scenarios, images; plots drawn to PNG in the tests
   libpng-dev libyaml-cpp-dev librsvg2-bin
+  # the keypoint stereo VO baseline (host only): the OpenCV modules it uses,
+  # not libopencv-dev, which pulls every module and its dependencies
+  libopencv-core-dev libopencv-imgproc-dev libopencv-video-dev libopencv-calib3d-dev
   # USB HID readout and the kernel-in-the-loop test
   libhidapi-dev libusb-1.0-0-dev qemu-system-x86 busybox-static cpio xz-utils kmod
   # fuzzing (libFuzzer)

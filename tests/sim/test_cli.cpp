@@ -44,7 +44,7 @@ TEST(Cli, HelpAndVersion) {
   STRCMP_EQUAL("lumavel-sim " LUMAVEL_VERSION "\n", r.out.c_str());
   r = sim("run --help");
   LONGS_EQUAL(0, r.code);
-  for (const char* opt : {"--engine fixed|float", "-o,--output FILE", "--width W", "--height H", "--plot FILE.svg",
+  for (const char* opt : {"--engine fixed|float|vo", "-o,--output FILE", "--width W", "--height H", "--plot FILE.svg",
                           "--hid SPEC", "--hid-config FILE", "--hid-wait-ms N", "--hid-linger S", "--quiet",
                           "--ignore-distortion", "--no-gyro-offset-learning", "Exit status"})
     STRCMP_CONTAINS(opt, r.out.c_str());
@@ -75,13 +75,22 @@ TEST(Cli, UsageErrorsExitTwo) {
   STRCMP_CONTAINS("lumavel-sim run: REC is required", r.err.c_str());
   r = sim("run rec --engine turbo");
   LONGS_EQUAL(2, r.code);
-  STRCMP_CONTAINS("--engine: unknown engine 'turbo' (expected fixed or float)", r.err.c_str());
+  STRCMP_CONTAINS("--engine: unknown engine 'turbo' (expected fixed, float or vo)", r.err.c_str());
   r = sim("run rec --width 12");
   LONGS_EQUAL(2, r.code);
-  STRCMP_CONTAINS("--width: must be a whole number in 16..160, not '12'", r.err.c_str());
+  STRCMP_CONTAINS("--width: must be a whole number in 16..2048 (above 160 only with --engine vo), not '12'", r.err.c_str());
+  r = sim("run rec --width 240");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("--width: must be a whole number in 16..160 (the firmware core's limit; --engine vo goes up to the "
+                  "sensor's width), not '240'",
+                  r.err.c_str());
+  r = sim("run rec --engine vo --width 4096");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("--width: must be a whole number in 16..2048 (above 160 only with --engine vo), not '4096'",
+                  r.err.c_str());
   r = sim("run rec --height=4x");
   LONGS_EQUAL(2, r.code);
-  STRCMP_CONTAINS("--height: must be a whole number in 1..128, not '4x'", r.err.c_str());
+  STRCMP_CONTAINS("--height: must be a whole number in 1..2048 (above 128 only with --engine vo), not '4x'", r.err.c_str());
   r = sim("run rec --frobnicate");
   LONGS_EQUAL(2, r.code);
   STRCMP_CONTAINS("not expected: --frobnicate", r.err.c_str());

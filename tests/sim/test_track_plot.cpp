@@ -60,6 +60,13 @@ TEST(TrackPlot, EmptyAndConstantTracksStillMakeAPicture) {
   CHECK(track_svg({}, "x").find("</svg>") != std::string::npos);
   std::vector<TrackPoint> flat = {{0, 1, 1}, {10, 1, 1}};
   CHECK(track_svg(flat, "x").find("nan") == std::string::npos);
+  // Values a few ulps apart (a held V against a truth from interpolation):
+  // once an endless tick loop that filled the memory.
+  const double one = 1.0, next = std::nextafter(std::nextafter(1.0, 2.0), 2.0);
+  std::vector<TrackPoint> ulps = {{0, 0, one}, {10000000, 0, next}, {20000000, 0, one}};
+  const std::string svg = track_svg(ulps, "x");
+  CHECK(svg.find("</svg>") != std::string::npos);
+  CHECK(svg.size() < 20000);
 }
 
 namespace {

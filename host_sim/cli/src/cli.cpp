@@ -145,12 +145,13 @@ int run_command_alone(const std::string& tool_name, const std::function<void(Too
   return tool.run(static_cast<int>(args.size()), args.data());
 }
 
-CLI::Validator whole_number_in(long long lo, long long hi) {
+CLI::Validator whole_number_in(long long lo, long long hi, const std::string& note) {
   return CLI::Validator(
-      [lo, hi](std::string& s) -> std::string {
+      [lo, hi, note](std::string& s) -> std::string {
         long long v = 0;
         if (!parse_long(s, v) || v < lo || v > hi)
-          return "must be a whole number in " + std::to_string(lo) + ".." + std::to_string(hi) + ", not " + in_quotes(s);
+          return "must be a whole number in " + std::to_string(lo) + ".." + std::to_string(hi) + note + ", not " +
+                 in_quotes(s);
         return {};
       },
       "");

@@ -63,13 +63,23 @@ class FloatEngine final : public Engine {
 EngineKind parse_engine_kind(const std::string& name) {
   if (name == "fixed") return EngineKind::kFixed;
   if (name == "float") return EngineKind::kFloat;
-  throw std::invalid_argument("unknown engine '" + name + "' (expected fixed or float)");
+  if (name == "vo") return EngineKind::kVo;
+  throw std::invalid_argument("unknown engine '" + name + "' (expected fixed, float or vo)");
 }
 
-const char* engine_name(EngineKind k) { return k == EngineKind::kFixed ? "fixed" : "float"; }
+const char* engine_name(EngineKind k) {
+  switch (k) {
+    case EngineKind::kFixed: return "fixed";
+    case EngineKind::kFloat: return "float";
+    case EngineKind::kVo: return "vo";
+  }
+  return "?";
+}
 
 std::unique_ptr<Engine> make_engine(EngineKind kind, const EstimatorSettings& s) {
   if (kind == EngineKind::kFixed) return std::make_unique<FixedEngine>(s);
+  if (kind == EngineKind::kVo)
+    throw std::invalid_argument("the vo engine is built from a recording's camera models (make_vo_engine)");
   return std::make_unique<FloatEngine>(s);
 }
 

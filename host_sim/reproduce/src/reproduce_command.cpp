@@ -42,8 +42,9 @@ const char* const kDescription =
     "Renders the paper's studies (Section IV-B simulations, Table I resolutions,\n"
     "Table II exposures, the trolley, a turning run, untextured/dark/dropped\n"
     "frames, lens distortion, gyro offset), runs the fixed-point and the\n"
-    "double-precision engines on each and writes the paper's figures and ours side\n"
-    "by side to a results page, with plots in a folder next to it; then calibrates\n"
+    "double-precision engines and the keypoint stereo VO baseline (--engine vo) on\n"
+    "each and writes the paper's figures, the VO's and ours side by side to a\n"
+    "results page, with plots in a folder next to it; then calibrates\n"
     "the misalignment of rendered rigs and runs the real slider_depth recording when\n"
     "its data is there. Renders are cached in OUT between runs.\n"
     "\n"
@@ -150,6 +151,7 @@ CaseResult run_case(const Case& c, const Recording& rec, const WorkSize& w, Engi
   cr.rms_after = rms_after(r.track);
   cr.gaps = rec.gaps;
   cr.run_s = r.wall_s;
+  cr.step_us = r.frames ? 1e6 * r.step_s / static_cast<double>(r.frames) : 0;
   cr.gyro_offset = gyro_offset;
   cr.track = r.track;
   cr.rendered = {rec.cam[0].width, rec.cam[0].height};
@@ -188,8 +190,16 @@ int run(const Options& o) {
       cost_done += costs[i_case++];
       const Recording rec = load_recording(render_case(c, o));
       for (const WorkSize& w : c.work) {
-        for (EngineKind kind : {EngineKind::kFixed, EngineKind::kFloat}) {
-          CaseResult cr = run_case(c, rec, w, kind);
+        // The VO baseline runs beside both engines on the same frames.
+        for (EngineKind kind : {EngineKind::kFixed, EngineKind::kFloat, EngineKind::kVo}) {
+          CaseResult cr;
+          try {
+            cr = run_case(c, rec, w, kind);
+          } catch (const RecordingError& e) {
+            if (kind != EngineKind::kVo) throw;
+            std::fprintf(stderr, "    vo refused the rig: %s\n", e.what());  // its cells read "-"
+            continue;
+          }
           if (kind == EngineKind::kFixed && &w == &c.work.front()) {
             const std::string name = c.id + "_" + std::to_string(w.width) + "x" + std::to_string(w.height) + ".svg";
             write_track_svg((plot_dir / name).string(), cr.track,

@@ -119,7 +119,7 @@ std::string results_markdown(const std::vector<StudyResult>& results, const std:
   const bool quick = info.quick;
   std::ostringstream md, body;
   std::vector<Target> targets;
-  const EngineKind F = EngineKind::kFixed, D = EngineKind::kFloat;
+  const EngineKind F = EngineKind::kFixed, D = EngineKind::kFloat, VO = EngineKind::kVo;
 
   for (const StudyResult& sr : results) {
     const Study& st = sr.study;
@@ -137,15 +137,21 @@ std::string results_markdown(const std::vector<StudyResult>& results, const std:
       continue;
     }
     if (st.metric == "flags") {
-      body << "| case | frames | low texture | no light | frame gaps flagged | gaps in the recording | restarts | longest hold | V drift while held | recovery |\n"
-              "|---|---|---|---|---|---|---|---|---|---|\n";
+      body << "| case | frames | low texture | no light | frame gaps flagged | gaps in the recording | restarts | longest hold | V drift while held | recovery | fixed: E | VO: low texture | VO: no light | VO: recovery | VO: E |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
       for (const CaseResult& c : sr.cases) {
         if (c.engine != F) continue;
         const FlagBehaviour& b = c.behaviour;
+        const CaseResult* v = find(sr, c.c.id, c.work, VO);
+        auto recovery = [](double s) { return s < 0 ? std::string("never") : fmt("%.2f s", s); };
         body << "| " << c.c.label << " | " << b.frames << " | " << b.low_texture << " | " << b.no_light << " | "
              << b.frame_gaps << " | " << c.gaps.frame_gaps << " (" << c.gaps.frames_missing << " frames) | "
              << b.restarts << " | " << fmt("%.2f s", b.longest_hold_s) << " | " << fmt("%.4f m/s", b.drift_in_hold)
-             << " | " << (b.recovery_s < 0 ? std::string("never") : fmt("%.2f s", b.recovery_s)) << " |\n";
+             << " | " << recovery(b.recovery_s) << " | " << fmt("%.2f %%", c.metrics.e_percent) << " | "
+             << (v ? std::to_string(v->behaviour.low_texture) + " | " + std::to_string(v->behaviour.no_light) + " | " +
+                         recovery(v->behaviour.recovery_s) + " | " + fmt("%.2f %%", v->metrics.e_percent)
+                   : std::string("- | - | - | -"))
+             << " |\n";
         if (c.c.id == "untextured") {
           targets.push_back({"untextured: low-texture flag raised, V held", "flag on, V held",
                              std::to_string(b.low_texture) + " frames flagged, drift " + fmt("%.4f m/s", b.drift_in_hold),
@@ -159,19 +165,23 @@ std::string results_markdown(const std::vector<StudyResult>& results, const std:
     }
     const bool worst = st.metric == "worst", l1 = st.metric == "L1";
     const char* mname = worst ? "worst |err| after 1 s" : (l1 ? "L1 error" : "E (eq. 22)");
-    body << "| case | working | paper | fixed: " << mname << " | float: " << mname
-         << " | fixed: mean error after 1 s | fixed: RMS after 1 s | plot |\n|---|---|---|---|---|---|---|---|\n";
+    body << "| case | working | paper | VO: " << mname << " | fixed: " << mname << " | float: " << mname
+         << " | fixed: mean error after 1 s | fixed: RMS after 1 s | VO: us/frame | fixed: us/frame | plot |\n"
+            "|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const CaseResult& c : sr.cases) {
       if (c.engine != F) continue;
       const CaseResult* d = find(sr, c.c.id, c.work, D);
+      const CaseResult* v = find(sr, c.c.id, c.work, VO);
       auto value = [&](const RunMetrics& m) {
         return worst ? fmt("%.4f m/s", m.worst_after) : fmt("%.2f %%", l1 ? m.l1_percent : m.e_percent);
       };
       const std::string paper =
           c.c.paper_value < 0 ? "-" : (worst ? fmt("%.3f m/s", c.c.paper_value) : fmt("%.2f %%", c.c.paper_value));
-      body << "| " << c.c.label << " | " << size_name(c.work) << " | " << paper << " | " << value(c.metrics) << " | "
-           << (d ? value(d->metrics) : "-") << " | " << fmt("%+.2f %% of V", c.bias_percent) << " | "
-           << fmt("%.4f m/s", c.rms_after) << " | " << (c.plot.empty() ? "" : "[svg](" + c.plot + ")") << " |\n";
+      body << "| " << c.c.label << " | " << size_name(c.work) << " | " << paper << " | "
+           << (v ? value(v->metrics) : "-") << " | " << value(c.metrics) << " | " << (d ? value(d->metrics) : "-")
+           << " | " << fmt("%+.2f %% of V", c.bias_percent) << " | " << fmt("%.4f m/s", c.rms_after) << " | "
+           << (v ? fmt("%.0f", v->step_us) : "-") << " | " << fmt("%.1f", c.step_us) << " | "
+           << (c.plot.empty() ? "" : "[svg](" + c.plot + ")") << " |\n";
       // Targets of the issue.
       const std::string at = c.c.label + " at " + size_name(c.work);
       const RunMetrics& m = c.metrics;
@@ -221,9 +231,13 @@ std::string results_markdown(const std::vector<StudyResult>& results, const std:
                              : std::string())
      << "). Every recording is rendered by `lumavel-sim render` from "
         "`host_sim/scenarios/`; both engines run on the same frames: `fixed` is the firmware core "
-        "(integer only), `float` the double-precision reference. E is the paper's eq. 22 (time average "
+        "(integer only), `float` the double-precision reference. `VO` is a conventional keypoint stereo "
+        "visual odometry (OpenCV KLT features, triangulation, rotation from the gyro, RANSAC; "
+        "`run --engine vo`, host_sim/vo) on the same binned frames, with the same output filter "
+        "(tau = 0.1 s): the peer a user would otherwise build. E is the paper's eq. 22 (time average "
         "of |V_est - V| / |V|, samples with |V| < 0.05 m/s left out), from the first frame on: "
-        "convergence is included, as in the paper.\n\n";
+        "convergence is included, as in the paper. us/frame: engine compute time per frame (push_gyro "
+         "and step, one thread, during the run; docs/benchmarks.md has it measured alone).\n\n";
   if (quick)
     md << "**Quick subset** (CI): fewer cases and resolutions, shortened runs; each study says what this run "
           "rendered and ran. These are not the full study's figures: a target met here may be missed by the full "

@@ -33,6 +33,7 @@ struct CaseResult {
   FlagBehaviour behaviour;
   GapReport gaps;
   double run_s = 0;
+  double step_us = 0;       // engine compute time per frame (push_gyro + step), microseconds
   double bias_percent = 0;  // mean signed error after 1 s over mean |V| after 1 s
   double rms_after = 0;     // RMS error after 1 s, m/s
   std::string plot;  // relative to the results page, fixed engine only

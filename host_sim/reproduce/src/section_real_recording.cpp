@@ -53,7 +53,7 @@ Section real_recording_section(const SectionContext& ctx) {
         "\"Corrected\" derives the column angles from sensor.yaml's distortion; \"ignored\" runs as if the "
         "lens were pinhole (`run --ignore-distortion`).\n\n"
         "Commands: `lumavel-sim import-slider DATA REC [--baseline H]`, then `lumavel-sim run REC [--engine "
-        "float] [--width 80 --height 60] [--ignore-distortion]`.\n\n";
+        "float|vo] [--width 80 --height 60] [--ignore-distortion]`.\n\n";
   const std::string rec_dir = ctx.out + "/rec/slider_h002";
   fs::remove_all(rec_dir);
   std::fprintf(stderr, "[real] import %s\n", ctx.slider_data.c_str());
@@ -64,22 +64,27 @@ Section real_recording_section(const SectionContext& ctx) {
      << "| engine | working | E corrected | E ignored | bias after 1 s, corrected | bias after 1 s, ignored |\n"
      << "|---|---|---|---|---|---|\n";
   for (WorkingSize size : {WorkingSize{40, 30}, WorkingSize{80, 60}}) {
-    for (EngineKind kind : {EngineKind::kFixed, EngineKind::kFloat}) {
+    for (EngineKind kind : {EngineKind::kVo, EngineKind::kFixed, EngineKind::kFloat}) {
       const RunMetrics with = run_once(rec, kind, size, false), without = run_once(rec, kind, size, true);
       md << "| " << engine_name(kind) << " | " << size.width << "x" << size.height << " | "
          << fmt("%.2f %% | %.2f %% | %+.4f m/s | %+.4f m/s |\n", with.e_percent, without.e_percent, with.mean_after,
                 without.mean_after);
     }
   }
-  md << "\nBaseline sweep (fixed engine, 40x30, corrected):\n\n| h | pairs | E | bias after 1 s |\n|---|---|---|---|\n";
-  for (double h : {0.01, 0.015, 0.02, 0.03, 0.04, 0.06}) {
+  md << "\nBaseline sweep (40x30, corrected; VO: the keypoint stereo VO on the same frames, also at 80x60):\n\n"
+        "| h | pairs | VO: E | fixed: E | fixed: bias after 1 s | VO: E at 80x60 |\n|---|---|---|---|---|---|\n";
+  for (double h : {0.01, 0.015, 0.02, 0.03, 0.04, 0.06, 0.08}) {
     const std::string dir = ctx.out + "/rec/slider_sweep";
     fs::remove_all(dir);
     ImportSliderOptions o;
     o.baseline = h;
     const ImportSliderSummary s = import_slider(ctx.slider_data, dir, o);
-    const RunMetrics m = run_once(load_recording(dir), EngineKind::kFixed, {40, 30}, false);
-    md << fmt("| %.3f m | ", h) << s.pairs << fmt(" | %.2f %% | %+.4f m/s |\n", m.e_percent, m.mean_after);
+    const Recording sweep = load_recording(dir);
+    const RunMetrics m = run_once(sweep, EngineKind::kFixed, {40, 30}, false);
+    const RunMetrics v = run_once(sweep, EngineKind::kVo, {40, 30}, false);
+    const RunMetrics v80 = run_once(sweep, EngineKind::kVo, {80, 60}, false);
+    md << fmt("| %.3f m | ", h) << s.pairs
+       << fmt(" | %.2f %% | %.2f %% | %+.4f m/s | %.2f %% |\n", v.e_percent, m.e_percent, m.mean_after, v80.e_percent);
   }
   md << "\nReading: the lens correction changes E by a few hundredths of a point here. Both cameras share the "
         "lens and the motion is a pure translation, where the column-angle error cancels between the temporal "

@@ -62,7 +62,8 @@ Study lens_study(bool quick) {
            "geometry, the default) and read as pinhole (`run --ignore-distortion`). Cells: E (eq. 22) / "
            "worst |err| after 1 s (m/s) / mean error after 1 s (m/s), fixed engine; E is undefined for "
            "the spin in place (V = 1 mm/s). Read as pinhole, a lens leaves a spurious V in the rotation "
-           "term, proportional to the yaw rate.",
+           "term, proportional to the yaw rate. VO: the keypoint stereo VO undistorting its points with "
+           "sensor.yaml's lens model (corrected) and without it (ignored).",
            "lens",
            {}};
   const std::vector<WorkSize> work = quick ? std::vector<WorkSize>{{40, 30}} : std::vector<WorkSize>{{40, 30}, {160, 120}};
@@ -97,8 +98,9 @@ std::string lens_table(const StudyResult& sr) {
     return nullptr;
   };
   std::ostringstream md;
-  md << "| scene | working | undistorted | distorted, corrected | distorted, ignored | float: corrected E |\n"
-        "|---|---|---|---|---|---|\n";
+  md << "| scene | working | undistorted | distorted, corrected | distorted, ignored | float: corrected E | "
+        "VO: corrected / ignored E |\n"
+        "|---|---|---|---|---|---|---|\n";
   for (const LensScene& s : kScenes) {
     const std::string id = s.id;
     for (const CaseResult& c : sr.cases)
@@ -106,11 +108,16 @@ std::string lens_table(const StudyResult& sr) {
         const WorkSize w = c.work;
         const bool e_defined = c.metrics.samples > c.metrics.excluded_slow;
         const CaseResult* fc = find(id + kCorrected, w, EngineKind::kFloat);
-        char fe[32] = "-";
+        char fe[32] = "-", ve[64] = "-";
         if (fc && e_defined) std::snprintf(fe, sizeof fe, "%.2f %%", fc->metrics.e_percent);
+        const CaseResult* vc = find(id + kCorrected, w, EngineKind::kVo);
+        const CaseResult* vi = find(id + kIgnored, w, EngineKind::kVo);
+        if (vc && vi && e_defined)
+          std::snprintf(ve, sizeof ve, "%.2f %% / %.2f %%", vc->metrics.e_percent, vi->metrics.e_percent);
         md << "| " << s.label << " | " << w.width << "x" << w.height << " | "
            << cell(find(id + kUndistorted, w, EngineKind::kFixed), e_defined) << " | " << cell(&c, e_defined)
-           << " | " << cell(find(id + kIgnored, w, EngineKind::kFixed), e_defined) << " | " << fe << " |\n";
+           << " | " << cell(find(id + kIgnored, w, EngineKind::kFixed), e_defined) << " | " << fe << " | " << ve
+           << " |\n";
       }
   }
   md << "\nPlots (fixed engine, first working size):";

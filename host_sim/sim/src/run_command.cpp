@@ -37,6 +37,10 @@ const char* const kRunDescription =
     "why there is no figure); last, the gyro zero-rate offset learned at standstill\n"
     "(or why none was).";
 
+// The vo engine's native-resolution path: the recording's sensor size bounds
+// it further (run_settings).
+constexpr int kMaxVoWorkSize = 2048;
+
 struct RunArgs {
   std::string rec;
   std::string engine = "fixed";
@@ -133,7 +137,9 @@ const char* lens_line(bool distorted, bool ignored) {
 // still (status bit kStatusStill: the offset was being learned).
 constexpr double kDegPerRad = 57.29577951308232;
 
-std::string gyro_offset_line(bool learning, const std::vector<TrackPoint>& track, double last_offset) {
+std::string gyro_offset_line(EngineKind engine, bool learning, const std::vector<TrackPoint>& track,
+                             double last_offset) {
+  if (engine == EngineKind::kVo) return "gyro offset: not learned (the vo engine takes the gyro as it reads)";
   if (!learning) return "gyro offset: not learned (--no-gyro-offset-learning)";
   double still_s = 0;
   for (size_t i = 1; i < track.size(); ++i)
@@ -167,9 +173,17 @@ void linger(HidSender& hid, double seconds) {
 int run(const RunArgs& a) {
   if (a.hid.empty() && (!a.hid_config.empty() || a.hid_linger_s != 0 || a.hid_wait_ms >= 0))
     throw cli::UsageError("--hid-config, --hid-wait-ms and --hid-linger need --hid SPEC");
-  const Recording rec = load_recording(a.rec);
   RunOptions options;
   options.engine = parse_engine_kind(a.engine);
+  if (options.engine != EngineKind::kVo && a.width > kMaxWorkWidth)
+    throw cli::UsageError("--width: must be a whole number in " + std::to_string(kMinWorkWidth) + ".." +
+                          std::to_string(kMaxWorkWidth) + " (the firmware core's limit; --engine vo goes up to the "
+                          "sensor's width), not '" + std::to_string(a.width) + "'");
+  if (options.engine != EngineKind::kVo && a.height > kMaxWorkHeight)
+    throw cli::UsageError("--height: must be a whole number in 1.." + std::to_string(kMaxWorkHeight) +
+                          " (the firmware core's limit; --engine vo goes up to the sensor's height), not '" +
+                          std::to_string(a.height) + "'");
+  const Recording rec = load_recording(a.rec);
   const WorkingSize fallback = default_working_size(rec);
   options.size = {a.width > 0 ? a.width : fallback.width, a.height > 0 ? a.height : fallback.height};
   options.ignore_distortion = a.ignore_distortion;
@@ -182,7 +196,7 @@ int run(const RunArgs& a) {
     HidSenderOptions hid_options = hid_sender_options_for(a.hid);
     if (a.hid_wait_ms >= 0) hid_options.wait_ms = a.hid_wait_ms;
     hid = std::make_unique<HidSender>(open_host_link(a.hid), hid_options, std::move(store));
-    const EstimatorSettings settings = derive_settings(rec, options.size);
+    const EstimatorSettings settings = run_settings(rec, options);
     hid->set_resolution(static_cast<uint16_t>(settings.width), static_cast<uint16_t>(settings.height));
     options.sink = [&hid](const EngineEstimate& e) { hid->send(e.t_ns, e.v, e.distance, e.heading, e.status, e.gyro_offset); };
   }
@@ -220,17 +234,18 @@ int run(const RunArgs& a) {
     const double span = rec.frames.size() > 1
                             ? static_cast<double>(rec.frames.back().t_ns - rec.frames.front().t_ns) * 1e-9
                             : 0.0;
-    std::fprintf(stderr, "%s: %zu frame pairs over %.3f s, %s engine, %dx%d working%s, %.0f frames/s\n",
+    std::fprintf(stderr, "%s: %zu frame pairs over %.3f s, %s engine, %dx%d working%s, %.0f frames/s (engine %.1f us/frame)\n",
                  recording_name(a.rec).c_str(), result.frames, span, engine_name(options.engine),
                  result.width, result.height, working_size_origin(a, rec).c_str(),
-                 result.wall_s > 0 ? static_cast<double>(result.frames) / result.wall_s : 0.0);
+                 result.wall_s > 0 ? static_cast<double>(result.frames) / result.wall_s : 0.0,
+                 result.frames ? 1e6 * result.step_s / static_cast<double>(result.frames) : 0.0);
     std::fprintf(stderr, "%s\n", gaps_line(rec).c_str());
     std::fprintf(stderr, "%s\n", format_flag_counts(count_flags(result.track)).c_str());
     if (result.lens_distorted || a.ignore_distortion)
       std::fprintf(stderr, "%s\n", lens_line(result.lens_distorted, a.ignore_distortion));
     if (result.has_truth) std::fprintf(stderr, "%s\n", format_metrics(compute_metrics(result.track)).c_str());
     else std::fprintf(stderr, "no ground truth (state_groundtruth_estimate0/data.csv): no error figures\n");
-    std::fprintf(stderr, "%s\n", gyro_offset_line(!a.no_gyro_offset_learning, result.track, last_offset).c_str());
+    std::fprintf(stderr, "%s\n", gyro_offset_line(options.engine, !a.no_gyro_offset_learning, result.track, last_offset).c_str());
     if (want_plot) std::fprintf(stderr, "plot: %s\n", plot.c_str());
     if (hid) std::fprintf(stderr, "hid: %u reports sent through %s, %u overruns\n", hid->sent(), a.hid.c_str(), hid->overruns());
     if (hid && a.hid_linger_s != 0) {
@@ -249,23 +264,31 @@ void add_run_command(cli::Tool& tool) {
   CLI::App* c = tool.command("run", kRunDescription, [a] { return run(*a); });
   c->add_option("REC", a->rec, "the recording folder (REC or REC/mav0)")->required()->type_name("");
   c->add_option("--engine", a->engine,
-                "estimator engine: the firmware's fixed-point core (default)\n"
-                "or the double-precision reference")
-      ->type_name("fixed|float")
+                "estimator engine: the firmware's fixed-point core (default),\n"
+                "the double-precision reference, or vo: a conventional\n"
+                "keypoint stereo visual odometry (OpenCV KLT, triangulation,\n"
+                "gyro-fixed rotation, RANSAC) for comparison, on the same\n"
+                "binned frames; it learns no gyro offset, and its 'texture'\n"
+                "column is the number of tracks that agreed on the motion")
+      ->type_name("fixed|float|vo")
       ->check(engine_kind());
   c->add_option("-o,--output", a->output, "write the CSV to FILE instead of standard output ('-')")
       ->type_name("FILE");
   c->add_option("--width", a->width,
                 "working resolution width, " + std::to_string(kMinWorkWidth) + ".." +
                     std::to_string(kMaxWorkWidth) + " (default " + std::to_string(kDefaultColumns) +
-                    ", or the\nsensor's width when smaller)")
+                    ", or the\nsensor's width when smaller); the vo engine also runs\nunbinned at the sensor's own size, up to " +
+                    std::to_string(kMaxVoWorkSize) + " (e.g. --width 240\n--height 180 on a 240x180 sensor)")
       ->type_name("W")
-      ->check(cli::whole_number_in(kMinWorkWidth, kMaxWorkWidth));
+      ->check(cli::whole_number_in(kMinWorkWidth, kMaxVoWorkSize,
+                                     " (above " + std::to_string(kMaxWorkWidth) + " only with --engine vo)"));
   c->add_option("--height", a->height,
                 "working resolution height, 1.." + std::to_string(kMaxWorkHeight) + " (default " +
-                    std::to_string(kDefaultRows) + ", or the\nsensor's height when smaller; 1 for line-scan input)")
+                    std::to_string(kDefaultRows) + ", or the\nsensor's height when smaller; 1 for line-scan input;\nthe vo engine needs 12 or more, up to " +
+                    std::to_string(kMaxVoWorkSize) + ")")
       ->type_name("H")
-      ->check(cli::whole_number_in(1, kMaxWorkHeight));
+      ->check(cli::whole_number_in(1, kMaxVoWorkSize,
+                                     " (above " + std::to_string(kMaxWorkHeight) + " only with --engine vo)"));
   c->add_flag("--ignore-distortion", a->ignore_distortion,
               "estimate as if the lenses were pinhole, ignoring the\n"
               "distortion_model and coefficients of sensor.yaml (by\n"

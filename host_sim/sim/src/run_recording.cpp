@@ -7,6 +7,8 @@
 #include "lumavel/host/file_camera.hpp"
 #include "lumavel/host/groundtruth.hpp"
 #include "lumavel/host/recording_layout.hpp"
+#include "lumavel/host/vo_engine.hpp"
+#include "native_camera.hpp"
 
 namespace lumavel::host {
 namespace {
@@ -70,7 +72,32 @@ const char* const kEstimatesHeader =
 
 bool has_lens_distortion(const EstimatorSettings& s) { return !s.cam[0].edges.empty() || !s.cam[1].edges.empty(); }
 
+bool has_lens_distortion(const Recording& rec) {
+  for (const CameraSensor& c : rec.cam)
+    for (double k : c.distortion)
+      if (k != 0) return true;
+  return false;
+}
+
 EstimatorSettings run_settings(const Recording& rec, const RunOptions& options) {
+  if (options.engine == EngineKind::kVo) {
+    // Frames are binned by lumavel::bin_area up to its 160 columns, or used
+    // as they are at the sensors' own size; nothing in between (that would
+    // need a second binning implementation).
+    const CameraSensor& c = rec.cam[0];
+    const bool native = options.size.width == c.width && options.size.height == c.height;
+    if (options.size.width > kMaxWorkWidth && !native)
+      throw recording_error_in(rec.root + "/" + layout::kCamDir[0] + "/sensor.yaml",
+                               "the vo engine runs at up to " + std::to_string(kMaxWorkWidth) +
+                                   " columns (binned like lumavel's engines) or unbinned at the sensor's resolution " +
+                                   std::to_string(c.width) + "x" + std::to_string(c.height) + ", not at " +
+                                   std::to_string(options.size.width) + "x" + std::to_string(options.size.height));
+    EstimatorSettings s;  // the VO reads its geometry from the recording itself
+    s.width = options.size.width;
+    s.height = options.size.height;
+    s.frame_period = rec.frame_period_s;
+    return s;
+  }
   EstimatorSettings s = derive_settings(rec, options.size);
   if (options.ignore_distortion)
     for (CameraModel& c : s.cam) c.edges.clear();  // no edge table: the engines use the pinhole columns
@@ -78,24 +105,38 @@ EstimatorSettings run_settings(const Recording& rec, const RunOptions& options) 
   return s;
 }
 
+std::unique_ptr<Engine> make_run_engine(const Recording& rec, const RunOptions& options,
+                                        const EstimatorSettings& settings) {
+  if (options.engine == EngineKind::kVo)
+    return make_vo_engine(rec, settings.width, settings.height, options.ignore_distortion);
+  return make_engine(options.engine, settings);
+}
+
 RunResult run_recording(const Recording& rec, const RunOptions& options, std::FILE* csv,
                         const std::function<void(size_t, size_t)>& progress) {
   const EstimatorSettings settings = run_settings(rec, options);
   std::unique_ptr<Engine> engine;
   try {
-    engine = make_engine(options.engine, settings);
+    engine = make_run_engine(rec, options, settings);
   } catch (const SettingsError& e) {
     throw RecordingError(source_of(rec, e.setting()) + ": " + e.what());
   }
   RunResult r = run_recording(rec, settings, *engine, options.decode_threads, csv, progress, options.sink);
-  r.lens_distorted = has_lens_distortion(derive_settings(rec, options.size));
+  r.lens_distorted = options.engine == EngineKind::kVo ? has_lens_distortion(rec)
+                                                       : has_lens_distortion(derive_settings(rec, options.size));
   return r;
 }
 
 RunResult run_recording(const Recording& rec, const EstimatorSettings& settings, Engine& engine,
                         int decode_threads, std::FILE* csv, const std::function<void(size_t, size_t)>& progress,
                         const EstimateSink& sink) {
-  FileStereoCamera camera(rec, settings.width, settings.height, decode_threads);
+  // Above the binner's 160 columns only the vo engine runs, at the sensors' size (run_settings).
+  std::unique_ptr<FileStereoCamera> binned;
+  std::unique_ptr<NativeStereoCamera> native;
+  if (settings.width > kMaxWorkWidth) native = std::make_unique<NativeStereoCamera>(rec);
+  else binned = std::make_unique<FileStereoCamera>(rec, settings.width, settings.height, decode_threads);
+  hal::StereoCamera& camera = native ? static_cast<hal::StereoCamera&>(*native) : *binned;
+  auto camera_error = [&] { return native ? native->error() : binned->error(); };
 
   RunResult result;
   result.has_truth = !rec.groundtruth.empty();
@@ -108,24 +149,29 @@ RunResult run_recording(const Recording& rec, const EstimatorSettings& settings,
   std::vector<uint8_t> buf0(n), buf1(n);
   hal::StereoImage img{0, {buf0.data(), buf1.data()}, 0, 0};
   size_t gyro = 0;
-  const auto start = std::chrono::steady_clock::now();
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  Clock::duration in_engine{};
   for (;;) {
     const hal::CaptureStatus st = camera.capture(img);
     if (st == hal::CaptureStatus::kEnd) break;
-    if (st == hal::CaptureStatus::kError) throw RecordingError(camera.error());
+    if (st == hal::CaptureStatus::kError) throw RecordingError(camera_error());
+    const auto engine_start = Clock::now();
     while (gyro < rec.imu_samples.size()) {
       const ImuSample& s = rec.imu_samples[gyro++];
       engine.push_gyro(s.t_ns, body_yaw_rate(rec.imu, s));
       if (s.t_ns >= img.t_ns) break;  // the first sample at or after the frame is the last pushed
     }
     const EngineEstimate e = engine.step(img.t_ns, buf0.data(), buf1.data());
+    in_engine += Clock::now() - engine_start;
     if (csv) write_row(csv, e, img.t_ns);
     if (sink) sink(e);
     result.track.push_back(TrackPoint{img.t_ns, e.v, std::nan(""), e.status});
     ++result.frames;
     if (progress && (result.frames & 255) == 0) progress(result.frames, rec.frames.size());
   }
-  result.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.wall_s = std::chrono::duration<double>(Clock::now() - start).count();
+  result.step_s = std::chrono::duration<double>(in_engine).count();
   if (result.has_truth) {
     std::vector<uint64_t> t;
     t.reserve(result.track.size());

@@ -68,7 +68,7 @@ int run_command_alone(const std::string& tool_name, const std::function<void(Too
                       char** argv);
 
 // Validators (the message names the rule and the value).
-CLI::Validator whole_number_in(long long lo, long long hi);
+CLI::Validator whole_number_in(long long lo, long long hi, const std::string& note = "");  // note: after the range
 CLI::Validator number_in(double lo, double hi);            // [lo, hi]
 CLI::Validator positive_number_up_to(double hi);           // (0, hi]
 CLI::Validator one_of(const std::vector<std::string>& words);

@@ -1,5 +1,7 @@
 // One interface over both estimator engines, so every host tool can select
-// the fixed-point firmware core or the double-precision reference.
+// the fixed-point firmware core or the double-precision reference; the same
+// interface carries the keypoint stereo VO baseline (host_sim/vo), which is
+// built from a recording rather than from EstimatorSettings.
 #pragma once
 #include <cstdint>
 #include <memory>
@@ -23,8 +25,8 @@ struct EngineEstimate {
   double scale = 1;           // the differential's learned scale against the time of flight
 };
 
-enum class EngineKind { kFixed, kFloat };
-EngineKind parse_engine_kind(const std::string& name);  // "fixed" | "float"; throws
+enum class EngineKind { kFixed, kFloat, kVo };
+EngineKind parse_engine_kind(const std::string& name);  // "fixed" | "float" | "vo"; throws
 const char* engine_name(EngineKind k);
 
 class Engine {
@@ -35,7 +37,9 @@ class Engine {
   virtual EngineEstimate step(uint64_t t_ns, const uint8_t* cam0, const uint8_t* cam1) = 0;
 };
 
-// Throws std::invalid_argument when the settings are out of range.
+// Throws std::invalid_argument when the settings are out of range, and for
+// kVo (make it with make_vo_engine from the recording: it needs the camera
+// models, which the settings do not carry).
 std::unique_ptr<Engine> make_engine(EngineKind kind, const EstimatorSettings& s);
 
 }  // namespace lumavel::host

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,8 @@ using EstimateSink = std::function<void(const EngineEstimate&)>;
 
 struct RunOptions {
   EngineKind engine = EngineKind::kFixed;
+  // Working size: up to kMaxWorkWidth x kMaxWorkHeight for lumavel's
+  // engines; the vo engine takes any size up to the sensor's.
   WorkingSize size;
   int decode_threads = 2;
   EstimateSink sink;  // optional
@@ -37,6 +40,7 @@ struct RunResult {
   int width = 0, height = 0;      // working resolution used
   bool lens_distorted = false;    // sensor.yaml gives a distortion (corrected unless ignored)
   double wall_s = 0;              // time spent in the frame loop
+  double step_s = 0;              // of which in the engine (push_gyro and step): its compute time
 };
 
 // Header of the estimates CSV (docs/estimates-csv.md).
@@ -44,11 +48,21 @@ extern const char* const kEstimatesHeader;
 
 // The settings `run_recording` uses for `rec`: derive_settings, with the
 // distortion tables dropped when options.ignore_distortion is set and the
-// gyro offset learning as options.gyro_offset_learning says.
+// gyro offset learning as options.gyro_offset_learning says. For the vo
+// engine only the working size is used (it is not checked against the core's
+// limits; the VO checks it against the sensors).
 EstimatorSettings run_settings(const Recording& rec, const RunOptions& options);
+
+// The engine `run_recording` drives: make_engine(options.engine, settings),
+// or for the vo engine make_vo_engine from the recording at the settings'
+// working size. Throws RecordingError or std::invalid_argument.
+std::unique_ptr<Engine> make_run_engine(const Recording& rec, const RunOptions& options,
+                                        const EstimatorSettings& settings);
 
 // Whether either camera has a column-edge table from a lens distortion.
 bool has_lens_distortion(const EstimatorSettings& s);
+// Whether either camera's sensor.yaml gives non-zero distortion coefficients.
+bool has_lens_distortion(const Recording& rec);
 
 // Runs the engine over `rec`. For each frame pair, pushes every gyro sample up
 // to and including the first one at or after the frame time, then steps.
