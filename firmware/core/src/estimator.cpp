@@ -1,5 +1,7 @@
 #include "lumavel/core/estimator.hpp"
 
+#include <algorithm>
+
 #include "lumavel/core/column_profile.hpp"
 #include "lumavel/core/fusion_params.hpp"
 #include "lumavel/core/imath.hpp"
@@ -52,7 +54,6 @@ void Estimator::reset() {
   tof_.reset();
   fusion_.reset();
   y_ = 0;
-  y_rem_ = 0;
   have_prev_ = false;
   cur_ = 0;
   prev_t_ns_ = 0;
@@ -141,10 +142,11 @@ Estimate Estimator::step(const FramePair& frames) {
       // an interval whose rotation is unknown).
       // (the direct value: the observer's filtered V lags an acceleration, which
       // would read as a scale error against the time of flight)
-      y_ = advance(y_, o.updated ? o.v_direct : o.v, dt_ns, &y_rem_);
+      // (dt held below 2^31 ns, so the product stays below 2^62; y wraps by design)
+      y_ += static_cast<TravelQ16Ns>(int64_t{o.updated ? o.v_direct : o.v} * std::min<int64_t>(dt_ns, int64_t{1} << 31));
       TofResult tof{};
       if (!gyro_saturated) {
-        TofFrame tf{};
+        TofFrame& tf = tof_.push();
         tf.t_ns = frames.t_ns;
         tf.heading = heading_;
         tf.y = y_;
@@ -153,7 +155,6 @@ Estimate Estimator::step(const FramePair& frames) {
             tf.f[i][k] = m.f[i][k];
             tf.r[i][k] = m.r[i][k];
           }
-        tof_.push(tf);
         tof = tof_.track({cfg_.baseline, tof_max_rotation_, fusion_.v(), m.count});
       }
       FusionInput fin{};

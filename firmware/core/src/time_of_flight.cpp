@@ -1,5 +1,7 @@
 #include "lumavel/core/time_of_flight.hpp"
 
+#include <algorithm>
+
 #include "lumavel/core/fusion_params.hpp"
 #include "lumavel/core/imath.hpp"
 
@@ -15,8 +17,12 @@ constexpr int64_t kGateFramesQ16 = fx::q_of(kTofTrackGateFrames, 16);
 constexpr int64_t kGateFractionQ16 = fx::q_of(kTofTrackGateFraction, 16);
 constexpr int64_t kAgreementQ16 = fx::q_of(kTofAcquireAgreement, 16);
 constexpr int64_t kAcquireMinSpeedQ16 = fx::q_of(kTofAcquireMinSpeed, fx::kSpeedFrac);
+constexpr int64_t kOneQ16 = int64_t{1} << 16;
 
 int64_t abs64(int64_t v) { return v < 0 ? -v : v; }
+int64_t clamp64(int64_t v, int64_t lo, int64_t hi) { return v < lo ? lo : (v > hi ? hi : v); }
+constexpr int64_t kDiffMaxQ24 = int64_t{1} << 28;  // two ValueQ28 differ by < 2^32, 2^28 in Q24
+static_assert(kMaxKernels <= 64, "the match's sums of squares (< 2^56 each) must stay below 2^62");
 
 // How far a tracked tau may move in one frame.
 int64_t gate_ns(int64_t tau_ns, int64_t frame_ns) {
@@ -34,17 +40,18 @@ SpeedQ16 speed_of(LengthQ24 h, int8_t direction, int64_t tau_ns) {
 
 void TimeOfFlight::reset() { *this = TimeOfFlight{}; }
 
-void TimeOfFlight::push(const TofFrame& frame) {
-  ring_[head_] = frame;
+TofFrame& TimeOfFlight::push() {
+  TofFrame& slot = ring_[head_];
   head_ = static_cast<uint16_t>((head_ + 1) % kTofFrames);
   if (count_ < kTofFrames) ++count_;
+  return slot;
 }
 
 const TofFrame& TimeOfFlight::at(uint16_t back) const {
   return ring_[(head_ + kTofFrames - 1 - back) % kTofFrames];
 }
 
-bool TimeOfFlight::search(const TofTrackInput& in, int trail, uint16_t first, uint16_t last, int64_t want_ns,
+bool TimeOfFlight::search(const TofTrackInput& in, int trail, int64_t want_ns, int64_t min_ns, int64_t max_ns,
                           Candidate& out) const {
   const int lead = 1 - trail;
   const TofFrame& now = at(0);
@@ -56,30 +63,40 @@ bool TimeOfFlight::search(const TofTrackInput& in, int trail, uint16_t first, ui
     motion += d * d;
   }
   bool found = false;
-  for (uint16_t back = first; back <= last && back + 1 < count_; ++back) {
+  int64_t best_dd = 1, best_span = 0;  // of the best segment, for its uncertainty
+  for (uint16_t back = 0; back + 1 < count_; ++back) {
     const TofFrame& b = at(back);
     const TofFrame& a = at(static_cast<uint16_t>(back + 1));
-    // Tracking: only segments whose time span reaches the wanted tau.
-    if (want_ns > 0) {
-      const int64_t lo = static_cast<int64_t>(now.t_ns - b.t_ns), hi = static_cast<int64_t>(now.t_ns - a.t_ns);
-      const int64_t g = gate_ns(want_ns, static_cast<int64_t>(now.t_ns - before.t_ns));
-      if (hi < want_ns - g || lo > want_ns + g) continue;
-    }
+    // Only segments whose time span reaches [min_ns, max_ns]; older ones lie further back.
+    const int64_t lo = static_cast<int64_t>(now.t_ns - b.t_ns), hi = static_cast<int64_t>(now.t_ns - a.t_ns);
+    if (lo > max_ns) break;
+    if (hi < min_ns) continue;
     const int64_t dth = now.heading - (a.heading + b.heading) / 2;
+    // Tracking: a segment whose whole span is no nearer to want_ns than the
+    // best candidate so far cannot hold a better one.
+    if (found && want_ns > 0) {
+      const int64_t nearest = want_ns < lo ? lo - want_ns : (want_ns > hi ? want_ns - hi : 0);
+      if (nearest >= abs64(abs64(out.stau_ns) - want_ns)) continue;
+    }
     if (abs64(dth) > in.max_rotation) continue;
+    // dth <= max_rotation < 2^31 in Q28; the differences below, in Q24, are
+    // held to the +-2^28 that two ValueQ28 can differ by, so that each product
+    // is one 32 x 32 -> 64 multiply and each sum of kMaxKernels terms < 2^62.
+    const int32_t dth32 = static_cast<int32_t>(dth);
     int64_t ee = 0, ed = 0, dd = 0;  // Q48
     for (uint8_t k = 0; k < in.count; ++k) {
       // The trail's outputs rotated back to the lead's heading: F - dtheta * mean(dF/dtheta).
-      const int64_t rb = (int64_t{now.r[trail][k]} + (int64_t{a.r[lead][k]} + b.r[lead][k]) / 2) / 2;  // Q20
-      const int64_t tv = int64_t{now.f[trail][k]} - fx::shr_round(dth * rb, fx::kSlopeFrac);           // Q28
-      const int64_t e = fx::shr_round(tv - a.f[lead][k], 4);
-      const int64_t d = fx::shr_round(int64_t{b.f[lead][k]} - a.f[lead][k], 4);
-      ee += e * e;
-      ed += e * d;
-      dd += d * d;
+      const int32_t rb = static_cast<int32_t>(
+          (int64_t{now.r[trail][k]} + (int64_t{a.r[lead][k]} + b.r[lead][k]) / 2) / 2);  // Q20
+      const int64_t tv = int64_t{now.f[trail][k]} - fx::shr_round(int64_t{dth32} * rb, fx::kSlopeFrac);  // Q28
+      const int32_t e = static_cast<int32_t>(clamp64(fx::shr_round(tv - a.f[lead][k], 4), -kDiffMaxQ24, kDiffMaxQ24));
+      const int32_t d = static_cast<int32_t>(fx::shr_round(int64_t{b.f[lead][k]} - a.f[lead][k], 4));
+      ee += int64_t{e} * e;
+      ed += int64_t{e} * d;
+      dd += int64_t{d} * d;
     }
     if (dd <= 0 || ed < 0 || ed > dd) continue;
-    const int64_t fr = fx::div_q(ed, dd, 16);  // Q16 in [0, 1]
+    const int64_t fr = fx::fraction_q16(ed, dd);  // Q16 in [0, 1] (0 <= ed <= dd)
     int64_t res = ee - fx::shr_round(fr * ed, 16);
     if (res < 0) res = 0;
     if (res > (kPathResidualSqQ16 * (dd >> 16)) || res > (kMotionResidualSqQ16 * (motion >> 16))) continue;
@@ -93,10 +110,14 @@ bool TimeOfFlight::search(const TofTrackInput& in, int trail, uint16_t first, ui
     found = true;
     out.stau_ns = stau;
     out.res = res;
+    best_dd = dd;
+    best_span = span;
+    out.y_then = a.y + static_cast<TravelQ16Ns>((fx::travel_between(b.y, a.y) * fr) >> 16);
+  }
+  if (found) {
     // Timing uncertainty: the residual over the segment's step, in frames, times the step.
-    const uint32_t sig_q16 = fx::isqrt32(static_cast<uint32_t>(fx::div_q(res, dd, 32)));
-    out.sig_ns = (span * int64_t{sig_q16}) >> 16;
-    out.y_then = a.y + (((b.y - a.y) * fr) >> 16);
+    const uint32_t sig_q16 = fx::isqrt32(static_cast<uint32_t>(fx::div_q(out.res, best_dd, 32)));
+    out.sig_ns = (best_span * int64_t{sig_q16}) >> 16;
   }
   return found;
 }
@@ -107,31 +128,42 @@ TofResult TimeOfFlight::track(const TofTrackInput& in) {
     misses_ = 255;
     return r;
   }
-  const uint16_t last = static_cast<uint16_t>(count_ - 2);
   const int64_t frame_ns = static_cast<int64_t>(at(0).t_ns - at(1).t_ns);
   Candidate pick{};
   bool have = false;
   if (misses_ < kTofTrackMisses) {
     Candidate c{};
     const int trail = track_ns_ > 0 ? 0 : 1;
-    if (search(in, trail, 0, last, abs64(track_ns_), c) &&
-        abs64(abs64(c.stau_ns) - abs64(track_ns_)) < gate_ns(track_ns_, frame_ns)) {
+    const int64_t want = abs64(track_ns_), g = gate_ns(want, frame_ns);
+    if (search(in, trail, want, want - g, want + g, c) && abs64(abs64(c.stau_ns) - want) < g) {
       pick = c;
       have = true;
     }
   }
   if (!have) {
     if (misses_ < 255) ++misses_;
-    // (Re)acquisition: the best candidate of either direction that agrees with
-    // the fused velocity, confirmed over several frames.
+    // (Re)acquisition: the best candidate that agrees with the fused velocity,
+    // confirmed over several frames. Above kTofAcquireMinSpeed only V's
+    // direction and the taus that agree with it are searched (the agreement
+    // is checked exactly below); at lower speeds both directions, every
+    // usable tau.
+    const int64_t vf = in.v_fused;
+    const bool guided = abs64(vf) > kAcquireMinSpeedQ16;
+    int64_t min_ns = 0, max_ns = kTofMaxTauNs;
+    if (guided) {
+      const int64_t num = int64_t{in.baseline < 0 ? -in.baseline : in.baseline} * 1000000000;  // Q24 m ns
+      const int64_t fast = ((kOneQ16 + kAgreementQ16) * abs64(vf)) >> 16, slow = ((kOneQ16 - kAgreementQ16) * abs64(vf)) >> 16;
+      min_ns = fx::div_q(num, fast * 256, 0) - frame_ns;
+      if (slow > 0) max_ns = std::min<int64_t>(max_ns, int64_t{fx::div_q(num, slow * 256, 0)} + frame_ns);
+    }
     Candidate best{};
     bool any = false;
     for (int trail = 0; trail < 2; ++trail) {
+      if (guided && (trail == 0) != (vf > 0)) continue;
       Candidate c{};
-      if (!search(in, trail, 0, last, 0, c)) continue;
+      if (!search(in, trail, 0, min_ns, max_ns, c)) continue;
       const SpeedQ16 v = speed_of(in.baseline, c.stau_ns > 0 ? 1 : -1, abs64(c.stau_ns));
-      const int64_t vf = in.v_fused;
-      if (abs64(vf) > kAcquireMinSpeedQ16 && abs64(int64_t{v} - vf) > ((kAgreementQ16 * abs64(vf)) >> 16)) continue;
+      if (guided && abs64(int64_t{v} - vf) > ((kAgreementQ16 * abs64(vf)) >> 16)) continue;
       if (!any || c.res < best.res) {
         best = c;
         any = true;

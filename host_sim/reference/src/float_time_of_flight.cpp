@@ -1,5 +1,6 @@
 #include "lumavel/host/float_time_of_flight.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "lumavel/core/fusion_params.hpp"
@@ -25,7 +26,8 @@ void FloatTimeOfFlight::push(const FloatTofFrame& frame) {
 
 const FloatTofFrame& FloatTimeOfFlight::at(size_t back) const { return ring_[ring_.size() - 1 - back]; }
 
-bool FloatTimeOfFlight::search(int trail, double max_rotation, double want_ns, Candidate& out) const {
+bool FloatTimeOfFlight::search(int trail, double max_rotation, double want_ns, double min_ns, double max_ns,
+                               Candidate& out) const {
   const int lead = 1 - trail;
   const FloatTofFrame& now = at(0);
   const FloatTofFrame& before = at(1);
@@ -34,10 +36,12 @@ bool FloatTimeOfFlight::search(int trail, double max_rotation, double want_ns, C
   for (size_t back = 0; back + 1 < ring_.size(); ++back) {
     const FloatTofFrame& b = at(back);
     const FloatTofFrame& a = at(back + 1);
-    if (want_ns > 0) {
-      const double lo = static_cast<double>(now.t_ns - b.t_ns), hi = static_cast<double>(now.t_ns - a.t_ns);
-      const double g = gate_ns(want_ns, static_cast<double>(now.t_ns - before.t_ns));
-      if (hi < want_ns - g || lo > want_ns + g) continue;
+    const double lo = static_cast<double>(now.t_ns - b.t_ns), hi = static_cast<double>(now.t_ns - a.t_ns);
+    if (lo > max_ns) break;
+    if (hi < min_ns) continue;
+    if (found && want_ns > 0) {  // pruned as in the core: no nearer candidate in this span
+      const double nearest = want_ns < lo ? lo - want_ns : (want_ns > hi ? want_ns - hi : 0);
+      if (nearest >= std::fabs(std::fabs(out.stau_ns) - want_ns)) continue;
     }
     const double dth = now.heading - (a.heading + b.heading) / 2;
     if (std::fabs(dth) > max_rotation) continue;
@@ -79,22 +83,29 @@ FloatTofResult FloatTimeOfFlight::track(double baseline, double max_rotation, do
   if (misses_ < kTofTrackMisses) {
     Candidate c;
     const int trail = track_ns_ > 0 ? 0 : 1;
-    if (search(trail, max_rotation, std::fabs(track_ns_), c) &&
-        std::fabs(std::fabs(c.stau_ns) - std::fabs(track_ns_)) < gate_ns(track_ns_, frame_ns)) {
+    const double want = std::fabs(track_ns_), g = gate_ns(want, frame_ns);
+    if (search(trail, max_rotation, want, want - g, want + g, c) && std::fabs(std::fabs(c.stau_ns) - want) < g) {
       pick = c;
       have = true;
     }
   }
   if (!have) {
     if (misses_ < 255) ++misses_;
+    const bool guided = std::fabs(v_fused) > kTofAcquireMinSpeed;
+    double min_ns = 0, max_ns = kTofMaxTau * 1e9;
+    if (guided) {
+      const double num = std::fabs(baseline) * 1e9;
+      min_ns = num / ((1 + kTofAcquireAgreement) * std::fabs(v_fused)) - frame_ns;
+      max_ns = std::min(max_ns, num / ((1 - kTofAcquireAgreement) * std::fabs(v_fused)) + frame_ns);
+    }
     Candidate best;
     bool any = false;
     for (int trail = 0; trail < 2; ++trail) {
+      if (guided && (trail == 0) != (v_fused > 0)) continue;
       Candidate c;
-      if (!search(trail, max_rotation, 0, c)) continue;
+      if (!search(trail, max_rotation, 0, min_ns, max_ns, c)) continue;
       const double v = (c.stau_ns > 0 ? baseline : -baseline) * 1e9 / std::fabs(c.stau_ns);
-      if (std::fabs(v_fused) > kTofAcquireMinSpeed && std::fabs(v - v_fused) > kTofAcquireAgreement * std::fabs(v_fused))
-        continue;
+      if (guided && std::fabs(v - v_fused) > kTofAcquireAgreement * std::fabs(v_fused)) continue;
       if (!any || c.res < best.res) {
         best = c;
         any = true;

@@ -13,10 +13,11 @@ FloatFusionOutput FloatVelocityFusion::update(const FloatFusionInput& in) {
   FloatFusionOutput out;
   const FloatTofResult& tof = *in.tof;
   const bool use_tof = tof.ok && tof.tau_ns < kTofMaxTau * 1e9;
+  const double dt = std::min(in.dt, 2.147483647);  // as the core: below 2^31 ns
   if (in.direct && std::fabs(in.v_direct) > kFusionResidualMinSpeed)
     residual_ += kFusionResidualGain * (in.residual - residual_);
   // The scale's measurement weighed by how clean and how steady (the core's comment).
-  if (scale_started_ && in.dt > 0) scale_var_ = std::min(scale_var_ + kFusionScaleWalk * in.dt, kFusionScaleStartVar);
+  if (scale_started_ && dt > 0) scale_var_ = std::min(scale_var_ + kFusionScaleWalk * dt, kFusionScaleStartVar);
   const double change = std::fabs(accel_) * tof.tau_ns * 1e-9;
   const double change_limit = kFusionScaleMaxChange * std::fabs(tof.v);
   const double q_res = std::max(residual_, 0.0) / kFusionScaleMaxResidual;
@@ -31,7 +32,7 @@ FloatFusionOutput FloatVelocityFusion::update(const FloatFusionInput& in) {
         scale_started_ = true;
       }
       const double sig = std::clamp(tof.sig, kFusionTofFloor, 1.0);
-      const double frames = std::max(1.0, std::ceil(tof.tau_ns / (in.dt * 1e9)));
+      const double frames = std::max(1.0, std::ceil(tof.tau_ns / (dt * 1e9)));
       const double penalty = 1 + std::pow(q_res, 4) + std::pow(q_change, 4);
       const double k = scale_var_ / (scale_var_ + 4 * sig * sig * frames * penalty);
       scale_ = std::clamp(scale_ + k * (measured - scale_), kFusionScaleMin, kFusionScaleMax);
@@ -66,9 +67,9 @@ FloatFusionOutput FloatVelocityFusion::update(const FloatFusionInput& in) {
     }
   }
   const double teff = use_tof ? kFusionTau : kFusionTau * (1 + residual_ / kFusionSlowResidual);
-  const double nv = v_ + (target - v_) * in.dt / (teff + in.dt);
-  if (in.dt > 0) {
-    accel_ = std::clamp(accel_ + ((nv - v_) / in.dt - accel_) * in.dt / (kFusionAccelTau + in.dt), -kFusionAccelMax,
+  const double nv = v_ + (target - v_) * dt / (teff + dt);
+  if (dt > 0) {
+    accel_ = std::clamp(accel_ + ((nv - v_) / dt - accel_) * dt / (kFusionAccelTau + dt), -kFusionAccelMax,
                         kFusionAccelMax);
   }
   v_ = nv;

@@ -66,8 +66,7 @@ class Estimator {
   TimeOfFlight tof_{};
   VelocityFusion fusion_{};
   AngleQ28 tof_max_rotation_ = 0;  // rotation allowed between the two sightings
-  DistQ32 y_ = 0;                  // integral of the differential observer's V
-  int64_t y_rem_ = 0;
+  TravelQ16Ns y_ = 0;              // integral of the differential observer's direct values
   StereoMeasurement meas_[2]{};  // previous and current frame
   int cur_ = 0;
   bool have_prev_ = false;

@@ -20,6 +20,10 @@
 //                                                                         time of flight (velocity_fusion.hpp)
 //   AccelQ16    int32    Q15.16   [-10, 10] m/s^2 used  1.53e-5 m/s^2     the fused velocity's rate of change
 //   VarQ40      int64    Q23.40   [0, 2^23)             9.1e-13           variance of the scale (1e-8..1e-2)
+//   TravelQ16Ns uint64   V (Q16 m/s) x ns, wrapping   1.5e-14 m         integral of the differential for the
+//                                                                         time of flight: only differences
+//                                                                         over its window are read (exact,
+//                                                                         no division: travel_between)
 //   EdgeOffsetQ15 int16  Q0.15    [-1, 1) rad           3.05e-5 rad       lens correction of a column edge,
 //                                                                         added to the pinhole edge (config.hpp).
 //                                                                         Rounding <= 1.5e-5 rad: 0.06 % of a
@@ -48,6 +52,7 @@ using FracQ16 = int32_t;
 using ScaleQ24 = int32_t;
 using AccelQ16 = int32_t;
 using VarQ40 = int64_t;
+using TravelQ16Ns = uint64_t;
 
 namespace fx {
 
@@ -109,6 +114,21 @@ constexpr int64_t shr_round(int64_t v, int s) {
 // scale moves into num or den). A zero
 // denominator saturates toward the sign of num and sets *saturated.
 int32_t div_q(int64_t num, int64_t den, int q, bool* saturated = nullptr);
+
+// num / den in Q16 for 0 <= num <= den and den > 0 (a fraction), rounded,
+// with one 32-bit division instead of div_q's 64-bit ones: both are shifted
+// right until den < 2^16, which keeps 15-16 significant bits of den. Error
+// <= 2^-15 of the result plus half a Q16 step (<= 4.6e-5 in all).
+inline int32_t fraction_q16(int64_t num, int64_t den) {
+  const int lz = __builtin_clzll(static_cast<uint64_t>(den));
+  const int s = lz >= 48 ? 0 : 48 - lz;
+  const uint32_t n = static_cast<uint32_t>(num >> s), d = static_cast<uint32_t>(den >> s);
+  return static_cast<int32_t>(((n << 16) + d / 2) / d);
+}
+
+// The travel from `since` to `now` (Q16 m/s x ns): exact while it is below
+// 2^63, i.e. for any window of the time of flight.
+constexpr int64_t travel_between(TravelQ16Ns now, TravelQ16Ns since) { return static_cast<int64_t>(now - since); }
 
 }  // namespace fx
 }  // namespace lumavel

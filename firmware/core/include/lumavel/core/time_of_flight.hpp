@@ -20,14 +20,19 @@
 // candidate: the caller falls back to the differential observer alone.
 //
 // Cost: a track is searched on the segments near the tracked tau; without one,
-// on the whole history (both directions).
+// on the taus that agree with the fused velocity in its direction, or below
+// kTofAcquireMinSpeed on every usable tau of both directions.
 #pragma once
 #include <cstdint>
 
 #include "lumavel/core/fixed.hpp"
+#include "lumavel/core/fusion_params.hpp"
 #include "lumavel/core/limits.hpp"
 
 namespace lumavel {
+
+// The longest time of flight that is searched for and used, ns.
+constexpr int64_t kTofMaxTauNs = fx::q_of(params::kTofMaxTau * 1e9, 0);
 
 // One usable frame: both cameras' kernel outputs and what the fusion needs.
 struct TofFrame {
@@ -35,7 +40,7 @@ struct TofFrame {
   int64_t heading;                     // offset-corrected gyro integral, unwrapped, Q28 rad
   ValueQ28 f[2][kMaxKernels];          // F per camera
   SlopeQ20 r[2][kMaxKernels];          // dF/dtheta per camera
-  DistQ32 y;                           // integral of the differential's direct values (raw, unscaled)
+  TravelQ16Ns y;                       // integral of the differential's direct values (raw, unscaled)
 };
 
 struct TofResult {
@@ -44,7 +49,7 @@ struct TofResult {
   int64_t tau_ns;     // time since the lead camera stood here
   SpeedQ16 v;         // displacement over tau: direction * h / tau
   FracQ16 sig;        // relative uncertainty of v (the match's timing uncertainty over tau)
-  DistQ32 y_then;     // TofFrame::y at the match (the differential's distance over the window is y - y_then)
+  TravelQ16Ns y_then; // TofFrame::y at the match (the differential's travel over the window: travel_between)
 };
 
 struct TofTrackInput {
@@ -57,7 +62,8 @@ struct TofTrackInput {
 class TimeOfFlight {
  public:
   void reset();
-  void push(const TofFrame& frame);
+  // The slot of the newest frame, to be filled before track() (no copy).
+  TofFrame& push();
   // The time of flight of the newest frame (push it first).
   TofResult track(const TofTrackInput& in);
   uint16_t frames() const { return count_; }
@@ -67,11 +73,13 @@ class TimeOfFlight {
     int64_t stau_ns;   // signed: + cam0 trails, - cam1 trails
     int64_t res;       // residual, Q48
     int64_t sig_ns;    // timing uncertainty
-    DistQ32 y_then;
+    TravelQ16Ns y_then;
   };
   const TofFrame& at(uint16_t back) const;  // 0 = newest
-  // The best candidate on segments [back + 1, back] for back in [first, last], one direction.
-  bool search(const TofTrackInput& in, int trail, uint16_t first, uint16_t last, int64_t want_ns, Candidate& out) const;
+  // The best candidate of one direction on the segments whose time span
+  // reaches [min_ns, max_ns]: the one nearest want_ns (> 0: tracking), else
+  // the one with the least residual.
+  bool search(const TofTrackInput& in, int trail, int64_t want_ns, int64_t min_ns, int64_t max_ns, Candidate& out) const;
 
   TofFrame ring_[kTofFrames];
   uint16_t head_ = 0;   // next slot to write

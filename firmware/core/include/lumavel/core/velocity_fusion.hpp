@@ -39,7 +39,7 @@ struct FusionInput {
   SpeedQ16 v_direct;        // ... this value ...
   FracQ16 residual;         // ... with this residual ratio
   const TofResult* tof;     // this frame's time of flight (ok or not)
-  DistQ32 y;                // integral of v_differential (TofFrame::y of this frame)
+  TravelQ16Ns y;            // integral of v_differential (TofFrame::y of this frame)
   LengthQ24 baseline;
 };
 
@@ -68,7 +68,10 @@ class VelocityFusion {
   AccelQ16 accel_ = 0;
   FracQ16 residual_ = 0;           // tracked residual ratio of the differential
   int32_t tof_inflation_ = int32_t{1} << 16;  // Q16, >= 1: the time of flight's variance factor
+  void learn_scale(const FusionInput& in, int64_t dt_us, int64_t q_res, int64_t q_change);
+
   ScaleQ24 scale_ = int32_t{1} << fx::kScaleFrac;
+  ScaleQ24 inv_scale_ = int32_t{1} << fx::kScaleFrac;  // 1 / scale_
   VarQ40 scale_var_ = 0;
   bool scale_started_ = false;
 };
