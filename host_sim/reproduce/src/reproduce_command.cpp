@@ -60,7 +60,8 @@ std::string render_key(const Case& c) {
   const GyroVariant gyro = gyro_variant(c);
   std::ostringstream key;
   key << c.render_w << "x" << c.render_h << " e" << c.exposure << " d" << c.duration
-      << (lens.no_lens ? " no-lens" : "") << (gyro.no_offset ? " no-gyro-offset" : "");
+      << (lens.no_lens ? " no-lens" : "") << (gyro.no_offset ? " no-gyro-offset" : "")
+      << (c.camera_mismatch.empty() ? "" : " mismatch " + c.camera_mismatch);
   return key.str();
 }
 
@@ -75,6 +76,7 @@ std::string render_case(const Case& c, const Options& o) {
     ov.height = c.render_h;
     ov.exposure_frames = c.exposure;
     ov.duration_s = c.duration;
+    ov.camera_mismatch = c.camera_mismatch;
     render::apply_overrides(s, ov);
     if (lens.no_lens) s.camera.distortion = {};  // same seed and motion, pinhole camera
     if (gyro.no_offset) s.imu.gyro_bias_z = 0;    // same seed, images and gyro noise

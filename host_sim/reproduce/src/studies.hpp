@@ -19,6 +19,7 @@ struct Case {
   std::vector<WorkSize> work;        // working resolutions to run at
   std::string label;      // row label in the results
   double paper_value = -1;  // the paper's figure for this row (-1: none)
+  std::string camera_mismatch;  // a photometric preset applied to both cameras ("": the scenario's)
 };
 
 struct Study {
@@ -29,6 +30,11 @@ struct Study {
 };
 
 std::vector<Study> paper_studies(bool quick);
+
+// Rigs as users build them: near clutter, a street, reversals, each also
+// with two cameras that are not photometric twins; a wall seen by matched
+// and by mismatched cameras.
+Study real_rig_study(bool quick);
 
 // Lens distortion: undistorted vs corrected vs ignored (study_lens.cpp).
 Study lens_study(bool quick);

@@ -85,7 +85,7 @@ Study gyro_offset_study(bool quick) {
   const double duration = quick ? 6 : -1;
   const int rw = quick ? 80 : -1, rh = quick ? 60 : -1;
   for (const GyroCase& g : kCases)
-    st.cases.push_back({g.id, "gyro_offset_standstill.yaml", rw, rh, -1, duration, work, g.label, -1});
+    st.cases.push_back({g.id, "gyro_offset_standstill.yaml", rw, rh, -1, duration, work, g.label, -1, ""});
   return st;
 }
 

@@ -72,9 +72,9 @@ Study lens_study(bool quick) {
   const int rw = quick ? 80 : 160, rh = quick ? 60 : 120;
   for (const LensScene& s : kScenes) {
     const std::string id = s.id;
-    st.cases.push_back({id + kUndistorted, s.file, rw, rh, -1, duration, work, s.label, -1});
-    st.cases.push_back({id + kCorrected, s.file, rw, rh, -1, duration, work, s.label, -1});
-    st.cases.push_back({id + kIgnored, s.file, rw, rh, -1, duration, work, s.label, -1});
+    st.cases.push_back({id + kUndistorted, s.file, rw, rh, -1, duration, work, s.label, -1, ""});
+    st.cases.push_back({id + kCorrected, s.file, rw, rh, -1, duration, work, s.label, -1, ""});
+    st.cases.push_back({id + kIgnored, s.file, rw, rh, -1, duration, work, s.label, -1, ""});
   }
   return st;
 }
