@@ -29,7 +29,7 @@ StereoMeasurement measure_rotated(test::SyntheticRig& rig, const KernelBank& ban
   column_profile(img[0].data(), bank.width, static_cast<uint16_t>(rig.height), bank.width, p0);
   column_profile(img[1].data(), bank.width, static_cast<uint16_t>(rig.height), bank.width, p1);
   StereoMeasurement m;
-  stereo_measurement(p0, p1, bank, m);
+  stereo_measurement(p0, p1, bank, nullptr, m);
   return m;
 }
 

@@ -29,6 +29,11 @@ struct SyntheticRig {
   };
   double noise = 0;    // additive Gaussian, gray levels (deterministic LCG)
   double gain = 1;     // global lighting gain
+  // Each camera's photometric response: y = cam_gain (1 + vignetting r^2) x
+  // + black + column pattern (Gaussian, sigma column_offset gray levels, drawn
+  // once per camera from its own seed); r = 1 at the image corner.
+  double cam_gain[2] = {1, 1}, cam_black[2] = {0, 0}, vignetting[2] = {0, 0};
+  double column_offset = 0;
   uint64_t seed = 1;
 
   double fu() const { return width / 2.0 / std::tan(hfov / 2); }
@@ -70,13 +75,26 @@ struct SyntheticRig {
             const double t = (wall - cy) / dy;
             acc += texture(cx + t * dx, -t * yn);
           }
-        double p = gain * acc / (S * S) + noise * gaussian();
+        const double du = (u - cu) / (width / 2.0), dv = (v - cv) / (height / 2.0);
+        const double r2 = (du * du + dv * dv) / 2;
+        double p = cam_gain[cam] * (1 + vignetting[cam] * r2) * gain * acc / (S * S) + cam_black[cam] +
+                   column_pattern(cam, u) + noise * gaussian();
         p = std::fmin(255, std::fmax(0, std::round(p)));
         img[static_cast<size_t>(v * width + u)] = static_cast<uint8_t>(p);
       }
     return img;
   }
 
+  // The column's fixed offset: the same in every frame.
+  double column_pattern(int cam, int u) const {
+    if (column_offset == 0) return 0;
+    uint64_t z = (static_cast<uint64_t>(cam) << 32 | static_cast<uint64_t>(u)) * uint64_t{0x9E3779B97F4A7C15u} + 12345u;
+    z = (z ^ (z >> 30)) * uint64_t{0xBF58476D1CE4E5B9u};
+    z = (z ^ (z >> 27)) * uint64_t{0x94D049BB133111EBu};
+    z ^= z >> 31;
+    const double uni = (static_cast<double>(z >> 11) + 0.5) / 9007199254740992.0;  // (0, 1)
+    return column_offset * std::sqrt(3.0) * (2 * uni - 1);  // uniform with that sigma
+  }
   double gaussian() {
     // Box-Muller on a 64-bit LCG: deterministic across platforms.
     auto uni = [this] {

@@ -71,7 +71,7 @@ ConfigError validate(const EstimatorConfig& c) {
   if (c.gyro_gap_us < 100 || c.gyro_gap_us > 4000000) return ConfigError::kGyroGap;
   if (c.low_texture < 0 || c.low_texture > (int32_t{1} << 28)) return ConfigError::kLowTexture;
   if (c.saturated_permille > 1000) return ConfigError::kSaturatedPermille;
-  if ((c.options & ~(kOptionBaselineCorrection | kOptionGyroOffsetLearning)) != 0) return ConfigError::kOptions;
+  if ((c.options & ~kKnownOptions) != 0) return ConfigError::kOptions;
   // 0.1 mm .. 10 cm; 0.1 s .. 60 s.
   if (c.still_distance < 1678 || c.still_distance > 1677722 || c.still_min_us < 100000 || c.still_min_us > 60000000)
     return ConfigError::kStill;

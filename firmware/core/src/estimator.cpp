@@ -53,6 +53,7 @@ void Estimator::reset() {
   observer_.reset();
   tof_.reset();
   fusion_.reset();
+  balance_.reset();
   y_ = 0;
   have_prev_ = false;
   cur_ = 0;
@@ -75,7 +76,7 @@ Estimate Estimator::step(const FramePair& frames) {
   column_profile(frames.cam[1], cfg_.width, cfg_.height, frames.stride, p[1]);
   const int next = have_prev_ ? 1 - cur_ : cur_;
   StereoMeasurement& m = meas_[next];
-  stereo_measurement(p[0], p[1], bank_, m);
+  stereo_measurement(p[0], p[1], bank_, (cfg_.options & kOptionPhotometricBalance) ? &balance_ : nullptr, m);
 
   uint16_t status = 0;
   const uint32_t sampled = p[0].clip_sampled + p[1].clip_sampled;
@@ -170,6 +171,11 @@ Estimate Estimator::step(const FramePair& frames) {
       if (!fo.used_tof) status |= kStatusNoTof;
       if (fo.saturated) status |= kStatusSaturated;
       est.tof_ns = tof.ok ? tof.tau_ns : 0;
+      // (not where the rotation or the interval is in doubt: the stereo prediction needs both)
+      if ((cfg_.options & kOptionPhotometricBalance) && !gyro_saturated &&
+          !(status & (kStatusSaturated | kStatusGyroGap | kStatusFrameGap)))
+        balance_.learn({&meas_[cur_], &m, fx::sat32(dtheta), cfg_.baseline,
+                        int64_t{fo.v} * std::min<int64_t>(dt_ns, int64_t{1} << 31) / 1000000000});
       distance_ = advance(distance_, fo.v, dt_ns, &distance_rem_);
     }
     cur_ = next;

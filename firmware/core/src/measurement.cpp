@@ -138,10 +138,15 @@ AngleQ28 half_phase(const CameraOutputs& c0, const CameraOutputs& c1, ValueQ28 d
 }  // namespace
 
 void stereo_measurement(const ColumnProfile& p0, const ColumnProfile& p1, const KernelBank& bank,
-                        StereoMeasurement& out) {
+                        const PhotometricBalance* balance, StereoMeasurement& out) {
   CameraOutputs c0, c1;
   camera_outputs(p0, bank.cam[0], bank.count, c0);
   camera_outputs(p1, bank.cam[1], bank.count, c1);
+  for (uint8_t k = 0; k < bank.count; ++k) {
+    const ValueQ28 delta = balance && !c0.no_light && !c1.no_light ? balance->offset(k) : 0;
+    out.balance[k] = delta;
+    c1.f[k] = fx::sat32(int64_t{c1.f[k]} - delta);
+  }
   out.count = bank.count;
   out.no_light = c0.no_light || c1.no_light;
   bool sat = c0.saturated || c1.saturated;

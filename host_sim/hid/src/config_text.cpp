@@ -138,7 +138,8 @@ const char* config_keys_help() {
          "  frame_period_us, max_gap_us, gyro_gap_us   timing, us\n"
          "  low_texture              rms of F1-F0 below which V is held\n"
          "  saturated_permille       clipped pixels that raise SATURATED, per mille\n"
-         "  baseline_correction, gyro_offset_learning   estimator options, 0 | 1\n"
+         "  baseline_correction, gyro_offset_learning, photometric_balance\n"
+         "                           estimator options, 0 | 1\n"
          "  still_distance_m         image change below which the rig counts as still, m\n"
          "  still_min_us             stillness before the gyro offset is taken, us\n"
          "  lens_cam0, lens_cam1     lens correction of each column edge (width + 1 values,\n"
@@ -170,6 +171,7 @@ std::string format_setup(const DeviceSetup& d) {
   line("saturated_permille", std::to_string(c.saturated_permille));
   line("baseline_correction", (c.options & kOptionBaselineCorrection) ? "1" : "0");
   line("gyro_offset_learning", (c.options & kOptionGyroOffsetLearning) ? "1" : "0");
+  line("photometric_balance", (c.options & kOptionPhotometricBalance) ? "1" : "0");
   line("still_distance_m", num_q(c.still_distance, fx::kLengthFrac));
   line("still_min_us", std::to_string(c.still_min_us));
   line("lens_cam0", format_lens(d.lens[0]));
@@ -256,6 +258,7 @@ void apply_setting(DeviceSetup& d, const std::string& kv) {
   else if (k == "saturated_permille") c.saturated_permille = static_cast<uint16_t>(parse_int(k, v, 0, 65535));
   else if (k == "baseline_correction") option(kOptionBaselineCorrection);
   else if (k == "gyro_offset_learning") option(kOptionGyroOffsetLearning);
+  else if (k == "photometric_balance") option(kOptionPhotometricBalance);
   else if (k == "still_distance_m") c.still_distance = to_q(k, v, fx::kLengthFrac);
   else if (k == "still_min_us") c.still_min_us = static_cast<uint32_t>(parse_int(k, v, 0, u32));
   else if (k == "lens_cam0") d.lens[0] = parse_lens(k, v);

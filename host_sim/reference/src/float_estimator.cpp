@@ -112,6 +112,7 @@ FloatEstimator::FloatEstimator(const EstimatorSettings& s) : s_(s) {
   for (const KernelModel& k : s.kernels) narrowest = std::min(narrowest, k.sigma);
   tof_max_rotation_ = params::kTofMaxRotationSigma * narrowest;
   bank_ = build_float_bank(s_);
+  balance_ = FloatPhotometricBalance(static_cast<int>(s_.kernels.size()));
 }
 
 void FloatEstimator::push_gyro(uint64_t t_ns, double rate) {
@@ -173,7 +174,8 @@ bool FloatEstimator::gyro_saturated_since(uint64_t from) const {
 }
 
 FloatMeasurement measure_float(const FloatBank& bank, const EstimatorSettings& s,
-                               const uint8_t* cam0, const uint8_t* cam1) {
+                               const uint8_t* cam0, const uint8_t* cam1,
+                               const FloatPhotometricBalance* balance) {
   FloatMeasurement m;
   const int w = s.width, h = s.height;
   const size_t n = s.kernels.size();
@@ -208,6 +210,12 @@ FloatMeasurement measure_float(const FloatBank& bank, const EstimatorSettings& s
       c[i][jj] = k.t[j].dot(col) / nrm;  // derivatives of N neglected: a correction term
     }
   }
+  m.balance = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));
+  if (balance && !m.no_light)
+    for (Eigen::Index j = 0; j < m.balance.size(); ++j) {
+      m.balance[j] = balance->offset(j);
+      f[1][j] -= m.balance[j];
+    }
   // Sums of integers: exact in double, so equal exactly where the core's are.
   m.no_stereo = cols[0] == cols[1] && (cols[0].array() != cols[0][0]).any();
   m.mid = (f[0] + f[1]) / 2;
@@ -237,7 +245,7 @@ FloatMeasurement measure_float(const FloatBank& bank, const EstimatorSettings& s
 EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const uint8_t* cam1) {
   EngineEstimate est;
   est.t_ns = t_ns;
-  FloatMeasurement m = measure_float(bank_, s_, cam0, cam1);
+  FloatMeasurement m = measure_float(bank_, s_, cam0, cam1, s_.photometric_balance ? &balance_ : nullptr);
   uint16_t status = 0;
   if (m.clipped * 1000 > s_.saturated_permille * m.sampled) status |= kStatusSaturated;
   const double angle = angle_at(t_ns);
@@ -337,6 +345,9 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
       const FloatFusionOutput fo = fusion_.update(fin);
       if (!fo.used_tof) status |= kStatusNoTof;
       est.tof_s = tof.ok ? tof.tau_ns * 1e-9 : 0;
+      if (s_.photometric_balance && !gyro_saturated &&
+          !(status & (kStatusSaturated | kStatusGyroGap | kStatusFrameGap)))
+        balance_.learn(prev_, m, dtheta, s_.baseline, fo.v * dt);
       distance_ += fo.v * dt;
       if (s_.gyro_offset_learning) {
         if (status & (kStatusFrameGap | kStatusGyroGap)) have_ref_ = still_ = false;

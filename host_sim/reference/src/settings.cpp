@@ -133,7 +133,8 @@ EstimatorConfig to_fixed_config(const EstimatorSettings& s) {
     throw SettingsError("saturated_permille", "saturated permille = " + std::to_string(s.saturated_permille) + " is outside 0..1000");
   c.saturated_permille = static_cast<uint16_t>(s.saturated_permille);
   c.options = static_cast<uint8_t>((s.baseline_correction ? kOptionBaselineCorrection : 0) |
-                                   (s.gyro_offset_learning ? kOptionGyroOffsetLearning : 0));
+                                   (s.gyro_offset_learning ? kOptionGyroOffsetLearning : 0) |
+                                   (s.photometric_balance ? kOptionPhotometricBalance : 0));
   c.still_distance = static_cast<LengthQ24>(quantise(s.still_distance, fx::kLengthFrac, {"still distance", "still_distance", "m"}));
   c.still_min_us = micros(s.still_min, {"still duration", "still_min", "s"});
   std::vector<EdgeOffsetQ15> lens[2];

@@ -102,6 +102,7 @@ EstimatorSettings run_settings(const Recording& rec, const RunOptions& options) 
   if (options.ignore_distortion)
     for (CameraModel& c : s.cam) c.edges.clear();  // no edge table: the engines use the pinhole columns
   s.gyro_offset_learning = options.gyro_offset_learning;
+  s.photometric_balance = options.photometric_balance;
   return s;
 }
 

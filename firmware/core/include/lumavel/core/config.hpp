@@ -53,7 +53,9 @@ struct EstimatorConfig {
 enum ConfigOption : uint8_t {
   kOptionBaselineCorrection = 1u << 0,  // finite-baseline correction (x / tan x), see velocity_observer.hpp
   kOptionGyroOffsetLearning = 1u << 1,  // learn the gyro offset at standstill, see gyro_offset.hpp
+  kOptionPhotometricBalance = 1u << 2,  // learn and correct cam1's response to cam0's, see photometric_balance.hpp
 };
+constexpr uint8_t kKnownOptions = kOptionBaselineCorrection | kOptionGyroOffsetLearning | kOptionPhotometricBalance;
 
 enum class ConfigError : uint8_t {
   kOk = 0,

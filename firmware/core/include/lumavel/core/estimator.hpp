@@ -64,6 +64,7 @@ class Estimator {
   GyroOffset gyro_offset_{};
   VelocityObserver observer_{};
   TimeOfFlight tof_{};
+  PhotometricBalance balance_{};
   VelocityFusion fusion_{};
   AngleQ28 tof_max_rotation_ = 0;  // rotation allowed between the two sightings
   TravelQ16Ns y_ = 0;              // integral of the differential observer's direct values

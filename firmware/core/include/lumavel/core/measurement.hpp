@@ -7,6 +7,7 @@
 #include "lumavel/core/column_profile.hpp"
 #include "lumavel/core/fixed.hpp"
 #include "lumavel/core/kernel_bank.hpp"
+#include "lumavel/core/photometric_balance.hpp"
 
 namespace lumavel {
 
@@ -21,13 +22,15 @@ struct StereoMeasurement {
   AngleQ28 half_phase[kMaxKernels];
   ValueQ28 f[2][kMaxKernels];   // each camera's F (the time of flight compares cam0 with cam1's past)
   SlopeQ20 r[2][kMaxKernels];   // each camera's dF/dtheta
+  ValueQ28 balance[kMaxKernels];  // the photometric offset subtracted from cam1's F (photometric_balance.hpp)
   bool no_light;                // a normaliser was zero
   bool saturated;               // a ratio saturated
   uint32_t clipped;             // clipped pixels in both frames
 };
 
-// From the two column profiles and the bank.
+// From the two column profiles and the bank; with a balance, cam1's outputs
+// are corrected by it first (nullptr: the cameras taken as twins).
 void stereo_measurement(const ColumnProfile& p0, const ColumnProfile& p1, const KernelBank& bank,
-                        StereoMeasurement& out);
+                        const PhotometricBalance* balance, StereoMeasurement& out);
 
 }  // namespace lumavel

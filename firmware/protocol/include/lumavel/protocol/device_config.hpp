@@ -36,7 +36,7 @@ enum LensBits : uint8_t {
 };
 constexpr uint8_t kKnownLensBits = 0x03u;
 // Estimator option bits the configuration may carry (lumavel/core/config.hpp).
-constexpr uint8_t kKnownOptionBits = kOptionBaselineCorrection | kOptionGyroOffsetLearning;
+constexpr uint8_t kKnownOptionBits = kKnownOptions;
 
 struct KernelSetting {
   uint8_t order;   // 0..kMaxKernelOrder

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "lumavel/host/engine.hpp"
+#include "lumavel/host/float_photometric_balance.hpp"
 #include "lumavel/host/float_time_of_flight.hpp"
 #include "lumavel/host/float_velocity_fusion.hpp"
 #include "lumavel/host/settings.hpp"
@@ -31,15 +32,18 @@ struct FloatMeasurement {
   Eigen::VectorXd mid, diff, rot;
   Eigen::VectorXd half_phase;            // x = k h / 2 per kernel, from the cameras' phases
   Eigen::VectorXd f[2], r[2];            // each camera's F and dF/dtheta
+  Eigen::VectorXd balance;               // the photometric offset subtracted from cam1's F
   bool no_light = false;
   bool no_stereo = false;  // same textured column profile in both cameras (same_textured_profile)
   double clipped = 0, sampled = 0;
 };
 
 // Both cameras' normalised kernel outputs for one frame pair (the twin of
-// column_profile + stereo_measurement).
+// column_profile + stereo_measurement), cam1's corrected by the balance when
+// one is given.
 FloatMeasurement measure_float(const FloatBank& bank, const EstimatorSettings& s,
-                               const uint8_t* cam0, const uint8_t* cam1);
+                               const uint8_t* cam0, const uint8_t* cam1,
+                               const FloatPhotometricBalance* balance = nullptr);
 
 class FloatEstimator {
  public:
@@ -82,6 +86,7 @@ class FloatEstimator {
   // time of flight and fusion
   FloatTimeOfFlight tof_;
   FloatVelocityFusion fusion_;
+  FloatPhotometricBalance balance_;
   double tof_max_rotation_ = 0;
   double y_ = 0;
 };
