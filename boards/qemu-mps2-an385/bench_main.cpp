@@ -41,7 +41,7 @@ __attribute__((noipa)) void do_columns(uint16_t w, uint16_t h) {
   lumavel::column_profile(frame[1], w, h, w, profile[1]);
 }
 __attribute__((noipa)) void do_kernels() {
-  lumavel::stereo_measurement(profile[0], profile[1], estimator.bank(), measurement);
+  lumavel::stereo_measurement(profile[0], profile[1], estimator.bank(), nullptr, measurement);
 }
 __attribute__((noipa)) lumavel::Estimate do_step(uint64_t t_ns, uint16_t w) {
   return estimator.step(lumavel::FramePair{t_ns, {frame[0], frame[1]}, w});
