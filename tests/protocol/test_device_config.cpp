@@ -192,8 +192,7 @@ TEST(DeviceConfig, LensTablesReachTheEstimatorOnlyWhenNamed) {
 
 TEST(DeviceConfig, DefaultsCarryTheEstimatorsOwnDefaults) {
   const DeviceConfig c = default_device_config();
-  CHECK_EQUAL(lumavel::kOptionBaselineCorrection | lumavel::kOptionGyroOffsetLearning | lumavel::kOptionPhotometricBalance,
-              c.options);
+  CHECK_EQUAL(lumavel::kOptionBaselineCorrection | lumavel::kOptionGyroOffsetLearning, c.options);
   CHECK_EQUAL(33554, c.still_distance);  // 2 mm
   CHECK_EQUAL(500000u, c.still_min_us);
   CHECK_EQUAL(0, c.lens);

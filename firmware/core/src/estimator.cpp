@@ -171,12 +171,14 @@ Estimate Estimator::step(const FramePair& frames) {
       if (!fo.used_tof) status |= kStatusNoTof;
       if (fo.saturated) status |= kStatusSaturated;
       est.tof_ns = tof.ok ? tof.tau_ns : 0;
-      // (not where the rotation or the interval is in doubt: the stereo prediction needs both)
+      const DistQ32 distance_before = distance_;
+      distance_ = advance(distance_, fo.v, dt_ns, &distance_rem_);
+      // The balance learns over this displacement (not where the rotation or
+      // the interval is in doubt: the stereo prediction needs both).
       if ((cfg_.options & kOptionPhotometricBalance) && !gyro_saturated &&
           !(status & (kStatusSaturated | kStatusGyroGap | kStatusFrameGap)))
-        balance_.learn({&meas_[cur_], &m, fx::sat32(dtheta), cfg_.baseline,
-                        int64_t{fo.v} * std::min<int64_t>(dt_ns, int64_t{1} << 31) / 1000000000});
-      distance_ = advance(distance_, fo.v, dt_ns, &distance_rem_);
+        balance_.learn({&meas_[cur_], &m, fx::sat32(dtheta), cfg_.baseline, (distance_ - distance_before) / 65536,
+                        o.updated ? o.distance_ratio : 0});
     }
     cur_ = next;
   }

@@ -287,7 +287,7 @@ DeviceConfig default_device_config() {
   c.saturated_permille = 50;
   // The estimator's defaults: finite-baseline correction and gyro-offset
   // learning on, stillness judged over 2 mm and 0.5 s (gyro_offset.hpp).
-  c.options = kOptionBaselineCorrection | kOptionGyroOffsetLearning | kOptionPhotometricBalance;
+  c.options = kOptionBaselineCorrection | kOptionGyroOffsetLearning;  // photometric balance: off (settings.hpp)
   c.still_distance = 33554;  // 2 mm in Q7.24
   c.still_min_us = 500000;
   c.lens = 0;  // pinhole

@@ -12,12 +12,12 @@ void FloatPhotometricBalance::reset() {
   mean_s_.setZero();
 }
 
-void FloatPhotometricBalance::learn(const FloatMeasurement& a, const FloatMeasurement& b, double dtheta, double h,
-                                    double d) {
+void FloatPhotometricBalance::learn(const FloatMeasurement& a, const FloatMeasurement& b, double dtheta, double d,
+                                    double ratio) {
   const double travel = std::fabs(d);
-  if (travel == 0 || std::fabs(h) > params::kBalanceMaxLeadSteps * travel) return;
+  if (travel == 0 || ratio == 0 || std::fabs(ratio) * params::kBalanceMaxLeadSteps < 1) return;
   if (std::fabs(dtheta) > params::kBalanceMaxCurvature * travel) return;
-  const double lead = h / d;
+  const double lead = 1 / ratio;
   const double step = std::min(travel, params::kBalanceLength);
   const double alpha = learned_ < params::kBalanceLength ? step / (learned_ + step) : step / params::kBalanceLength;
   learned_ = std::min(learned_ + step, params::kBalanceLength);

@@ -54,7 +54,7 @@ struct RunArgs {
   bool quiet = false;
   bool ignore_distortion = false;
   bool no_gyro_offset_learning = false;
-  bool no_photometric_balance = false;
+  bool photometric_balance = false;
 };
 
 // --hid-linger: seconds >= 0, or -1 for "until interrupted".
@@ -189,7 +189,7 @@ int run(const RunArgs& a) {
   options.size = {a.width > 0 ? a.width : fallback.width, a.height > 0 ? a.height : fallback.height};
   options.ignore_distortion = a.ignore_distortion;
   options.gyro_offset_learning = !a.no_gyro_offset_learning;
-  options.photometric_balance = !a.no_photometric_balance;
+  options.photometric_balance = a.photometric_balance;
 
   std::unique_ptr<HidSender> hid;
   if (!a.hid.empty()) {
@@ -300,11 +300,11 @@ void add_run_command(cli::Tool& tool) {
               "take the gyro as it reads: do not learn its zero-rate\n"
               "offset while the images show the rig standing still\n"
               "(learned by default); for comparisons");
-  c->add_flag("--no-photometric-balance", a->no_photometric_balance,
-              "take the two cameras as photometric twins: do not learn\n"
-              "and correct the difference of their gain, black level,\n"
-              "vignetting and column pattern (learned by default over\n"
-              "the first metres of travel); for comparisons");
+  c->add_flag("--photometric-balance", a->photometric_balance,
+              "learn cam1's offset against cam0 per kernel over the\n"
+              "first 4 m of travel and correct it (for cameras that are\n"
+              "not photometric twins; experimental, off by default:\n"
+              "docs/design.md)");
   c->add_option("--plot", a->plot,
                 "plot file (default: REC_estimates.svg next to the -o file,\n"
                 "or in the current folder); written when the recording has\n"

@@ -9,14 +9,18 @@
 // is learned as that mean over travel (a standstill teaches nothing). The end
 // term is removed sample by sample with the stereo prediction
 // h (dM - dtheta Rbar) / d of the frame's displacement d, whose sum
-// telescopes the same way: what is left is cam1's offset b_k. It is
+// telescopes the same way: what is left is cam1's offset b_k. d / h is the
+// interval's own least-squares distance (the observer's), not the fused V:
+// an error of V would leave that error times S in every sample, and the
+// twin, whose V differs within its allowance, would learn another offset. It is
 // subtracted from cam1's F_k before S, M and the phases are formed
 // (measurement.hpp), once kBalanceLength of travel has been averaged.
 // What it does not learn: a difference that follows the scene (a contrast
 // or a vignetting shape that differs), clipping in one camera only.
 //
 // Formats: b_k in Q28 (ValueQ28); the travel weight alpha in Q16; the lead
-// h / d in Q16, |.| <= kBalanceMaxLeadSteps.
+// h / d in Q12 (from d / h in Q20: relative error <= 2^-14 at the largest
+// lead), |.| <= kBalanceMaxLeadSteps.
 #pragma once
 #include <cstdint>
 
@@ -33,7 +37,8 @@ struct BalanceInput {
   const StereoMeasurement* cur;
   AngleQ28 dtheta;         // integrated gyro over the interval
   LengthQ24 baseline;      // h (signed: x of cam1 minus x of cam0)
-  int64_t displacement;    // d = V dt over the interval, Q16 m (signed)
+  int64_t displacement;    // d = V dt over the interval (fused), Q16 m (signed): the weight
+  ValueQ28 distance_ratio; // d / h of the interval from its own images (VelocityObserver), 0: none
 };
 
 class PhotometricBalance {

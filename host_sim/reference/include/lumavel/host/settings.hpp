@@ -39,7 +39,9 @@ struct EstimatorSettings {
   int saturated_permille = 50;
   bool baseline_correction = true;  // finite-baseline correction (x / tan x per kernel)
   bool gyro_offset_learning = true;  // learn the gyro offset at standstill
-  bool photometric_balance = true;   // learn cam1's response against cam0's (photometric_balance.hpp)
+  // Learn cam1's offset against cam0's (photometric_balance.hpp). Off by
+  // default: on, the twin does not yet learn the same offset (docs/design.md).
+  bool photometric_balance = false;
   double still_distance = 0.002;    // m: image change since a reference below this is standstill
   double still_min = 0.5;           // s of stillness before the offset is taken
 };

@@ -31,9 +31,9 @@ struct RunOptions {
   // Learn the gyro's zero-rate offset while the images show the rig still
   // (the default); off: the gyro is taken as is (run --no-gyro-offset-learning).
   bool gyro_offset_learning = true;
-  // Learn and correct the difference between the two cameras' responses (the
-  // default); off: the cameras are taken as twins (run --no-photometric-balance).
-  bool photometric_balance = true;
+  // Learn and correct cam1's offset against cam0 (run --photometric-balance);
+  // off by default: the cameras are taken as twins.
+  bool photometric_balance = false;
 };
 
 struct RunResult {
