@@ -171,14 +171,12 @@ Estimate Estimator::step(const FramePair& frames) {
       if (!fo.used_tof) status |= kStatusNoTof;
       if (fo.saturated) status |= kStatusSaturated;
       est.tof_ns = tof.ok ? tof.tau_ns : 0;
-      const DistQ32 distance_before = distance_;
       distance_ = advance(distance_, fo.v, dt_ns, &distance_rem_);
-      // The balance learns over this displacement (not where the rotation or
-      // the interval is in doubt: the stereo prediction needs both).
-      if ((cfg_.options & kOptionPhotometricBalance) && !gyro_saturated &&
+      // The balance (not where the rotation or the interval is in doubt: the
+      // stereo prediction needs both).
+      if ((cfg_.options & kOptionPhotometricBalance) && o.updated && !gyro_saturated &&
           !(status & (kStatusSaturated | kStatusGyroGap | kStatusFrameGap)))
-        balance_.learn({&meas_[cur_], &m, fx::sat32(dtheta), cfg_.baseline, (distance_ - distance_before) / 65536,
-                        o.updated ? o.distance_ratio : 0});
+        balance_.learn({&meas_[cur_], &m, fx::sat32(dtheta), cfg_.baseline});
     }
     cur_ = next;
   }

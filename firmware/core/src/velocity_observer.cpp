@@ -102,7 +102,6 @@ ObserverOutput VelocityObserver::update(const ObserverInput& in) {
   const int64_t d_q24 = fx::shr_round(int64_t{ratio} * in.baseline, fx::kValueFrac);       // Q24 m
   const SpeedQ16 v_direct = fx::div_q(d_q24 * 1000000000, in.dt_ns * 256, 0, &sat);       // Q16 m/s
   out.v_direct = v_direct;
-  out.distance_ratio = ratio;
   out.residual = residual_ratio(e, a_used, count, ratio);
   if (!started_) {
     v_ = v_direct;

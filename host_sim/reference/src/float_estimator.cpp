@@ -297,15 +297,14 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
       est.texture = s_bar.size() ? std::sqrt(ss_min / static_cast<double>(s_bar.size())) : 0;
       const double den = a.squaredNorm();
       bool textured = false;
-      double residual = 0, ratio = 0;  // ratio: d / h of the least squares
+      double residual = 0;
       if (gyro_saturated) {
         est.texture = 0;
       } else if (den <= 0 || s_bar.squaredNorm() <= 0 || est.texture < s_.low_texture) {
         status |= kStatusLowTexture;
       } else {
         textured = true;
-        ratio = e.dot(a) / den;
-        const double d = s_.baseline * ratio;
+        const double d = s_.baseline * e.dot(a) / den;
         est.v_direct = d / dt;
         // VelocityObserver's residual ratio: the kernels' disagreement.
         const double ee = e.squaredNorm();
@@ -346,9 +345,9 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
       const FloatFusionOutput fo = fusion_.update(fin);
       if (!fo.used_tof) status |= kStatusNoTof;
       est.tof_s = tof.ok ? tof.tau_ns * 1e-9 : 0;
-      if (s_.photometric_balance && !gyro_saturated &&
+      if (s_.photometric_balance && textured && !gyro_saturated &&
           !(status & (kStatusSaturated | kStatusGyroGap | kStatusFrameGap)))
-        balance_.learn(prev_, m, dtheta, fo.v * dt, textured ? ratio : 0);
+        balance_.learn(prev_, m, dtheta, s_.baseline);
       distance_ += fo.v * dt;
       if (s_.gyro_offset_learning) {
         if (status & (kStatusFrameGap | kStatusGyroGap)) have_ref_ = still_ = false;

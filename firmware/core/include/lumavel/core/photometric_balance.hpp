@@ -10,17 +10,20 @@
 // term is removed sample by sample with the stereo prediction
 // h (dM - dtheta Rbar) / d of the frame's displacement d, whose sum
 // telescopes the same way: what is left is cam1's offset b_k. d / h is the
-// interval's own least-squares distance (the observer's), not the fused V:
-// an error of V would leave that error times S in every sample, and the
-// twin, whose V differs within its allowance, would learn another offset. It is
+// interval's own least squares on S as corrected. Not the fused V: an error
+// of V leaves that error times S in every sample, and the twin, whose V
+// differs within its allowance, learned another b_k (the day soak split the
+// time of flight on 4x more frames). The weights and the lead keep 1e-5 of
+// themselves for the same reason. The correction starts after
+// kBalanceReadyLength, so that d / h sees the offset removed early. It is
 // subtracted from cam1's F_k before S, M and the phases are formed
 // (measurement.hpp), once kBalanceLength of travel has been averaged.
 // What it does not learn: a difference that follows the scene (a contrast
 // or a vignetting shape that differs), clipping in one camera only.
 //
-// Formats: b_k in Q28 (ValueQ28); the travel weight alpha in Q16; the lead
-// h / d in Q12 (from d / h in Q20: relative error <= 2^-14 at the largest
-// lead), |.| <= kBalanceMaxLeadSteps.
+// Formats: b_k in Q28 (ValueQ28); travel in Q24 m; the travel weight alpha
+// in Q16; the lead h / d in Q20, |.| <= 2 kBalanceMaxLeadSteps; the least
+// squares' sums in Q56 (S and dM held within +-2).
 #pragma once
 #include <cstdint>
 
@@ -37,8 +40,6 @@ struct BalanceInput {
   const StereoMeasurement* cur;
   AngleQ28 dtheta;         // integrated gyro over the interval
   LengthQ24 baseline;      // h (signed: x of cam1 minus x of cam0)
-  int64_t displacement;    // d = V dt over the interval (fused), Q16 m (signed): the weight
-  ValueQ28 distance_ratio; // d / h of the interval from its own images (VelocityObserver), 0: none
 };
 
 class PhotometricBalance {
@@ -49,12 +50,13 @@ class PhotometricBalance {
   void learn(const BalanceInput& in);
   // cam1's offset b_k; 0 until ready().
   ValueQ28 offset(uint8_t k) const { return ready() ? mean_s_[k] : 0; }
-  bool ready() const { return learned_q16_ >= kLengthQ16; }
+  bool ready() const { return learned_q24_ >= kReadyQ24; }
 
  private:
-  static constexpr int64_t kLengthQ16 = fx::q_of(params::kBalanceLength, 16);
+  static constexpr int64_t kLengthQ24 = fx::q_of(params::kBalanceLength, 24);
+  static constexpr int64_t kReadyQ24 = fx::q_of(params::kBalanceReadyLength, 24);
 
-  int64_t learned_q16_ = 0;  // travel averaged so far, held at kLengthQ16
+  int64_t learned_q24_ = 0;  // travel averaged so far (Q24 m), held at kLengthQ24
   ValueQ28 mean_s_[kMaxKernels]{};  // b_k: the mean residual of S
 };
 

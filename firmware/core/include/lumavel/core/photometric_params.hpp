@@ -7,14 +7,18 @@ namespace lumavel::params {
 
 // Travel over which the balance is averaged (m): a running mean until this
 // much has been seen, an exponential average in travel after. The correction
-// is applied from then on; before, the two cameras are taken as they are.
-// (Measured on the photo wall, the street and near clutter: applied after
-// 1 m, or with a slope on M_k as well, it hurt near clutter and reversals by
-// up to 10 points; see docs/design.md.)
+// is applied after kBalanceReadyLength; before, the two cameras are taken as
+// they are. (A slope on M_k as well hurt near clutter and reversals by up to
+// 10 points: docs/design.md.)
 constexpr double kBalanceLength = 4.0;
+// The correction is applied from this much travel on (m): from then the
+// least squares that weighs each sample sees the offset removed. (1 m hurt
+// near clutter and reversals by 18-26 %, 4 m left the offset half learned on
+// a 10 s run; 2 m: docs/design.md.)
+constexpr double kBalanceReadyLength = 2.0;
 // Frames whose displacement is below |h| / kBalanceMaxLeadSteps teach nothing
 // (the stereo prediction h dM / d would amplify the noise of dM beyond this).
-constexpr double kBalanceMaxLeadSteps = 64.0;
+constexpr double kBalanceMaxLeadSteps = 16.0;
 // Frames that turn more than this per metre teach nothing (rad/m): the
 // rotation term of the stereo prediction is first order only, and its error
 // (the field of view's, see velocity_observer.hpp) would read as cam1's offset.

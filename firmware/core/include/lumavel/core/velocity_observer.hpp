@@ -48,7 +48,6 @@ struct ObserverOutput {
   // it rises where near texture aliases the stereo difference (a measure of
   // the direct value's trust, used by velocity_fusion.hpp).
   FracQ16 residual;
-  ValueQ28 distance_ratio;  // d / h of the interval's least squares (0 when not updated)
   bool updated;      // false: low texture, V held
   bool saturated;
   bool converging;

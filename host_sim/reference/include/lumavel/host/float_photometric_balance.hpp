@@ -14,12 +14,11 @@ class FloatPhotometricBalance {
  public:
   explicit FloatPhotometricBalance(int kernels = 0) : mean_s_(Eigen::VectorXd::Zero(kernels)) {}
   void reset();
-  // One interval; d = V dt (m, signed: the weight), ratio = d / h of the
-  // interval's own least squares (0: none), dtheta the gyro angle.
-  void learn(const FloatMeasurement& prev, const FloatMeasurement& cur, double dtheta, double d, double ratio);
+  // One usable interval: dtheta the gyro angle, h the baseline.
+  void learn(const FloatMeasurement& prev, const FloatMeasurement& cur, double dtheta, double h);
   // cam1's offset b_k; 0 until ready().
   double offset(Eigen::Index k) const { return ready() ? mean_s_[k] : 0; }
-  bool ready() const { return learned_ >= params::kBalanceLength; }
+  bool ready() const { return learned_ >= params::kBalanceReadyLength; }
 
  private:
   double learned_ = 0;
