@@ -2,7 +2,9 @@
 // round trip, errors that name the key (and the file and line), lens lengths.
 #include <CppUTest/TestHarness.h>
 
+#include <sys/stat.h>
 #include <unistd.h>
+#include <cstdlib>
 
 #include <cstdio>
 #include <fstream>
@@ -90,7 +92,7 @@ TEST(ConfigText, MissingFileIsNamed) {
     host::apply_settings_file(s, "/nonexistent/rig.cfg");
     FAIL("no error");
   } catch (const std::runtime_error& e) {
-    STRCMP_EQUAL("/nonexistent/rig.cfg: cannot open configuration file: No such file or directory", e.what());
+    STRCMP_EQUAL("/nonexistent/rig.cfg: does not exist", e.what());
   }
 }
 
@@ -155,8 +157,32 @@ TEST(ConfigText, ADirectoryIsNotAConfigurationFile) {
     host::apply_settings_file(s, "/tmp");
     FAIL("a directory was read as a configuration file");
   } catch (const std::runtime_error& e) {
-    STRCMP_EQUAL("/tmp: is a directory, not a configuration file", e.what());
+    STRCMP_EQUAL("/tmp: is a folder, not a configuration file", e.what());
   }
+}
+
+// A FIFO is refused before it is opened: reading one would wait for a writer.
+TEST(ConfigText, AFifoOrADeviceIsNotAConfigurationFile) {
+  DeviceSetup s = sample();
+  char dir[] = "/tmp/lumavel_cfg_fifo_XXXXXX";
+  CHECK(mkdtemp(dir) != nullptr);
+  const std::string fifo = std::string(dir) + "/rig.cfg";
+  CHECK(::mkfifo(fifo.c_str(), 0600) == 0);
+  std::string fifo_error, device_error;
+  try {
+    host::apply_settings_file(s, fifo);
+  } catch (const std::runtime_error& e) {
+    fifo_error = e.what();
+  }
+  ::unlink(fifo.c_str());
+  ::rmdir(dir);
+  STRCMP_EQUAL((fifo + ": is a FIFO (named pipe), not a configuration file").c_str(), fifo_error.c_str());
+  try {
+    host::apply_settings_file(s, "/dev/zero");
+  } catch (const std::runtime_error& e) {
+    device_error = e.what();
+  }
+  STRCMP_EQUAL("/dev/zero: is a character device node, not a configuration file", device_error.c_str());
 }
 
 // With the device's configuration: the key given is blamed; a device value

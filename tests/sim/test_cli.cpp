@@ -125,9 +125,16 @@ TEST(Cli, UsageErrorsExitTwo) {
 }
 
 TEST(Cli, MissingRecordingExitsOne) {
-  const Outcome r = sim("run nowhere");
+  Outcome r = sim("run nowhere");
   LONGS_EQUAL(1, r.code);
-  STRCMP_CONTAINS("lumavel-sim run: error: nowhere:", r.err.c_str());
+  STRCMP_CONTAINS("lumavel-sim run: error: nowhere: recording folder does not exist", r.err.c_str());
+  fixture::write_text(dir.path() + "/afile", "x");
+  r = sim("run afile");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("lumavel-sim run: error: afile: is a file, not a recording folder", r.err.c_str());
+  r = sim("render . out");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("lumavel-sim render: error: .: is a folder, not a scenario file", r.err.c_str());
 }
 
 TEST(Cli, BadGyroNamesFileAndLineAndLeavesNoOutput) {

@@ -1,6 +1,6 @@
 #include "lumavel/host/config_text.hpp"
 
-#include <sys/stat.h>
+#include "lumavel/host/input_path.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -194,12 +194,10 @@ std::pair<std::string, std::string> split_setting(const std::string& kv) {
 
 // The text of FILE; refuses what is not a readable regular file by its name.
 std::string read_settings_file(const std::string& path) {
-  struct stat st {};
-  if (::stat(path.c_str(), &st) != 0)
-    throw std::runtime_error(path + ": cannot open configuration file: " + std::strerror(errno));
-  if (S_ISDIR(st.st_mode)) throw std::runtime_error(path + ": is a directory, not a configuration file");
+  if (const std::string why = why_not_a_file(path, "configuration file"); !why.empty())
+    throw std::runtime_error(shown_path(path) + ": " + why);
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path + ": cannot open configuration file");
+  if (!in) throw std::runtime_error(path + ": cannot open configuration file: " + std::strerror(errno));
   std::ostringstream text;
   text << in.rdbuf();
   return text.str();

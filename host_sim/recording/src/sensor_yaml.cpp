@@ -2,11 +2,14 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
 #include "lumavel/host/csv_table.hpp"
+#include "lumavel/host/input_path.hpp"
 #include "lumavel/host/recording_error.hpp"
 
 namespace lumavel::host {
@@ -15,8 +18,9 @@ namespace {
 long line_of(const YAML::Node& n) { return n.Mark().line + 1; }  // yaml-cpp lines are 0-based
 
 YAML::Node load_yaml(const std::string& path) {
+  if (const std::string why = why_not_a_file(path); !why.empty()) throw recording_error_in(path, why);
   std::ifstream in(path);
-  if (!in) throw recording_error_in(path, "cannot open (missing sensor.yaml?)");
+  if (!in) throw recording_error_in(path, std::string("cannot open: ") + std::strerror(errno));
   std::stringstream ss;
   ss << in.rdbuf();
   std::string text = ss.str();
@@ -25,7 +29,11 @@ YAML::Node load_yaml(const std::string& path) {
   if (text.rfind("%YAML:", 0) == 0) text[0] = '#';
   try {
     YAML::Node root = YAML::Load(text);
-    if (!root.IsMap()) throw recording_error_in(path, "not a YAML mapping of sensor keys");
+    if (root.IsNull())
+      throw recording_error_in(path, "empty file: a sensor.yaml holds the sensor's keys (docs/recording-format.md)");
+    if (!root.IsMap())
+      throw recording_error_at(path, line_of(root),
+                               "not a YAML mapping of sensor keys (KEY: VALUE lines, docs/recording-format.md)");
     return root;
   } catch (const YAML::ParserException& e) {
     throw recording_error_at(path, e.mark.line + 1, "YAML syntax error: " + e.msg);
