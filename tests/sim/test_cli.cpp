@@ -379,3 +379,25 @@ TEST(Cli, ThePlotRendersToAPng) {
   STRCMP_EQUAL("", fixture::read_text(dir.path() + "/rsvg.err").c_str());
   STRCMP_CONTAINS(">FRAME_GAP<", fixture::read_text(svg).c_str());
 }
+
+// An output that cannot be written is refused before the work that fills it
+// (a 30 s calibration, a run), naming the option, the path and the reason.
+TEST(Cli, UnwritableOutputsAreRefusedBeforeTheWork) {
+  rec();
+  std::filesystem::create_directory(dir.path() + "/adir");
+  Outcome r = sim("run rec -o adir");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("lumavel-sim run: error: adir (-o): is a folder, not a CSV file", r.err.c_str());
+  CHECK(r.err.find("frame pairs") == std::string::npos);  // refused before the run
+  r = sim("run rec -o est.csv --plot nowhere/p.svg");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("nowhere/p.svg (--plot): cannot be created: its folder nowhere does not exist", r.err.c_str());
+  CHECK(!exists(dir.path() + "/est.csv"));
+  r = sim("run rec -o est.csv --hid file:r.hidrep --hid-config adir");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("adir (--hid-config): is a folder, not a configuration file", r.err.c_str());
+  r = sim("calibrate rec --write adir");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("lumavel-sim calibrate: error: adir (--write): is a folder, not a configuration file", r.err.c_str());
+  CHECK(r.err.find("registering") == std::string::npos);
+}

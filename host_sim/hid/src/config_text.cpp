@@ -1,6 +1,6 @@
 #include "lumavel/host/config_text.hpp"
 
-#include "lumavel/host/input_path.hpp"
+#include "lumavel/host/path_check.hpp"
 
 #include <algorithm>
 #include <cerrno>

@@ -1,6 +1,6 @@
 #include "lumavel/host/report_file.hpp"
 
-#include "lumavel/host/input_path.hpp"
+#include "lumavel/host/path_check.hpp"
 
 #include <cerrno>
 #include <cstring>

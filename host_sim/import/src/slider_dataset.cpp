@@ -4,7 +4,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "lumavel/host/input_path.hpp"
+#include "lumavel/host/path_check.hpp"
 #include "lumavel/host/recording_error.hpp"
 
 namespace lumavel::host {

@@ -7,7 +7,7 @@
 #include <cstring>
 #include <fstream>
 
-#include "lumavel/host/input_path.hpp"
+#include "lumavel/host/path_check.hpp"
 #include "lumavel/host/recording_error.hpp"
 
 namespace lumavel::host {

@@ -10,7 +10,7 @@
 #include <cstring>
 #include <memory>
 
-#include "lumavel/host/input_path.hpp"
+#include "lumavel/host/path_check.hpp"
 
 namespace lumavel::host {
 namespace {

@@ -5,7 +5,7 @@
 
 #include "lumavel/host/csv_table.hpp"
 #include "lumavel/host/image_io.hpp"
-#include "lumavel/host/input_path.hpp"
+#include "lumavel/host/path_check.hpp"
 #include "lumavel/host/recording_layout.hpp"
 
 namespace lumavel::host {

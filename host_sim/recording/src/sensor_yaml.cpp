@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "lumavel/host/csv_table.hpp"
-#include "lumavel/host/input_path.hpp"
+#include "lumavel/host/path_check.hpp"
 #include "lumavel/host/recording_error.hpp"
 
 namespace lumavel::host {

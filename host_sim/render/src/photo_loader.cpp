@@ -14,7 +14,7 @@
 #endif
 
 #include "lumavel/host/render/surface_pattern.hpp"
-#include "lumavel/host/input_path.hpp"
+#include "lumavel/host/path_check.hpp"
 
 namespace lumavel::host::render {
 namespace {

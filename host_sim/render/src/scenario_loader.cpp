@@ -5,7 +5,7 @@
 #include "lumavel/host/render/lens_distortion.hpp"
 #include "lumavel/host/render/photometric_presets.hpp"
 #include "lumavel/host/render/view_renderer.hpp"
-#include "lumavel/host/input_path.hpp"
+#include "lumavel/host/path_check.hpp"
 
 #include <yaml-cpp/yaml.h>
 

@@ -1,7 +1,9 @@
 #include "lumavel/host/track_plot.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdint>
+#include <cstring>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -410,9 +412,10 @@ std::string track_svg(const std::vector<TrackPoint>& track, const std::string& t
 
 void write_track_svg(const std::string& path, const std::vector<TrackPoint>& track, const std::string& title) {
   std::ofstream out(path);
+  if (!out) throw std::runtime_error(path + ": cannot create the plot: " + std::strerror(errno));
   out << track_svg(track, title);
   out.close();
-  if (!out) throw std::runtime_error(path + ": cannot write the plot");
+  if (!out) throw std::runtime_error(path + ": cannot write the plot: " + std::strerror(errno));
 }
 
 }  // namespace lumavel::host

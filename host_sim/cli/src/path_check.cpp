@@ -1,6 +1,7 @@
-#include "lumavel/host/input_path.hpp"
+#include "lumavel/host/path_check.hpp"
 
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <climits>
@@ -50,6 +51,20 @@ std::string why_not_a_folder(const std::string& path, const std::string& what) {
   if (S_ISDIR(st.st_mode)) return {};
   if (S_ISREG(st.st_mode)) return "is a file, not a " + what;
   return std::string("is ") + special_kind(st.st_mode) + ", not a " + what;
+}
+
+std::string why_not_writable(const std::string& path, const std::string& what) {
+  struct stat st {};
+  if (path.empty()) return "an empty path, not a " + what;
+  if (::stat(path.c_str(), &st) == 0) return S_ISDIR(st.st_mode) ? "is a folder, not a " + what : std::string();
+  if (errno != ENOENT) return stat_failure(errno);
+  const size_t slash = path.find_last_of('/');
+  const std::string folder = slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
+  if (const std::string why = why_not_a_folder(folder); !why.empty())
+    return "cannot be created: its folder " + shown_path(folder) + " " + why;
+  if (::access(folder.c_str(), W_OK | X_OK) != 0)
+    return "cannot be created: no permission to write in its folder " + shown_path(folder);
+  return {};
 }
 
 bool path_present(const std::string& path) {
