@@ -1,6 +1,7 @@
 // lumavel-sim as a user sees it: exit codes, messages, files written.
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <string>
 
@@ -15,6 +16,12 @@ struct Outcome {
   int code;
   std::string out, err;
 };
+
+// The 1-based number of the line of `text` that starts with `key`, as text.
+std::string line_of(const std::string& text, const std::string& key) {
+  const size_t at = text.rfind("\n" + key) + 1;
+  return std::to_string(1 + std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
+}
 
 }  // namespace
 
@@ -233,10 +240,13 @@ TEST(Cli, NoGroundTruthNoPlotUnlessAsked) {
 }
 
 TEST(Cli, WorkingSizeLargerThanTheSensorIsRefused) {
-  rec();
+  const std::string yaml = fixture::read_text(rec() + "/mav0/cam0/sensor.yaml");
   const Outcome r = sim("run rec --width 64");
   LONGS_EQUAL(1, r.code);
-  STRCMP_CONTAINS("cam0/sensor.yaml: cannot bin the 40x30 sensor up to the working resolution 64x30", r.err.c_str());
+  STRCMP_CONTAINS(("cam0/sensor.yaml:" + line_of(yaml, "resolution:") +
+                   ": cannot bin the 40x30 sensor up to the working resolution 64x30")
+                      .c_str(),
+                  r.err.c_str());
 }
 
 // The fixture's cameras carry a small radial-tangential distortion: corrected
@@ -329,8 +339,21 @@ TEST(Cli, ConfigurationRefusalsNameTheFileTheValueAndTheRule) {
   fixture::write_text(yaml, text);
   Outcome r = sim("run rec -o est.csv");
   LONGS_EQUAL(1, r.code);
-  STRCMP_CONTAINS("rec/mav0/cam0/sensor.yaml and cam1/sensor.yaml: T_BS", r.err.c_str());
+  STRCMP_CONTAINS(("rec/mav0/cam0/sensor.yaml:" + line_of(text, "T_BS:") + " and cam1/sensor.yaml:" +
+                   line_of(text, "T_BS:") + ": T_BS").c_str(),
+                  r.err.c_str());
   STRCMP_CONTAINS("baseline h = 200.08 m does not fit its fixed-point format (|value| < 128 m)", r.err.c_str());
+  std::filesystem::remove_all(dir.path() + "/rec");
+  const std::string yaml0 = rec() + "/mav0/cam0/sensor.yaml";
+  text = fixture::read_text(yaml0);
+  const size_t in = text.find("intrinsics: [") + 13;
+  text.replace(in, text.find(',', in) - in, "1e300");
+  fixture::write_text(yaml0, text);
+  r = sim("run rec -o est.csv");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS(("rec/mav0/cam0/sensor.yaml:" + line_of(text, "intrinsics:") +
+                   ": intrinsics (at the working resolution): focal length fu = 1e+300 px does not fit").c_str(),
+                  r.err.c_str());
   fixture::Options slow;
   slow.t0 = 5000000000ull;
   slow.frame_dt = 2000000000ull;  // 2 s between frames
