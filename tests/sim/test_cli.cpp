@@ -424,3 +424,22 @@ TEST(Cli, UnwritableOutputsAreRefusedBeforeTheWork) {
   STRCMP_CONTAINS("lumavel-sim calibrate: error: adir (--write): is a folder, not a configuration file", r.err.c_str());
   CHECK(r.err.find("registering") == std::string::npos);
 }
+
+// Below the 160 columns calibrate is validated at, it says so, one sentence a
+// line, and why the columns are fewer (the sensor's width or --width).
+TEST(Cli, CalibrateWarnsWhenCoarserThanValidated) {
+  rec();
+  Outcome r = sim("calibrate rec -q");
+  STRCMP_CONTAINS("calibrate: warning: registering at 40 columns (the sensor's width: rec has 40 columns)\n"
+                  "calibrate: warning: calibrate is validated at 160 columns (docs/results.md); on coarser images\n"
+                  "  its estimate and its uncertainty are less reliable\n",
+                  r.err.c_str());
+  r = sim("calibrate rec -q --width 20");
+  STRCMP_CONTAINS("calibrate: warning: registering at 20 columns (--width)\n", r.err.c_str());
+}
+
+// The same short options in every command that has them.
+TEST(Cli, QuietIsDashQEverywhere) {
+  for (const char* cmd : {"run", "render", "calibrate"})
+    STRCMP_CONTAINS("-q,--quiet", sim(std::string(cmd) + " --help").out.c_str());
+}

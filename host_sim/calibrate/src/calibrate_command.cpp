@@ -70,9 +70,9 @@ int calibrate(CalibrateArgs& a) {
   const int columns = std::min(a.opt.width, rec.cam[0].width);
   if (columns < kRegistrationColumns)
     std::fprintf(stderr,
-                 "calibrate: warning: registering at %d columns (%s); calibrate is validated at %d\n"
-                 "columns (docs/results.md): on coarser images its estimate and its uncertainty are\n"
-                 "less reliable.\n",
+                 "calibrate: warning: registering at %d columns (%s)\n"
+                 "calibrate: warning: calibrate is validated at %d columns (docs/results.md); on coarser images\n"
+                 "  its estimate and its uncertainty are less reliable\n",
                  columns,
                  columns < a.opt.width ? ("the sensor's width: " + a.rec + " has " + std::to_string(rec.cam[0].width) +
                                           " columns").c_str()

@@ -95,7 +95,7 @@ void add_render_command(cli::Tool& tool) {
       ->type_name("N")
       ->check(cli::whole_number_in(1, 256));
   c->add_flag("--force", a->force, "replace an existing OUT/mav0");
-  c->add_flag("--quiet", a->quiet, "no progress and no summary");
+  c->add_flag("-q,--quiet", a->quiet, "no progress and no summary on standard error");
 }
 
 int render_main(int argc, char** argv) { return cli::run_command_alone("lumavel-sim", add_render_command, argc, argv); }
