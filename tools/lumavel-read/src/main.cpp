@@ -61,7 +61,7 @@ void add_stream_options(CLI::App* c, StreamOptions& o, bool live_options) {
 void add_config_input(CLI::App* c, ConfigInput& in) {
   c->add_option("--file", in.files, "KEY=VALUE lines as `config get` prints them (# comments\nallowed); may be repeated")
       ->type_name("FILE");
-  c->add_option("SETTINGS", in.settings, "KEY=VALUE settings, after the files")->type_name("KEY=VALUE...");
+  c->add_option("SETTINGS", in.settings, "KEY=VALUE settings, after the files")->type_name("KEY=VALUE");
 }
 
 }  // namespace
