@@ -108,4 +108,10 @@ grep -q "^ok: 2 setting(s) checked" ok.txt || fail "config check printed $(cat o
 rc=$?
 [ $rc -eq 1 ] || fail "config set of a bad file: exit $rc, expected 1"
 grep -qF "h5.cfg:2: baseline_m = 5" set.err || fail "config set: $(cat set.err)"
+# Device errors are said like every other error: "lumavel-read COMMAND: error:".
+"$READ" info > /dev/null 2> nodev.err
+rc=$?
+if [ $rc -eq 3 ]; then  # no device here (the usual case on a build machine)
+  grep -q "^lumavel-read info: error: no lumavel device" nodev.err || fail "no-device message: $(cat nodev.err)"
+fi
 echo "replay CLI: ok"
