@@ -142,6 +142,9 @@ TEST(Cli, MissingRecordingExitsOne) {
   r = sim("render . out");
   LONGS_EQUAL(1, r.code);
   STRCMP_CONTAINS("lumavel-sim render: error: .: is a folder, not a scenario file", r.err.c_str());
+  r = sim("render '" LUMAVEL_SOURCE_DIR "/host_sim/scenarios/paper_sim_aligned.yaml' afile --duration 0.1 -q");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("lumavel-sim render: error: afile: is a file, not a folder to write the recording in", r.err.c_str());
 }
 
 TEST(Cli, BadGyroNamesFileAndLineAndLeavesNoOutput) {
