@@ -337,3 +337,10 @@ TEST(BadInput, GroundTruthThatIsAFolderIsNotIgnored) {
   replace_by_folder(m + "state_groundtruth_estimate0/data.csv");
   STRCMP_EQUAL((m + "state_groundtruth_estimate0/data.csv: is a folder, not a file").c_str(), load_error().c_str());
 }
+
+TEST(BadInput, Mav0ThatIsNotAFolder) {
+  const std::string r = dir.path() + "/flat";
+  std::filesystem::create_directory(r);
+  fixture::write_text(r + "/mav0", "x");
+  STRCMP_EQUAL((r + "/mav0: is a file, not a folder").c_str(), error_of([&] { load_recording(r); }).c_str());
+}

@@ -146,6 +146,8 @@ Recording load_recording(const std::string& dir_arg) {
   while (dir.size() > 1 && dir.back() == '/') dir.pop_back();  // "rec/" -> "rec": clean paths in messages
   if (const std::string why = why_not_a_folder(dir, "recording folder"); !why.empty())
     throw recording_error_in(shown_path(dir), why == "does not exist" ? "recording folder does not exist" : why);
+  if (path_present(dir + "/mav0") && !is_dir(dir + "/mav0"))  // REC/mav0 is the data when it is there
+    throw recording_error_in(dir + "/mav0", why_not_a_folder(dir + "/mav0"));
   rec.root = is_dir(dir + "/mav0") ? dir + "/mav0" : dir;
   const std::string& root = rec.root;
   std::string yaml[2];
