@@ -155,6 +155,11 @@ TEST(ConfigText, ValuesBeyondTheirFieldGetTheRule) {
 
 // Two values for one key in a file, or a file that sets nothing, are refused:
 // which was meant is not for lumavel to guess.
+TEST(ConfigText, OneLensValueIsOneValue) {
+  STRCMP_EQUAL("rig.cfg:2: lens_cam0 = 0.1: 1 value, but width 40 needs 41 (one per column edge)",
+               offline_refusal("width=40\nlens_cam0=0.1\n").c_str());
+}
+
 TEST(ConfigText, AKeyTwiceInAFileOrNoSettingIsRefused) {
   const std::string twice = offline_refusal("width=40\nheight=30\nwidth=20\n");
   STRCMP_CONTAINS("rig.cfg:3: width is given again (first at ", twice.c_str());

@@ -483,8 +483,8 @@ void seal_lens(DeviceSetup& s) {
     if (s.lens[i].empty()) continue;
     if (s.lens[i].size() != want) {
       throw std::runtime_error("lens_cam" + std::to_string(i) + ": " + std::to_string(s.lens[i].size()) +
-                               " values, but width " + std::to_string(c.width) + " needs " + std::to_string(want) +
-                               " (one per column edge)");
+                               (s.lens[i].size() == 1 ? " value" : " values") + ", but width " +
+                               std::to_string(c.width) + " needs " + std::to_string(want) + " (one per column edge)");
     }
     c.lens = static_cast<uint8_t>(c.lens | (1u << i));
     tables[i] = s.lens[i].data();

@@ -191,6 +191,7 @@ int run(const RunArgs& a) {
   };
   if (a.output != "-" && !a.output.empty()) check_output(a.output, "CSV file", "-o");
   if (!a.hid_config.empty()) check_output(a.hid_config, "configuration file", "--hid-config");
+  if (a.hid.rfind("file:", 0) == 0) check_output(a.hid.substr(5), "report file", "--hid file:");
   const Recording rec = load_recording(a.rec);
   if (!rec.groundtruth.empty() || !a.plot.empty())
     check_output(a.plot.empty() ? default_plot_path(a) : a.plot, "plot file", a.plot.empty() ? "the plot" : "--plot");
