@@ -422,6 +422,9 @@ TEST(Cli, UnwritableOutputsAreRefusedBeforeTheWork) {
   r = sim("run rec -o est.csv --hid file:r.hidrep --hid-config adir");
   LONGS_EQUAL(1, r.code);
   STRCMP_CONTAINS("adir (--hid-config): is a folder, not a configuration file", r.err.c_str());
+  r = sim("run rec -o est.csv --hid file:r.hidrep --hid-config /dev/zero");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("/dev/zero (--hid-config): is a character device node, not a configuration file", r.err.c_str());
   r = sim("run rec -o est.csv --hid file:adir");
   LONGS_EQUAL(1, r.code);
   STRCMP_CONTAINS("adir (--hid file:): is a folder, not a report file", r.err.c_str());

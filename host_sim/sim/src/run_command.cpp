@@ -190,7 +190,13 @@ int run(const RunArgs& a) {
       throw std::runtime_error(shown_path(path) + " (" + option + "): " + why);
   };
   if (a.output != "-" && !a.output.empty()) check_output(a.output, "CSV file", "-o");
-  if (!a.hid_config.empty()) check_output(a.hid_config, "configuration file", "--hid-config");
+  if (!a.hid_config.empty()) {
+    check_output(a.hid_config, "configuration file", "--hid-config");
+    // It is read back too: a FIFO or a device there would block or never end.
+    if (path_present(a.hid_config))
+      if (const std::string why = why_not_a_file(a.hid_config, "configuration file"); !why.empty())
+        throw std::runtime_error(shown_path(a.hid_config) + " (--hid-config): " + why);
+  }
   if (a.hid.rfind("file:", 0) == 0) check_output(a.hid.substr(5), "report file", "--hid file:");
   const Recording rec = load_recording(a.rec);
   if (!rec.groundtruth.empty() || !a.plot.empty())
