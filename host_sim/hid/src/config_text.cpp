@@ -31,7 +31,7 @@ std::string num(double v) {
 // field holds (-3 columns, 1e300 px) is told by the rule alone.
 class BadValue : public std::runtime_error {
  public:
-  BadValue(const std::string& problem, bool beyond_field) : std::runtime_error(problem), beyond_field(beyond_field) {}
+  BadValue(const std::string& problem, bool beyond) : std::runtime_error(problem), beyond_field(beyond) {}
   bool beyond_field;  // a number, but too large or too small for the field
 };
 
