@@ -9,6 +9,7 @@ READ=$1 FEEDER=$2 COMPARE=$3 MAKE=$4 DIR=$5
 fail() { echo "FAIL: $*" >&2; exit 1; }
 rm -rf "$DIR" && mkdir -p "$DIR" && cd "$DIR" || fail "cannot use $DIR"
 
+mkdir -p adir
 "$MAKE" 300 est.csv || fail "make_test_estimates"
 "$FEEDER" --link file:run.hidrep --estimates est.csv --period-us 0 || fail "feeder"
 "$READ" replay run.hidrep -o out.csv || fail "replay of a good file exited $?"
@@ -42,6 +43,8 @@ cmp -s out.csv dup.csv || fail "the duplicate changed the CSV"
 
 "$READ" replay missing.hidrep > /dev/null 2> missing.err && fail "missing file accepted"
 grep -q "missing.hidrep" missing.err || fail "missing file not named"
+"$READ" replay adir > /dev/null 2> dir.err && fail "a folder accepted as a report file"
+grep -q "adir: is a folder, not a report file" dir.err || fail "folder as report file: $(cat dir.err)"
 "$READ" replay est.csv -o refused.csv > /dev/null 2> notrep.err && fail "CSV accepted as a report file"
 grep -q "not a lumavel report file" notrep.err || fail "wrong message: $(cat notrep.err)"
 [ -e refused.csv ] && fail "a refused replay left refused.csv behind"
@@ -51,7 +54,7 @@ printf 'width=40\n# a comment\ntau_us=fast\n' > bad.cfg
 "$READ" config set --file bad.cfg 2> badcfg.err
 rc=$?
 [ $rc -eq 1 ] || fail "bad config file: exit $rc, expected 1"
-grep -q "bad.cfg:3: tau_us: \"fast\" is not an integer" badcfg.err || fail "config file error not named: $(cat badcfg.err)"
+grep -q "bad.cfg:3: tau_us = fast: not a whole number; tau_us must be 1000..60000000 us" badcfg.err || fail "config file error not named: $(cat badcfg.err)"
 printf 'width=40\nlens_cam0=0.1,0.2\n' > short.cfg
 "$READ" config set --file short.cfg 2> short.err
 grep -q "short.cfg:2: lens_cam0 = 0.1,0.2: 2 values, but width 40 needs 41" short.err || fail "short lens table not named: $(cat short.err)"
@@ -95,8 +98,7 @@ refused "h5.cfg:2: baseline_m = 5: baseline |h| must be 0.001..1 m" --file h5.cf
 refused "command line: misalignment_rad = 0.5: misalignment must be -0.35..0.35 rad" misalignment_rad=0.5
 refused "command line: kernels = 9:0.07: kernel orders must be 0..3" kernels=9:0.07
 refused "command line: cu0_px = 63.5: cu must be 0..width - 1 px" width=40 cu0_px=63.5
-mkdir -p adir
-refused "adir: is a directory, not a configuration file" --file adir
+refused "adir: is a folder, not a configuration file" --file adir
 printf '\357\273\277width = 40\r\n  tau_us= 250000 \r\n' > bom.cfg  # UTF-8 BOM, CRLF, spaces around =
 "$READ" config check --file bom.cfg > ok.txt 2> ok.err || fail "a BOM / spaces / CRLF file refused: $(cat ok.err)"
 grep -q "^ok: 2 setting(s) checked" ok.txt || fail "config check printed $(cat ok.txt)"
@@ -106,4 +108,10 @@ grep -q "^ok: 2 setting(s) checked" ok.txt || fail "config check printed $(cat o
 rc=$?
 [ $rc -eq 1 ] || fail "config set of a bad file: exit $rc, expected 1"
 grep -qF "h5.cfg:2: baseline_m = 5" set.err || fail "config set: $(cat set.err)"
+# Device errors are said like every other error: "lumavel-read COMMAND: error:".
+"$READ" info > /dev/null 2> nodev.err
+rc=$?
+if [ $rc -eq 3 ]; then  # no device here (the usual case on a build machine)
+  grep -q "^lumavel-read info: error: no lumavel device" nodev.err || fail "no-device message: $(cat nodev.err)"
+fi
 echo "replay CLI: ok"

@@ -2,7 +2,9 @@
 // round trip, errors that name the key (and the file and line), lens lengths.
 #include <CppUTest/TestHarness.h>
 
+#include <sys/stat.h>
 #include <unistd.h>
+#include <cstdlib>
 
 #include <cstdio>
 #include <fstream>
@@ -60,13 +62,14 @@ TEST(ConfigText, FormatThenParseIsLossless) {
 
 TEST(ConfigText, ErrorsNameTheFileLineAndKey) {
   DeviceSetup s = sample();
-  STRCMP_EQUAL("rig.cfg:3: tau_us: \"fast\" is not an integer in [0, 4294967295]",
+  STRCMP_EQUAL("rig.cfg:3: tau_us = fast: not a whole number; tau_us must be 1000..60000000 us",
                error_of(s, "width=40\n# ok so far\ntau_us=fast\n").c_str());
   CHECK(error_of(s, "width=40\nlens_cam0=0.1,x,0.2\n").find("rig.cfg:2: lens_cam0 value 2: \"x\" is not a number") == 0);
   CHECK(error_of(s, "lens_cam1=0.5,1.5\n").find("rig.cfg:1: lens_cam1 value 2: 1.5 rad is outside [-1, 1)") == 0);
   CHECK(error_of(s, "\n\nno_such_key=1\n").find("rig.cfg:3: unknown configuration key \"no_such_key\"") == 0);
   CHECK(error_of(s, "width\n").find("rig.cfg:1: \"width\" is not KEY=VALUE") == 0);
-  CHECK(error_of(s, "gyro_offset_learning=2\n").find("rig.cfg:1: gyro_offset_learning:") == 0);
+  STRCMP_EQUAL("rig.cfg:1: gyro_offset_learning = 2: gyro_offset_learning must be 0 or 1",
+               error_of(s, "gyro_offset_learning=2\n").c_str());
 }
 
 TEST(ConfigText, LensLengthMustMatchTheWidth) {
@@ -90,7 +93,7 @@ TEST(ConfigText, MissingFileIsNamed) {
     host::apply_settings_file(s, "/nonexistent/rig.cfg");
     FAIL("no error");
   } catch (const std::runtime_error& e) {
-    STRCMP_EQUAL("/nonexistent/rig.cfg: cannot open configuration file: No such file or directory", e.what());
+    STRCMP_EQUAL("/nonexistent/rig.cfg: does not exist", e.what());
   }
 }
 
@@ -126,7 +129,43 @@ TEST(ConfigText, OfflineCheckNamesTheLineTheKeyTheValueAndTheRule) {
   STRCMP_EQUAL("rig.cfg:2: cu0_px = 63.5: cu must be 0..width - 1 px", offline_refusal("width=40\ncu0_px=63.5\n").c_str());
   STRCMP_EQUAL("rig.cfg:2: lens_cam0 = 0.1,0.2: 2 values, but width 40 needs 41 (one per column edge)",
                offline_refusal("width=40\nlens_cam0=0.1,0.2\n").c_str());
-  STRCMP_EQUAL("rig.cfg:1: tau_us: \"fast\" is not an integer in [0, 4294967295]", offline_refusal("tau_us=fast\n").c_str());
+  STRCMP_EQUAL("rig.cfg:1: tau_us = fast: not a whole number; tau_us must be 1000..60000000 us",
+               offline_refusal("tau_us=fast\n").c_str());
+}
+
+// A value beyond what its field holds is told by the key's rule, the same as
+// one just outside it (not "[0, 65535]" or "out of range"); one that is no
+// number says so and the rule.
+TEST(ConfigText, ValuesBeyondTheirFieldGetTheRule) {
+  STRCMP_EQUAL("rig.cfg:1: width = -3: width must be 16..160 columns", offline_refusal("width=-3\n").c_str());
+  STRCMP_EQUAL("rig.cfg:1: width = 99999999999999999999: width must be 16..160 columns",
+               offline_refusal("width=99999999999999999999\n").c_str());
+  STRCMP_EQUAL("rig.cfg:3: fu0_px = 1e300: fu must be 1..8 * width px",
+               offline_refusal("width=40\nheight=30\nfu0_px=1e300\n").c_str());
+  STRCMP_EQUAL("rig.cfg:1: baseline_m = 1e400: baseline |h| must be 0.001..1 m",
+               offline_refusal("baseline_m=1e400\n").c_str());
+  STRCMP_EQUAL("rig.cfg:1: baseline_m = nan: not a finite number; baseline |h| must be 0.001..1 m",
+               offline_refusal("baseline_m=nan\n").c_str());
+  STRCMP_EQUAL("rig.cfg:1: gyro_offset_learning = yes: not a whole number; gyro_offset_learning must be 0 or 1",
+               offline_refusal("gyro_offset_learning=yes\n").c_str());
+  STRCMP_EQUAL("rig.cfg:1: kernels = 1x:0.07: not a whole number; kernels are ORDER:SIGMA_RAD[,...], 1..6 of them, "
+               "orders 0..3, sigmas 0.001..2 rad",
+               offline_refusal("kernels=1x:0.07\n").c_str());
+}
+
+// Two values for one key in a file, or a file that sets nothing, are refused:
+// which was meant is not for lumavel to guess.
+TEST(ConfigText, OneLensValueIsOneValue) {
+  STRCMP_EQUAL("rig.cfg:2: lens_cam0 = 0.1: 1 value, but width 40 needs 41 (one per column edge)",
+               offline_refusal("width=40\nlens_cam0=0.1\n").c_str());
+}
+
+TEST(ConfigText, AKeyTwiceInAFileOrNoSettingIsRefused) {
+  const std::string twice = offline_refusal("width=40\nheight=30\nwidth=20\n");
+  STRCMP_CONTAINS("rig.cfg:3: width is given again (first at ", twice.c_str());
+  STRCMP_CONTAINS(".cfg:1): one value per key in a file", twice.c_str());
+  CHECK(offline_refusal("# only a comment\n\n").find(".cfg: no KEY=VALUE line (only blank lines and # comments)") !=
+        std::string::npos);
 }
 
 // What depends on a key not given is not refused: the device may have it.
@@ -155,8 +194,32 @@ TEST(ConfigText, ADirectoryIsNotAConfigurationFile) {
     host::apply_settings_file(s, "/tmp");
     FAIL("a directory was read as a configuration file");
   } catch (const std::runtime_error& e) {
-    STRCMP_EQUAL("/tmp: is a directory, not a configuration file", e.what());
+    STRCMP_EQUAL("/tmp: is a folder, not a configuration file", e.what());
   }
+}
+
+// A FIFO is refused before it is opened: reading one would wait for a writer.
+TEST(ConfigText, AFifoOrADeviceIsNotAConfigurationFile) {
+  DeviceSetup s = sample();
+  char dir[] = "/tmp/lumavel_cfg_fifo_XXXXXX";
+  CHECK(mkdtemp(dir) != nullptr);
+  const std::string fifo = std::string(dir) + "/rig.cfg";
+  CHECK(::mkfifo(fifo.c_str(), 0600) == 0);
+  std::string fifo_error, device_error;
+  try {
+    host::apply_settings_file(s, fifo);
+  } catch (const std::runtime_error& e) {
+    fifo_error = e.what();
+  }
+  ::unlink(fifo.c_str());
+  ::rmdir(dir);
+  STRCMP_EQUAL((fifo + ": is a FIFO (named pipe), not a configuration file").c_str(), fifo_error.c_str());
+  try {
+    host::apply_settings_file(s, "/dev/zero");
+  } catch (const std::runtime_error& e) {
+    device_error = e.what();
+  }
+  STRCMP_EQUAL("/dev/zero: is a character device node, not a configuration file", device_error.c_str());
 }
 
 // With the device's configuration: the key given is blamed; a device value

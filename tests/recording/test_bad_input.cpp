@@ -2,7 +2,10 @@
 // is refused with one message that names the file and the line or frame.
 #include <png.h>
 
+#include <sys/stat.h>
+
 #include <cstdio>
+#include <filesystem>
 
 #include "lumavel/host/file_camera.hpp"
 #include "lumavel/host/image_io.hpp"
@@ -52,12 +55,12 @@ TEST(BadInput, MissingRecordingFolder) {
 
 TEST(BadInput, MissingSensorYaml) {
   std::remove((m + "cam1/sensor.yaml").c_str());
-  STRCMP_CONTAINS((m + "cam1/sensor.yaml: cannot open").c_str(), load_error().c_str());
+  STRCMP_CONTAINS((m + "cam1/sensor.yaml: does not exist").c_str(), load_error().c_str());
 }
 
 TEST(BadInput, MissingDataCsv) {
   std::remove((m + "imu0/data.csv").c_str());
-  STRCMP_CONTAINS((m + "imu0/data.csv: cannot open").c_str(), load_error().c_str());
+  STRCMP_CONTAINS((m + "imu0/data.csv: does not exist").c_str(), load_error().c_str());
 }
 
 TEST(BadInput, MissingHeaderLine) {
@@ -260,4 +263,84 @@ TEST(BadInput, NoFramesOrNoGyro) {
   fixture::write_lines(m + "cam0/data.csv", {"#timestamp [ns],filename"});
   fixture::write_lines(m + "cam1/data.csv", {"#timestamp [ns],filename"});
   STRCMP_CONTAINS((m + "cam0/data.csv:2: no frames").c_str(), load_error().c_str());
+}
+
+// What is at a path that cannot be read is said as it is: never "does not
+// exist" for a folder, a FIFO, a device node or a symlink loop, never "empty
+// file" for a folder; a FIFO or a device is never opened (it would hang).
+namespace {
+void replace_by_folder(const std::string& p) {
+  std::filesystem::remove(p);
+  std::filesystem::create_directory(p);
+}
+}  // namespace
+
+TEST(BadInput, RecordingThatIsNotAFolderSaysWhatItIs) {
+  const std::string file = dir.path() + "/afile";
+  fixture::write_text(file, "x");
+  STRCMP_EQUAL((file + ": is a file, not a recording folder").c_str(), error_of([&] { load_recording(file); }).c_str());
+  STRCMP_EQUAL("/dev/null: is a character device node, not a recording folder",
+               error_of([&] { load_recording("/dev/null"); }).c_str());
+  const std::string fifo = dir.path() + "/fifo";
+  CHECK(::mkfifo(fifo.c_str(), 0600) == 0);
+  STRCMP_EQUAL((fifo + ": is a FIFO (named pipe), not a recording folder").c_str(),
+               error_of([&] { load_recording(fifo); }).c_str());
+  const std::string a = dir.path() + "/loop_a", b = dir.path() + "/loop_b";
+  std::filesystem::create_symlink(b, a);
+  std::filesystem::create_symlink(a, b);
+  STRCMP_CONTAINS((a + ": is a loop of symbolic links").c_str(), error_of([&] { load_recording(a); }).c_str());
+  STRCMP_CONTAINS((file + "/rec: does not exist (a part of the path before it is a file").c_str(),
+                  error_of([&] { load_recording(file + "/rec"); }).c_str());
+}
+
+TEST(BadInput, RecordingPathTooLongIsSaidShortened) {
+  const std::string longest(5000, 'x');
+  const std::string e = error_of([&] { load_recording(longest); });
+  STRCMP_CONTAINS("(5000 characters): the path is too long for the system (at most 4096 characters", e.c_str());
+  CHECK(e.size() < 400);
+}
+
+TEST(BadInput, DataCsvThatIsAFolderIsNotAnEmptyFile) {
+  replace_by_folder(m + "cam0/data.csv");
+  STRCMP_EQUAL((m + "cam0/data.csv: is a folder, not a file").c_str(), load_error().c_str());
+}
+
+TEST(BadInput, GyroCsvThatIsAFifoIsRefusedWithoutOpeningIt) {
+  std::remove((m + "imu0/data.csv").c_str());
+  CHECK(::mkfifo((m + "imu0/data.csv").c_str(), 0600) == 0);
+  STRCMP_EQUAL((m + "imu0/data.csv: is a FIFO (named pipe), not a file").c_str(), load_error().c_str());
+}
+
+TEST(BadInput, SensorYamlThatIsAFolderOrEmpty) {
+  replace_by_folder(m + "cam1/sensor.yaml");
+  STRCMP_EQUAL((m + "cam1/sensor.yaml: is a folder, not a file").c_str(), load_error().c_str());
+  std::filesystem::remove(m + "cam1/sensor.yaml");
+  fixture::write_text(m + "cam1/sensor.yaml", "");
+  STRCMP_CONTAINS((m + "cam1/sensor.yaml: empty file").c_str(), load_error().c_str());
+  fixture::write_text(m + "cam1/sensor.yaml", "\n- a list\n");
+  STRCMP_CONTAINS((m + "cam1/sensor.yaml:2: not a YAML mapping of sensor keys").c_str(), load_error().c_str());
+}
+
+TEST(BadInput, ImageThatIsAFolderOrADevice) {
+  replace_by_folder(image(0, 6));
+  STRCMP_CONTAINS((m + "cam0/data.csv:8: image file " + image(0, 6) + " is a folder, not a file").c_str(),
+                  load_error().c_str());
+  std::filesystem::remove(image(0, 6));
+  std::filesystem::create_symlink("/dev/zero", image(0, 6));
+  STRCMP_CONTAINS(("image file " + image(0, 6) + " is a character device node, not a file").c_str(),
+                  load_error().c_str());
+}
+
+// A ground truth that is there but unreadable is refused, not taken for "no
+// ground truth" (a run without figures and exit 0).
+TEST(BadInput, GroundTruthThatIsAFolderIsNotIgnored) {
+  replace_by_folder(m + "state_groundtruth_estimate0/data.csv");
+  STRCMP_EQUAL((m + "state_groundtruth_estimate0/data.csv: is a folder, not a file").c_str(), load_error().c_str());
+}
+
+TEST(BadInput, Mav0ThatIsNotAFolder) {
+  const std::string r = dir.path() + "/flat";
+  std::filesystem::create_directory(r);
+  fixture::write_text(r + "/mav0", "x");
+  STRCMP_EQUAL((r + "/mav0: is a file, not a folder").c_str(), error_of([&] { load_recording(r); }).c_str());
 }

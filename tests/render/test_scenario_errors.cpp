@@ -1,5 +1,9 @@
 // Scenario parsing: a bad key or value is refused with FILE:LINE and the key.
 #include <CppUTest/TestHarness.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cstdlib>
 
 #include <string>
 
@@ -125,6 +129,32 @@ TEST(ScenarioErrors, MissingFileIsNamed) {
   } catch (const ScenarioError& e) {
     STRCMP_CONTAINS("/nonexistent/scenario.yaml", e.what());
   }
+}
+
+// A scenario path that is not a regular file says what it is; a FIFO is
+// never opened (render would wait on it forever); an empty file is empty.
+TEST(ScenarioErrors, ScenarioThatIsNotAFileSaysWhatItIs) {
+  auto load_error = [](const std::string& path) -> std::string {
+    try {
+      load_scenario(path);
+    } catch (const ScenarioError& e) {
+      return e.what();
+    }
+    return "(accepted)";
+  };
+  STRCMP_EQUAL("/nonexistent/scenario.yaml: does not exist", load_error("/nonexistent/scenario.yaml").c_str());
+  STRCMP_EQUAL("/tmp: is a folder, not a scenario file", load_error("/tmp").c_str());
+  STRCMP_EQUAL("/dev/null: is a character device node, not a scenario file", load_error("/dev/null").c_str());
+  char fifo[] = "/tmp/lumavel_scenario_fifo_XXXXXX";
+  CHECK(mkdtemp(fifo) != nullptr);
+  const std::string dir = fifo, path = dir + "/s.yaml";
+  CHECK(::mkfifo(path.c_str(), 0600) == 0);
+  const std::string e = load_error(path);
+  ::unlink(path.c_str());
+  ::rmdir(dir.c_str());
+  STRCMP_EQUAL((path + ": is a FIFO (named pipe), not a scenario file").c_str(), e.c_str());
+  STRCMP_CONTAINS("bad.yaml: empty file", error_of("").c_str());
+  STRCMP_CONTAINS("bad.yaml:1: a scenario must be a YAML map", error_of("- a list").c_str());
 }
 
 TEST(ScenarioErrors, OverridesApply) {

@@ -1,6 +1,7 @@
 // lumavel-sim as a user sees it: exit codes, messages, files written.
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <string>
 
@@ -15,6 +16,12 @@ struct Outcome {
   int code;
   std::string out, err;
 };
+
+// The 1-based number of the line of `text` that starts with `key`, as text.
+std::string line_of(const std::string& text, const std::string& key) {
+  const size_t at = text.rfind("\n" + key) + 1;
+  return std::to_string(1 + std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
+}
 
 }  // namespace
 
@@ -125,9 +132,19 @@ TEST(Cli, UsageErrorsExitTwo) {
 }
 
 TEST(Cli, MissingRecordingExitsOne) {
-  const Outcome r = sim("run nowhere");
+  Outcome r = sim("run nowhere");
   LONGS_EQUAL(1, r.code);
-  STRCMP_CONTAINS("lumavel-sim run: error: nowhere:", r.err.c_str());
+  STRCMP_CONTAINS("lumavel-sim run: error: nowhere: recording folder does not exist", r.err.c_str());
+  fixture::write_text(dir.path() + "/afile", "x");
+  r = sim("run afile");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("lumavel-sim run: error: afile: is a file, not a recording folder", r.err.c_str());
+  r = sim("render . out");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("lumavel-sim render: error: .: is a folder, not a scenario file", r.err.c_str());
+  r = sim("render '" LUMAVEL_SOURCE_DIR "/host_sim/scenarios/paper_sim_aligned.yaml' afile --duration 0.1 -q");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("lumavel-sim render: error: afile: is a file, not a folder to write the recording in", r.err.c_str());
 }
 
 TEST(Cli, BadGyroNamesFileAndLineAndLeavesNoOutput) {
@@ -226,10 +243,13 @@ TEST(Cli, NoGroundTruthNoPlotUnlessAsked) {
 }
 
 TEST(Cli, WorkingSizeLargerThanTheSensorIsRefused) {
-  rec();
+  const std::string yaml = fixture::read_text(rec() + "/mav0/cam0/sensor.yaml");
   const Outcome r = sim("run rec --width 64");
   LONGS_EQUAL(1, r.code);
-  STRCMP_CONTAINS("cam0/sensor.yaml: cannot bin the 40x30 sensor up to the working resolution 64x30", r.err.c_str());
+  STRCMP_CONTAINS(("cam0/sensor.yaml:" + line_of(yaml, "resolution:") +
+                   ": cannot bin the 40x30 sensor up to the working resolution 64x30")
+                      .c_str(),
+                  r.err.c_str());
 }
 
 // The fixture's cameras carry a small radial-tangential distortion: corrected
@@ -322,8 +342,21 @@ TEST(Cli, ConfigurationRefusalsNameTheFileTheValueAndTheRule) {
   fixture::write_text(yaml, text);
   Outcome r = sim("run rec -o est.csv");
   LONGS_EQUAL(1, r.code);
-  STRCMP_CONTAINS("rec/mav0/cam0/sensor.yaml and cam1/sensor.yaml: T_BS", r.err.c_str());
+  STRCMP_CONTAINS(("rec/mav0/cam0/sensor.yaml:" + line_of(text, "T_BS:") + " and cam1/sensor.yaml:" +
+                   line_of(text, "T_BS:") + ": T_BS").c_str(),
+                  r.err.c_str());
   STRCMP_CONTAINS("baseline h = 200.08 m does not fit its fixed-point format (|value| < 128 m)", r.err.c_str());
+  std::filesystem::remove_all(dir.path() + "/rec");
+  const std::string yaml0 = rec() + "/mav0/cam0/sensor.yaml";
+  text = fixture::read_text(yaml0);
+  const size_t in = text.find("intrinsics: [") + 13;
+  text.replace(in, text.find(',', in) - in, "1e300");
+  fixture::write_text(yaml0, text);
+  r = sim("run rec -o est.csv");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS(("rec/mav0/cam0/sensor.yaml:" + line_of(text, "intrinsics:") +
+                   ": intrinsics (at the working resolution): focal length fu = 1e+300 px does not fit").c_str(),
+                  r.err.c_str());
   fixture::Options slow;
   slow.t0 = 5000000000ull;
   slow.frame_dt = 2000000000ull;  // 2 s between frames
@@ -371,4 +404,51 @@ TEST(Cli, ThePlotRendersToAPng) {
   CHECK(bytes.compare(1, 3, "PNG") == 0);
   STRCMP_EQUAL("", fixture::read_text(dir.path() + "/rsvg.err").c_str());
   STRCMP_CONTAINS(">FRAME_GAP<", fixture::read_text(svg).c_str());
+}
+
+// An output that cannot be written is refused before the work that fills it
+// (a 30 s calibration, a run), naming the option, the path and the reason.
+TEST(Cli, UnwritableOutputsAreRefusedBeforeTheWork) {
+  rec();
+  std::filesystem::create_directory(dir.path() + "/adir");
+  Outcome r = sim("run rec -o adir");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("lumavel-sim run: error: adir (-o): is a folder, not a CSV file", r.err.c_str());
+  CHECK(r.err.find("frame pairs") == std::string::npos);  // refused before the run
+  r = sim("run rec -o est.csv --plot nowhere/p.svg");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("nowhere/p.svg (--plot): cannot be created: its folder nowhere does not exist", r.err.c_str());
+  CHECK(!exists(dir.path() + "/est.csv"));
+  r = sim("run rec -o est.csv --hid file:r.hidrep --hid-config adir");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("adir (--hid-config): is a folder, not a configuration file", r.err.c_str());
+  r = sim("run rec -o est.csv --hid file:r.hidrep --hid-config /dev/zero");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("/dev/zero (--hid-config): is a character device node, not a configuration file", r.err.c_str());
+  r = sim("run rec -o est.csv --hid file:adir");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("adir (--hid file:): is a folder, not a report file", r.err.c_str());
+  r = sim("calibrate rec --write adir");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("lumavel-sim calibrate: error: adir (--write): is a folder, not a configuration file", r.err.c_str());
+  CHECK(r.err.find("registering") == std::string::npos);
+}
+
+// Below the 160 columns calibrate is validated at, it says so, one sentence a
+// line, and why the columns are fewer (the sensor's width or --width).
+TEST(Cli, CalibrateWarnsWhenCoarserThanValidated) {
+  rec();
+  Outcome r = sim("calibrate rec -q");
+  STRCMP_CONTAINS("calibrate: warning: registering at 40 columns (the sensor's width: rec has 40 columns)\n"
+                  "calibrate: warning: calibrate is validated at 160 columns (docs/results.md); on coarser images\n"
+                  "  its estimate and its uncertainty are less reliable\n",
+                  r.err.c_str());
+  r = sim("calibrate rec -q --width 20");
+  STRCMP_CONTAINS("calibrate: warning: registering at 20 columns (--width)\n", r.err.c_str());
+}
+
+// The same short options in every command that has them.
+TEST(Cli, QuietIsDashQEverywhere) {
+  for (const char* cmd : {"run", "render", "calibrate"})
+    STRCMP_CONTAINS("-q,--quiet", sim(std::string(cmd) + " --help").out.c_str());
 }

@@ -114,7 +114,7 @@ TEST(TrackPlot, FlaggedFramesAreShadedAndNamed) {
   STRCMP_CONTAINS(">SATURATED: saturated pixels or arithmetic, 50 frames<", svg.c_str());
   STRCMP_CONTAINS(">FRAME_GAP: frame gap, 1 frame<", svg.c_str());
   STRCMP_CONTAINS(">FRAME_GAP<", svg.c_str());
-  STRCMP_CONTAINS("flagged: 10 % of frames", svg.c_str());
+  STRCMP_CONTAINS("a fault flagged on 10 % of frames", svg.c_str());
   CHECK(count(svg, "fill=\"#CC79A7\" fill-opacity=\"0.16\"") == 2);  // one band in each panel
   CHECK(track_svg(track(500, true), "x").find("no status flag raised") != std::string::npos);
 }
@@ -162,4 +162,45 @@ TEST(TrackPlot, OneFrameIsDrawn) {
   const std::string svg = track_svg({{5000000000ull, 0.5, 0.52}}, "x");
   CHECK(count(svg, "<circle") >= 2);  // the estimate and the truth
   CHECK(svg.find("nan") == std::string::npos);
+}
+
+// CONVERGING and NO_TOF have lanes but are not faults: the figures line does
+// not say "no frame flagged" over lanes that show flags.
+TEST(TrackPlot, OnlyFaultsCountAsFlagged) {
+  std::vector<TrackPoint> t = track(500, true);
+  for (size_t i = 0; i < 30; ++i) t[i].status = lumavel::kStatusConverging | lumavel::kStatusNoTof;
+  const std::string svg = track_svg(t, "x");
+  STRCMP_CONTAINS(">CONVERGING<", svg.c_str());
+  STRCMP_CONTAINS("no fault flagged", svg.c_str());
+  CHECK(svg.find("no frame flagged") == std::string::npos);
+}
+
+// The key under the time axis: each entry starts after the previous one's
+// words end (11 px text is about 6.3 px a character when rendered).
+TEST(TrackPlot, KeyEntriesDoNotOverlap) {
+  std::vector<TrackPoint> t = track(600, true);
+  for (size_t i = 0; i < 54; ++i) t[i].status |= lumavel::kStatusConverging;
+  for (size_t i = 100; i < 135; ++i) t[i].status |= lumavel::kStatusLowTexture;
+  for (size_t i = 200; i < 300; ++i) t[i].status |= lumavel::kStatusSaturated;
+  for (size_t i = 0; i < 142; ++i) t[i].status |= lumavel::kStatusNoTof;
+  const std::string svg = track_svg(t, "x");
+  std::vector<Label> key;
+  for (const Label& l : labels(svg))
+    if (l.text.find(" frames") != std::string::npos && l.text.find(": ") != std::string::npos) key.push_back(l);
+  LONGS_EQUAL(4, key.size());
+  for (size_t i = 1; i < key.size(); ++i)
+    if (key[i].y == key[i - 1].y)
+      CHECK_TEXT(key[i].x - key[i - 1].x >= 6.3 * static_cast<double>(key[i - 1].text.size()) + 14,
+                 (key[i - 1].text + " / " + key[i].text).c_str());
+}
+
+// Points clipped at both edges in the same place get a triangle on each.
+TEST(TrackPlot, ClippedBothWaysIsMarkedOnBothEdges) {
+  std::vector<TrackPoint> t;
+  for (size_t i = 0; i < 600; ++i) t.push_back({i * 16666667ull, 1.0 + 0.001 * std::sin(0.1 * static_cast<double>(i)), 1.0});
+  t[0].v_est = 0;   // starts at 0: below the speed axis
+  t[1].v_est = 5;   // overshoots: above it, one pixel column later
+  const std::string svg = track_svg(t, "x");
+  STRCMP_CONTAINS("2 frames beyond the axis, down to 0, up to 5 m/s", svg.c_str());
+  LONGS_EQUAL(3, count(svg, "Z\" fill=\"#0072B2\""));  // a triangle on each edge, and the legend's
 }

@@ -1,6 +1,8 @@
 // Command line of `lumavel-sim calibrate`.
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <cstdio>
 #include <fstream>
 #include <memory>
@@ -9,6 +11,7 @@
 
 #include "lumavel/host/calibrate.hpp"
 #include "lumavel/host/device_setup_from_rig.hpp"
+#include "lumavel/host/path_check.hpp"
 #include "lumavel/host/progress.hpp"
 #include "lumavel/host/rig.hpp"
 
@@ -58,15 +61,18 @@ class StageProgress {
 
 int calibrate(CalibrateArgs& a) {
   if (!a.write_size.empty() && a.write_path.empty()) throw cli::UsageError("--write-size needs --write FILE");
+  if (!a.write_path.empty())  // refused before the registration, not after it
+    if (const std::string why = why_not_writable(a.write_path, "configuration file"); !why.empty())
+      throw std::runtime_error(shown_path(a.write_path) + " (--write): " + why);
   const Recording rec = load_recording(a.rec);
   WorkingSize write_size = default_working_size(rec);
   if (!a.write_size.empty()) cli::parse_size(a.write_size, write_size.width, write_size.height);
   const int columns = std::min(a.opt.width, rec.cam[0].width);
   if (columns < kRegistrationColumns)
     std::fprintf(stderr,
-                 "calibrate: warning: registering at %d columns (%s); calibrate is validated at %d\n"
-                 "columns (docs/results.md): on coarser images its estimate and its uncertainty are\n"
-                 "less reliable.\n",
+                 "calibrate: warning: registering at %d columns (%s)\n"
+                 "calibrate: warning: calibrate is validated at %d columns (docs/results.md); on coarser images\n"
+                 "  its estimate and its uncertainty are less reliable\n",
                  columns,
                  columns < a.opt.width ? ("the sensor's width: " + a.rec + " has " + std::to_string(rec.cam[0].width) +
                                           " columns").c_str()
@@ -99,7 +105,7 @@ int calibrate(CalibrateArgs& a) {
       << "# send with: lumavel-read config set --file " << a.write_path << "\n"
       << format_setup(setup);
   out.close();
-  if (!out) throw std::runtime_error(a.write_path + ": cannot write the configuration file");
+  if (!out) throw std::runtime_error(a.write_path + ": cannot write the configuration file: " + std::strerror(errno));
   std::printf("wrote %s (%dx%d working, lens tables: %s); send to a board: lumavel-read config set --file %s\n",
               a.write_path.c_str(), setup.config.width, setup.config.height,
               setup.config.lens == 0 ? "none, pinhole" : setup.config.lens == 3 ? "both cameras" : "one camera",

@@ -1,6 +1,6 @@
 #include "lumavel/host/config_text.hpp"
 
-#include <sys/stat.h>
+#include "lumavel/host/path_check.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -26,29 +26,38 @@ std::string num(double v) {
   return b;
 }
 
-double parse_double(const std::string& key, const std::string& v) {
+// A value that cannot be stored in its field. apply_setting adds the key,
+// the value and the key's rule: a value that is a number beyond what the
+// field holds (-3 columns, 1e300 px) is told by the rule alone.
+class BadValue : public std::runtime_error {
+ public:
+  BadValue(const std::string& problem, bool beyond) : std::runtime_error(problem), beyond_field(beyond) {}
+  bool beyond_field;  // a number, but too large or too small for the field
+};
+
+double parse_double(const std::string& v) {
   char* end = nullptr;
+  errno = 0;
   const double d = std::strtod(v.c_str(), &end);
-  if (v.empty() || *end != '\0' || !std::isfinite(d)) {
-    throw std::runtime_error(key + ": \"" + v + "\" is not a number");
-  }
+  if (v.empty() || *end != '\0') throw BadValue("not a number", false);
+  if (std::isnan(d)) throw BadValue("not a finite number", false);
+  if (std::isinf(d) || errno == ERANGE) throw BadValue("beyond any field", true);
   return d;
 }
 
-long long parse_int(const std::string& key, const std::string& v, long long lo, long long hi) {
+long long parse_int(const std::string& v, long long lo, long long hi) {
   char* end = nullptr;
+  errno = 0;
   const long long n = std::strtoll(v.c_str(), &end, 10);
-  if (v.empty() || *end != '\0' || n < lo || n > hi) {
-    throw std::runtime_error(key + ": \"" + v + "\" is not an integer in [" + std::to_string(lo) +
-                             ", " + std::to_string(hi) + "]");
-  }
+  if (v.empty() || *end != '\0') throw BadValue("not a whole number", false);
+  if (errno == ERANGE || n < lo || n > hi) throw BadValue("beyond its field", true);
   return n;
 }
 
 // Physical value to a signed 32-bit fixed-point number with `frac` bits.
-int32_t to_q(const std::string& key, const std::string& v, int frac) {
-  const double q = std::round(parse_double(key, v) * std::ldexp(1.0, frac));
-  if (q < -2147483648.0 || q > 2147483647.0) throw std::runtime_error(key + ": " + v + " out of range");
+int32_t to_q(const std::string& v, int frac) {
+  const double q = std::round(parse_double(v) * std::ldexp(1.0, frac));
+  if (q < -2147483648.0 || q > 2147483647.0) throw BadValue("beyond its fixed-point field", true);
   return static_cast<int32_t>(q);
 }
 
@@ -88,8 +97,8 @@ void parse_kernels(proto::DeviceConfig& c, const std::string& v) {
                                std::to_string(proto::kWireKernels) + " kernels");
     }
     proto::KernelSetting& k = n.kernels[n.kernel_count++];
-    k.order = static_cast<uint8_t>(parse_int("kernels order", item.substr(0, colon), 0, 255));
-    k.sigma = to_q("kernels sigma", item.substr(colon + 1), 28);
+    k.order = static_cast<uint8_t>(parse_int(item.substr(0, colon), 0, 255));
+    k.sigma = to_q(item.substr(colon + 1), 28);
     if (comma == std::string::npos) break;
     start = comma + 1;
   }
@@ -112,7 +121,13 @@ std::vector<EdgeOffsetQ15> parse_lens(const std::string& key, const std::string&
     const size_t comma = v.find(',', start);
     const std::string item = v.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
     const std::string where = key + " value " + std::to_string(out.size() + 1);
-    const int32_t q = to_q(where, item, fx::kEdgeOffsetFrac);
+    int32_t q = 0;
+    try {
+      q = to_q(item, fx::kEdgeOffsetFrac);
+    } catch (const BadValue& e) {
+      if (!e.beyond_field) throw std::runtime_error(where + ": \"" + item + "\" is " + e.what());
+      q = INT32_MAX;
+    }
     if (q < -32768 || q > 32767) throw std::runtime_error(where + ": " + item + " rad is outside [-1, 1)");
     out.push_back(static_cast<EdgeOffsetQ15>(q));
     if (comma == std::string::npos) break;
@@ -121,7 +136,11 @@ std::vector<EdgeOffsetQ15> parse_lens(const std::string& key, const std::string&
   return out;
 }
 
-bool flag(const std::string& k, const std::string& v) { return parse_int(k, v, 0, 1) != 0; }
+bool flag(const std::string& v) { return parse_int(v, 0, 1) != 0; }
+
+// The rule a key's value must follow, in words (proto::rule_of where the key
+// sets a field the device validates).
+std::string rule_of_key(const std::string& key);
 
 }  // namespace
 
@@ -196,12 +215,10 @@ std::pair<std::string, std::string> split_setting(const std::string& kv) {
 
 // The text of FILE; refuses what is not a readable regular file by its name.
 std::string read_settings_file(const std::string& path) {
-  struct stat st {};
-  if (::stat(path.c_str(), &st) != 0)
-    throw std::runtime_error(path + ": cannot open configuration file: " + std::strerror(errno));
-  if (S_ISDIR(st.st_mode)) throw std::runtime_error(path + ": is a directory, not a configuration file");
+  if (const std::string why = why_not_a_file(path, "configuration file"); !why.empty())
+    throw std::runtime_error(shown_path(path) + ": " + why);
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path + ": cannot open configuration file");
+  if (!in) throw std::runtime_error(path + ": cannot open configuration file: " + std::strerror(errno));
   std::ostringstream text;
   text << in.rdbuf();
   return text.str();
@@ -223,47 +240,65 @@ void for_each_setting_line(const std::string& text, F f) {
 
 }  // namespace
 
-void apply_setting(DeviceSetup& d, const std::string& kv) {
+namespace {
+
+void apply_value(DeviceSetup& d, const std::string& k, const std::string& v) {
   proto::DeviceConfig& c = d.config;
-  const auto [k, v] = split_setting(kv);
   const long long u32 = 4294967295LL;
   auto option = [&](uint8_t b) {
-    c.options = static_cast<uint8_t>(flag(k, v) ? (c.options | b) : (c.options & ~b));
+    c.options = static_cast<uint8_t>(flag(v) ? (c.options | b) : (c.options & ~b));
   };
   auto bit = [&](uint8_t b) {
-    const bool on = parse_int(k, v, 0, 1) != 0;
+    const bool on = flag(v);
     c.orientation = static_cast<uint8_t>(on ? (c.orientation | b) : (c.orientation & ~b));
   };
-  if (k == "width") c.width = static_cast<uint16_t>(parse_int(k, v, 0, 65535));
-  else if (k == "height") c.height = static_cast<uint16_t>(parse_int(k, v, 0, 65535));
-  else if (k == "baseline_m") c.baseline = to_q(k, v, 24);
-  else if (k == "misalignment_rad") c.misalignment = to_q(k, v, 28);
-  else if (k == "fu0_px") c.fu[0] = to_q(k, v, 16);
-  else if (k == "cu0_px") c.cu[0] = to_q(k, v, 16);
-  else if (k == "fu1_px") c.fu[1] = to_q(k, v, 16);
-  else if (k == "cu1_px") c.cu[1] = to_q(k, v, 16);
+  if (k == "width") c.width = static_cast<uint16_t>(parse_int(v, 0, 65535));
+  else if (k == "height") c.height = static_cast<uint16_t>(parse_int(v, 0, 65535));
+  else if (k == "baseline_m") c.baseline = to_q(v, 24);
+  else if (k == "misalignment_rad") c.misalignment = to_q(v, 28);
+  else if (k == "fu0_px") c.fu[0] = to_q(v, 16);
+  else if (k == "cu0_px") c.cu[0] = to_q(v, 16);
+  else if (k == "fu1_px") c.fu[1] = to_q(v, 16);
+  else if (k == "cu1_px") c.cu[1] = to_q(v, 16);
   else if (k == "look") {
     if (v != "left" && v != "right") throw std::runtime_error("look: use left or right, not \"" + v + "\"");
     c.orientation = static_cast<uint8_t>(v == "right" ? (c.orientation | proto::kLooksRight)
                                                       : (c.orientation & ~proto::kLooksRight));
   } else if (k == "cam0_upside_down") bit(proto::kCam0UpsideDown);
   else if (k == "cam1_upside_down") bit(proto::kCam1UpsideDown);
-  else if (k == "normaliser_sigma_rad") c.normaliser_sigma = to_q(k, v, 28);
+  else if (k == "normaliser_sigma_rad") c.normaliser_sigma = to_q(v, 28);
   else if (k == "kernels") parse_kernels(c, v);
-  else if (k == "tau_us") c.tau_us = static_cast<uint32_t>(parse_int(k, v, 0, u32));
-  else if (k == "frame_period_us") c.frame_period_us = static_cast<uint32_t>(parse_int(k, v, 0, u32));
-  else if (k == "max_gap_us") c.max_gap_us = static_cast<uint32_t>(parse_int(k, v, 0, u32));
-  else if (k == "gyro_gap_us") c.gyro_gap_us = static_cast<uint32_t>(parse_int(k, v, 0, u32));
-  else if (k == "low_texture") c.low_texture = to_q(k, v, 28);
-  else if (k == "saturated_permille") c.saturated_permille = static_cast<uint16_t>(parse_int(k, v, 0, 65535));
+  else if (k == "tau_us") c.tau_us = static_cast<uint32_t>(parse_int(v, 0, u32));
+  else if (k == "frame_period_us") c.frame_period_us = static_cast<uint32_t>(parse_int(v, 0, u32));
+  else if (k == "max_gap_us") c.max_gap_us = static_cast<uint32_t>(parse_int(v, 0, u32));
+  else if (k == "gyro_gap_us") c.gyro_gap_us = static_cast<uint32_t>(parse_int(v, 0, u32));
+  else if (k == "low_texture") c.low_texture = to_q(v, 28);
+  else if (k == "saturated_permille") c.saturated_permille = static_cast<uint16_t>(parse_int(v, 0, 65535));
   else if (k == "baseline_correction") option(kOptionBaselineCorrection);
   else if (k == "gyro_offset_learning") option(kOptionGyroOffsetLearning);
   else if (k == "photometric_balance") option(kOptionPhotometricBalance);
-  else if (k == "still_distance_m") c.still_distance = to_q(k, v, fx::kLengthFrac);
-  else if (k == "still_min_us") c.still_min_us = static_cast<uint32_t>(parse_int(k, v, 0, u32));
+  else if (k == "still_distance_m") c.still_distance = to_q(v, fx::kLengthFrac);
+  else if (k == "still_min_us") c.still_min_us = static_cast<uint32_t>(parse_int(v, 0, u32));
   else if (k == "lens_cam0") d.lens[0] = parse_lens(k, v);
   else if (k == "lens_cam1") d.lens[1] = parse_lens(k, v);
   else throw std::runtime_error("unknown configuration key \"" + k + "\"; keys:\n" + config_keys_help());
+}
+
+}  // namespace
+
+void apply_setting(DeviceSetup& d, const std::string& kv) {
+  const auto [k, v] = split_setting(kv);
+  try {
+    apply_value(d, k, v);
+  } catch (const BadValue& e) {
+    // "width = 40x: not a whole number; width must be 16..160 columns";
+    // "width = -3: width must be 16..160 columns" (as for 0, which parses).
+    std::string value = v;
+    if (value.size() > 40) value = value.substr(0, 37) + "...";
+    const std::string rule = rule_of_key(k);
+    throw std::runtime_error(k + " = " + value + ": " +
+                             (e.beyond_field ? rule : std::string(e.what()) + (rule.empty() ? "" : "; " + rule)));
+  }
 }
 
 void apply_settings_text(DeviceSetup& s, const std::string& text, const std::string& name) {
@@ -294,7 +329,20 @@ void GivenSettings::add(const std::string& kv, const std::string& where) {
 
 void GivenSettings::add_file(const std::string& path) {
   const std::string text = read_settings_file(path);
-  for_each_setting_line(text, [&](size_t n, const std::string& line) { add(line, path + ":" + std::to_string(n)); });
+  const size_t first = items.size();
+  for_each_setting_line(text, [&](size_t n, const std::string& line) {
+    const std::string where = path + ":" + std::to_string(n);
+    add(line, where);
+    // Within one file a key is given once: which of two values was meant is
+    // not for lumavel to guess (files and the command line after them do
+    // override earlier ones, as documented).
+    for (size_t i = first; i + 1 < items.size(); ++i)
+      if (items[i].key == items.back().key)
+        throw std::runtime_error(where + ": " + items.back().key + " is given again (first at " + items[i].where +
+                                 "): one value per key in a file");
+  });
+  if (items.size() == first)
+    throw std::runtime_error(shown_path(path) + ": no KEY=VALUE line (only blank lines and # comments)");
 }
 
 bool GivenSettings::has(const std::string& key) const {
@@ -334,6 +382,26 @@ std::vector<std::string> keys_of(proto::ConfigField f) {
     case F::kLens: return {"lens_cam0", "lens_cam1", "width"};
     default: return {};
   }
+}
+
+std::string rule_of_key(const std::string& key) {
+  using F = proto::ConfigField;
+  if (key == "kernels")
+    return "kernels are ORDER:SIGMA_RAD[,...], 1.." + std::to_string(proto::kWireKernels) +
+           " of them, orders 0..3, sigmas 0.001..2 rad";
+  if (key == "cam0_upside_down" || key == "cam1_upside_down" || key == "baseline_correction" ||
+      key == "gyro_offset_learning" || key == "photometric_balance")
+    return key + " must be 0 or 1";
+  // The field each key sets first (fu and cu before the width their rules involve).
+  for (F f : {F::kWidth, F::kHeight, F::kBaseline, F::kMisalignment, F::kFocalLength, F::kPrincipalPoint,
+              F::kNormaliserSigma, F::kTau, F::kFramePeriod, F::kMaxGap, F::kGyroGap, F::kLowTexture,
+              F::kSaturatedPermille, F::kStillDistance, F::kStillDuration}) {
+    const std::vector<std::string> keys = keys_of(f);
+    if (!keys.empty() && keys.front() == key) return proto::rule_of(f);
+    if (f == F::kFocalLength || f == F::kPrincipalPoint)
+      if (std::find(keys.begin(), keys.end(), key) != keys.end() && key != "width") return proto::rule_of(f);
+  }
+  return "";
 }
 
 // validate() after the lens tables are sealed; a table of the wrong length
@@ -418,8 +486,8 @@ void seal_lens(DeviceSetup& s) {
     if (s.lens[i].empty()) continue;
     if (s.lens[i].size() != want) {
       throw std::runtime_error("lens_cam" + std::to_string(i) + ": " + std::to_string(s.lens[i].size()) +
-                               " values, but width " + std::to_string(c.width) + " needs " + std::to_string(want) +
-                               " (one per column edge)");
+                               (s.lens[i].size() == 1 ? " value" : " values") + ", but width " +
+                               std::to_string(c.width) + " needs " + std::to_string(want) + " (one per column edge)");
     }
     c.lens = static_cast<uint8_t>(c.lens | (1u << i));
     tables[i] = s.lens[i].data();

@@ -1,5 +1,7 @@
 #include "lumavel/host/report_file.hpp"
 
+#include "lumavel/host/path_check.hpp"
+
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
@@ -33,6 +35,9 @@ bool ReportFileWriter::write(const uint8_t* report, size_t len) {
 bool ReportFileWriter::flush() { return std::fflush(f_) == 0; }
 
 ReportFileReader::ReportFileReader(const std::string& path) : f_(nullptr), path_(path) {
+  // A FIFO is read as it is written (a live feed); folders and devices are refused.
+  if (const std::string why = why_not_a_file(path, "report file"); !why.empty() && why.rfind("is a FIFO", 0) != 0)
+    throw std::runtime_error(shown_path(path) + ": " + why);
   f_ = std::fopen(path.c_str(), "rb");
   if (f_ == nullptr) throw std::runtime_error(path + ": cannot open report file: " + why());
   char magic[kMagicSize];

@@ -4,6 +4,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "lumavel/host/path_check.hpp"
 #include "lumavel/host/recording_error.hpp"
 
 namespace lumavel::host {
@@ -12,6 +13,7 @@ namespace {
 // Calls row(fields, line_no) for each non-empty, non-comment line.
 template <typename Row>
 void for_each_row(const std::string& path, Row row) {
+  if (const std::string why = why_not_a_file(path); !why.empty()) throw recording_error_in(path, why);
   std::ifstream in(path);
   if (!in) throw recording_error_in(path, "cannot open");
   std::string line;

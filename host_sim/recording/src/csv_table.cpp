@@ -7,6 +7,7 @@
 #include <cstring>
 #include <fstream>
 
+#include "lumavel/host/path_check.hpp"
 #include "lumavel/host/recording_error.hpp"
 
 namespace lumavel::host {
@@ -59,6 +60,7 @@ std::string format_double(double v) {
 
 void for_each_csv_row(const std::string& path, const std::vector<std::string>& columns,
                       const std::function<void(const CsvRow&)>& on_row) {
+  if (const std::string why = why_not_a_file(path); !why.empty()) throw recording_error_in(path, why);
   std::ifstream in(path);
   if (!in) throw recording_error_in(path, std::string("cannot open: ") + std::strerror(errno));
   std::string text;

@@ -10,6 +10,8 @@
 #include <cstring>
 #include <memory>
 
+#include "lumavel/host/path_check.hpp"
+
 namespace lumavel::host {
 namespace {
 
@@ -21,6 +23,7 @@ struct FileCloser {
 using FilePtr = std::unique_ptr<std::FILE, FileCloser>;
 
 std::vector<uint8_t> read_whole_file(const std::string& path) {
+  if (const std::string why = why_not_a_file(path); !why.empty()) throw recording_error_in(path, why);
   FilePtr f(std::fopen(path.c_str(), "rb"));
   if (!f) throw recording_error_in(path, std::string("cannot open image: ") + std::strerror(errno));
   std::vector<uint8_t> bytes;

@@ -1,26 +1,17 @@
 #include "lumavel/host/recording.hpp"
 
-#include <sys/stat.h>
-
 #include <algorithm>
 #include <cmath>
 
 #include "lumavel/host/csv_table.hpp"
 #include "lumavel/host/image_io.hpp"
+#include "lumavel/host/path_check.hpp"
 #include "lumavel/host/recording_layout.hpp"
 
 namespace lumavel::host {
 namespace {
 
-bool is_dir(const std::string& p) {
-  struct stat st {};
-  return ::stat(p.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
-}
-
-bool is_file(const std::string& p) {
-  struct stat st {};
-  return ::stat(p.c_str(), &st) == 0 && S_ISREG(st.st_mode);
-}
+bool is_dir(const std::string& p) { return why_not_a_folder(p).empty(); }
 
 double median_interval_s(const std::vector<uint64_t>& t) {
   if (t.size() < 2) return 0;
@@ -45,7 +36,8 @@ CamRows read_cam_rows(const std::string& root, int cam) {
     std::string& name = r.fields[0];
     if (name.empty()) throw recording_error_at(c.csv, r.line, "empty filename");
     name = dir + "/data/" + name;
-    if (!is_file(name)) throw recording_error_at(c.csv, r.line, "image file " + name + " does not exist");
+    if (const std::string why = why_not_a_file(name); !why.empty())
+      throw recording_error_at(c.csv, r.line, "image file " + name + " " + why);
   }
   return c;
 }
@@ -152,7 +144,10 @@ Recording load_recording(const std::string& dir_arg) {
   Recording rec;
   std::string dir = dir_arg;
   while (dir.size() > 1 && dir.back() == '/') dir.pop_back();  // "rec/" -> "rec": clean paths in messages
-  if (!is_dir(dir)) throw recording_error_in(dir, "recording folder does not exist");
+  if (const std::string why = why_not_a_folder(dir, "recording folder"); !why.empty())
+    throw recording_error_in(shown_path(dir), why == "does not exist" ? "recording folder does not exist" : why);
+  if (path_present(dir + "/mav0") && !is_dir(dir + "/mav0"))  // REC/mav0 is the data when it is there
+    throw recording_error_in(dir + "/mav0", why_not_a_folder(dir + "/mav0"));
   rec.root = is_dir(dir + "/mav0") ? dir + "/mav0" : dir;
   const std::string& root = rec.root;
   std::string yaml[2];
@@ -172,7 +167,7 @@ Recording load_recording(const std::string& dir_arg) {
   if (rec.imu_samples.empty()) throw recording_error_at(imu_csv, 2, "no gyro samples");
 
   const std::string gt_csv = root + "/" + layout::kGroundTruthDir + "/data.csv";
-  if (is_file(gt_csv)) rec.groundtruth = read_groundtruth(gt_csv);
+  if (path_present(gt_csv)) rec.groundtruth = read_groundtruth(gt_csv);  // absent: no ground truth
 
   for (int c = 0; c < 2; ++c) check_first_frame(rec.frames.front().path[c], c, rec.cam[c], yaml[c]);
 

@@ -15,6 +15,11 @@ void axis(const Pose& T, int k, double out[3]) {
   for (int r = 0; r < 3; ++r) out[r] = T[static_cast<size_t>(4 * r + k)];
 }
 
+// "FILE:LINE: what" where the key's line is known, else "FILE: what".
+RecordingError error_at_key(const std::string& file, long line, const std::string& what) {
+  return line > 0 ? recording_error_at(file, line, what) : recording_error_in(file, what);
+}
+
 }  // namespace
 
 CameraModel derive_camera(const CameraSensor& c, int work_width, const std::string& yaml_path) {
@@ -25,7 +30,7 @@ CameraModel derive_camera(const CameraSensor& c, int work_width, const std::stri
   if (std::hypot(ez[0], ez[1]) < 0.5) {
     char axis_text[96];
     std::snprintf(axis_text, sizeof axis_text, "(%.3g, %.3g, %.3g)", ez[0], ez[1], ez[2]);
-    throw recording_error_in(yaml_path, std::string("T_BS: this camera looks along body ") +
+    throw error_at_key(yaml_path, c.line.T_BS, std::string("T_BS: this camera looks along body ") +
                                             (ez[2] > 0 ? "+z" : "-z") + ": its optical axis is " + axis_text +
                                             " in the body frame, more than 60 degrees out of the body x-y plane. "
                                             "lumavel needs a rig whose cameras look sideways (optical axis along "
@@ -35,7 +40,8 @@ CameraModel derive_camera(const CameraSensor& c, int work_width, const std::stri
   }
   const double cross_z = ez[0] * ex[1] - ez[1] * ex[0];  // ((R e_z) x (R e_x)).z
   if (std::fabs(cross_z) < 0.5)
-    throw recording_error_in(yaml_path, "T_BS: the image u axis is not horizontal (camera rolled more than 60 degrees)");
+    throw error_at_key(yaml_path, c.line.T_BS,
+                       "T_BS: the image u axis is not horizontal (camera rolled more than 60 degrees)");
   CameraModel m;
   const double scale = static_cast<double>(work_width) / static_cast<double>(c.width);
   m.fu = c.fu * scale;
@@ -91,7 +97,7 @@ EstimatorSettings derive_settings(const Recording& rec, WorkingSize size) {
     const CameraSensor& cam = rec.cam[c];
     const std::string yaml = rec.root + "/" + layout::kCamDir[c] + "/sensor.yaml";
     if (size.width > cam.width || size.height > cam.height)
-      throw recording_error_in(yaml, "cannot bin the " + std::to_string(cam.width) + "x" +
+      throw error_at_key(yaml, cam.line.resolution, "cannot bin the " + std::to_string(cam.width) + "x" +
                                          std::to_string(cam.height) + " sensor up to the working resolution " +
                                          std::to_string(size.width) + "x" + std::to_string(size.height) +
                                          " (choose a smaller --width/--height)");
@@ -100,7 +106,8 @@ EstimatorSettings derive_settings(const Recording& rec, WorkingSize size) {
   // Baseline: x of the vector from cam0's optical centre to cam1's (body frame).
   s.baseline = rec.cam[1].T_BS[3] - rec.cam[0].T_BS[3];
   if (std::fabs(s.baseline) < 1e-4)
-    throw recording_error_in(yaml0, "T_BS: cam0 and cam1 are less than 0.1 mm apart along body x (no baseline)");
+    throw error_at_key(yaml0, rec.cam[0].line.T_BS,
+                       "T_BS: cam0 and cam1 are less than 0.1 mm apart along body x (no baseline)");
   s.frame_period = rec.frame_period_s;
   // A slow gyro must not look like a gyro gap at every frame: a hole is
   // more than 2.5 nominal periods (as counted in GapReport).

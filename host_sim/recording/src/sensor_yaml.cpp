@@ -2,11 +2,14 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
 #include "lumavel/host/csv_table.hpp"
+#include "lumavel/host/path_check.hpp"
 #include "lumavel/host/recording_error.hpp"
 
 namespace lumavel::host {
@@ -14,9 +17,17 @@ namespace {
 
 long line_of(const YAML::Node& n) { return n.Mark().line + 1; }  // yaml-cpp lines are 0-based
 
+// The line of `key` itself (a block value such as T_BS's starts on the next line).
+long key_line(const YAML::Node& root, const char* key) {
+  for (const auto& kv : root)
+    if (kv.first.IsScalar() && kv.first.Scalar() == key) return line_of(kv.first);
+  return 0;
+}
+
 YAML::Node load_yaml(const std::string& path) {
+  if (const std::string why = why_not_a_file(path); !why.empty()) throw recording_error_in(path, why);
   std::ifstream in(path);
-  if (!in) throw recording_error_in(path, "cannot open (missing sensor.yaml?)");
+  if (!in) throw recording_error_in(path, std::string("cannot open: ") + std::strerror(errno));
   std::stringstream ss;
   ss << in.rdbuf();
   std::string text = ss.str();
@@ -25,7 +36,11 @@ YAML::Node load_yaml(const std::string& path) {
   if (text.rfind("%YAML:", 0) == 0) text[0] = '#';
   try {
     YAML::Node root = YAML::Load(text);
-    if (!root.IsMap()) throw recording_error_in(path, "not a YAML mapping of sensor keys");
+    if (root.IsNull())
+      throw recording_error_in(path, "empty file: a sensor.yaml holds the sensor's keys (docs/recording-format.md)");
+    if (!root.IsMap())
+      throw recording_error_at(path, line_of(root),
+                               "not a YAML mapping of sensor keys (KEY: VALUE lines, docs/recording-format.md)");
     return root;
   } catch (const YAML::ParserException& e) {
     throw recording_error_at(path, e.mark.line + 1, "YAML syntax error: " + e.msg);
@@ -151,6 +166,7 @@ CameraSensor read_camera_yaml(const std::string& path) {
   const std::vector<double> r = numbers(res, "resolution", 2, path);
   if (r[0] < 1 || r[1] < 1 || r[0] > 16384 || r[1] > 16384 || r[0] != std::floor(r[0]) || r[1] != std::floor(r[1]))
     throw recording_error_at(path, line_of(res), "resolution: expected [width, height] in whole pixels");
+  c.line.resolution = line_of(res);
   c.width = static_cast<int>(r[0]);
   c.height = static_cast<int>(r[1]);
   const YAML::Node model = require(root, "camera_model", path);
@@ -158,6 +174,7 @@ CameraSensor read_camera_yaml(const std::string& path) {
     throw recording_error_at(path, line_of(model), "camera_model '" + model.Scalar() + "' is not supported (pinhole)");
   const YAML::Node in = require(root, "intrinsics", path);
   const std::vector<double> k = numbers(in, "intrinsics", 4, path);
+  c.line.intrinsics = line_of(in);
   c.fu = k[0];
   c.fv = k[1];
   c.cu = k[2];
@@ -168,8 +185,11 @@ CameraSensor read_camera_yaml(const std::string& path) {
   if (c.distortion_model != "radial-tangential")
     throw recording_error_at(path, line_of(dm),
                              "distortion_model '" + c.distortion_model + "' is not supported (radial-tangential)");
-  c.distortion = numbers(require(root, "distortion_coefficients", path), "distortion_coefficients", 4, path);
+  const YAML::Node dc = require(root, "distortion_coefficients", path);
+  c.distortion = numbers(dc, "distortion_coefficients", 4, path);
+  c.line.distortion = line_of(dc);
   c.T_BS = read_pose(root, path);
+  c.line.T_BS = key_line(root, "T_BS");
   c.exposure_s = optional_number(root, "exposure_s", path);
   c.comment = optional_text(root, "comment");
   return c;

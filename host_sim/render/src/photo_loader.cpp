@@ -14,6 +14,7 @@
 #endif
 
 #include "lumavel/host/render/surface_pattern.hpp"
+#include "lumavel/host/path_check.hpp"
 
 namespace lumavel::host::render {
 namespace {
@@ -101,6 +102,7 @@ std::vector<unsigned char> load_pgm(const std::string& path, int& w, int& h) {
 
 std::vector<unsigned char> load_photo_gray(const std::string& path, int& w, int& h) {
   unsigned char sig[8] = {};
+  if (const std::string why = why_not_a_file(path); !why.empty()) throw std::runtime_error(path + ": photo " + why);
   {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw std::runtime_error(path + ": cannot open photo");

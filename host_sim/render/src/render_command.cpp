@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <string>
 
+#include "lumavel/host/path_check.hpp"
 #include "lumavel/host/render/recording_renderer.hpp"
 #include "lumavel/host/render/photometric_presets.hpp"
 #include "lumavel/host/render/scenario_loader.hpp"
@@ -36,6 +37,9 @@ int render_to_folder(RenderArgs& a) {
   a.opt.progress = !a.quiet;
   render::Scenario s = render::load_scenario(a.scenario);
   render::apply_overrides(s, a.ov);
+  if (path_present(a.out))  // a new folder is made; an existing one must be a folder
+    if (const std::string why = why_not_a_folder(a.out, "folder to write the recording in"); !why.empty())
+      throw std::runtime_error(shown_path(a.out) + ": " + why);
   const std::string mav0 = a.out + "/mav0";
   if (std::filesystem::exists(mav0)) {
     if (!a.force) throw std::runtime_error(mav0 + " already exists (use --force to replace it)");
@@ -95,7 +99,7 @@ void add_render_command(cli::Tool& tool) {
       ->type_name("N")
       ->check(cli::whole_number_in(1, 256));
   c->add_flag("--force", a->force, "replace an existing OUT/mav0");
-  c->add_flag("--quiet", a->quiet, "no progress and no summary");
+  c->add_flag("-q,--quiet", a->quiet, "no progress and no summary on standard error");
 }
 
 int render_main(int argc, char** argv) { return cli::run_command_alone("lumavel-sim", add_render_command, argc, argv); }

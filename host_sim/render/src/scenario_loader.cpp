@@ -5,11 +5,14 @@
 #include "lumavel/host/render/lens_distortion.hpp"
 #include "lumavel/host/render/photometric_presets.hpp"
 #include "lumavel/host/render/view_renderer.hpp"
+#include "lumavel/host/path_check.hpp"
 
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <initializer_list>
 #include <limits>
@@ -310,6 +313,7 @@ void read_pattern(const Reader& r, const YAML::Node& n, PatternSpec& p,
     const YAML::Node f = n["file"];
     if (!f || !f.IsScalar()) r.fail(n, "photo pattern needs 'file'");
     p.file = resolve_path(f.Scalar(), base_dir);
+    if (const std::string why = why_not_a_file(p.file); !why.empty()) r.fail(f, "photo '" + p.file + "' " + why);
     if (!std::ifstream(p.file)) r.fail(f, "cannot open photo '" + p.file + "'");
     if (!n["size_m"]) r.fail(n, "photo pattern needs 'size_m: [width, height]'");
     const auto v = r.list(n["size_m"], "size_m", 2, 1e-4, 1e6);
@@ -407,7 +411,11 @@ Scenario parse_scenario(const std::string& text, const std::string& name,
   } catch (const YAML::ParserException& e) {
     throw ScenarioError(name + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax: " + e.msg);
   }
-  if (!root.IsMap()) throw ScenarioError(name + ": a scenario must be a YAML map");
+  if (root.IsNull())
+    throw ScenarioError(name + ": empty file: a scenario holds KEY: VALUE lines (host_sim/scenarios/README.md)");
+  if (!root.IsMap())
+    throw ScenarioError(name + ":" + std::to_string(root.Mark().line + 1) +
+                        ": a scenario must be a YAML map of KEY: VALUE lines (host_sim/scenarios/README.md)");
   try {
     r.check_keys(root, "scenario", {"description", "duration_s", "seed", "start_ns",
                                     "groundtruth_rate_hz", "camera", "trajectory", "scene",
@@ -443,8 +451,10 @@ Scenario parse_scenario(const std::string& text, const std::string& name,
 }
 
 Scenario load_scenario(const std::string& path) {
+  if (const std::string why = why_not_a_file(path, "scenario file"); !why.empty())
+    throw ScenarioError(shown_path(path) + ": " + why);
   std::ifstream in(path);
-  if (!in) throw ScenarioError(path + ": cannot open scenario file");
+  if (!in) throw ScenarioError(path + ": cannot open scenario file: " + std::strerror(errno));
   std::stringstream ss;
   ss << in.rdbuf();
   const auto slash = path.find_last_of('/');

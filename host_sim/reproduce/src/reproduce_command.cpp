@@ -1,18 +1,22 @@
 #include "lumavel/host/reproduce_command.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 
 #include "lumavel/core/status.hpp"
 #include "lumavel/host/recording.hpp"
+#include "lumavel/host/render/frame_renderer.hpp"
 #include "lumavel/host/render/scenario_loader.hpp"
+#include "lumavel/host/render/scene.hpp"
 #include "lumavel/host/run_recording.hpp"
 #include "lumavel/host/track_plot.hpp"
 #include "render_cache.hpp"
@@ -65,46 +69,82 @@ std::string render_key(const Case& c) {
   return key.str();
 }
 
+// The case's changes to its scenario (resolution, exposure, length, lens, gyro).
+void adjust_scenario(const Case& c, render::Scenario& s) {
+  render::Overrides ov;
+  ov.width = c.render_w;
+  ov.height = c.render_h;
+  ov.exposure_frames = c.exposure;
+  ov.duration_s = c.duration;
+  ov.camera_mismatch = c.camera_mismatch;
+  render::apply_overrides(s, ov);
+  if (lens_variant(c).no_lens) s.camera.distortion = {};  // same seed and motion, pinhole camera
+  if (gyro_variant(c).no_offset) s.imu.gyro_bias_z = 0;   // same seed, images and gyro noise
+}
+
 // Renders a case unless an identical render is already cached.
 std::string render_case(const Case& c, const Options& o) {
-  const LensVariant lens = lens_variant(c);
-  const GyroVariant gyro = gyro_variant(c);  // its render_id is lens's for other cases
-  const std::string dir = render_dir(c, o);
-  const CachedRender r = render_cached(o.scenarios + "/" + c.scenario, dir, render_key(c), [&](render::Scenario& s) {
-    render::Overrides ov;
-    ov.width = c.render_w;
-    ov.height = c.render_h;
-    ov.exposure_frames = c.exposure;
-    ov.duration_s = c.duration;
-    ov.camera_mismatch = c.camera_mismatch;
-    render::apply_overrides(s, ov);
-    if (lens.no_lens) s.camera.distortion = {};  // same seed and motion, pinhole camera
-    if (gyro.no_offset) s.imu.gyro_bias_z = 0;    // same seed, images and gyro noise
-  }, o.threads);
+  const std::string dir = render_dir(c, o);  // gyro_variant's render_id is lens's for other cases
+  const CachedRender r = render_cached(o.scenarios + "/" + c.scenario, dir, render_key(c),
+                                       [&](render::Scenario& s) { adjust_scenario(c, s); }, o.threads);
   if (!r.reused) std::fprintf(stderr, "    rendered %d frame pairs in %.1f s\n", r.frames, r.seconds);
   return dir;
 }
 
-// Work of a case for the time estimate, in pixel-frames: rendering (unless
-// cached; a rendered pixel costs several estimated ones) and both engines at
-// every working size. Only the ratios matter.
-double case_cost(const Case& c, const Options& o) {
+// What a case will cost, for the time estimate.
+struct CaseCost {
+  double render_s = 0;  // predicted by a sample render (0 when cached)
+  double run_units = 0;  // the engines' work, in units whose rate is learned as cases finish
+};
+
+// A render's cost depends on too much to model (planes in view, lens
+// distortion, photo textures): it is measured on a sample, three frames of
+// both cameras at a quarter of the resolution each way (the same work per
+// pixel, 1/16 of the pixels), scaled to the full size, to the sub-frames the
+// full size draws (motion blur spans more pixels there), to every frame and
+// to the render threads.
+double sample_render_seconds(const render::Scenario& full, int threads) {
+  render::Scenario s = full;
+  render::Overrides small;
+  small.width = std::max(8, s.camera.width / 4);
+  small.height = std::max(6, s.camera.height / 4);
+  render::apply_overrides(s, small);
+  const auto t0 = std::chrono::steady_clock::now();
+  const render::Scene scene = render::build_scene(s);  // the scene does not depend on the camera
+  const render::FrameRenderer fr(s, scene), fr_full(full, scene);
+  const double build = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const int n = fr.frame_count();
+  const double pixels = static_cast<double>(full.camera.width) * full.camera.height /
+                        (static_cast<double>(s.camera.width) * s.camera.height);
+  double frame_s = 0;
+  std::vector<uint8_t> px;
+  for (int i : {n / 4, n / 2, 3 * n / 4})
+    for (int cam = 0; cam < 2; ++cam) {
+      const auto a = std::chrono::steady_clock::now();
+      const render::FrameStats st = fr.render(i, cam, px);
+      const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - a).count();
+      frame_s += t * pixels * fr_full.subframes(fr.frame_time(i), cam) / std::max(1, st.subframes) / 3;
+    }
+  // Each frame pair also costs two PNG files: about 0.5 ms on top of the pixels.
+  constexpr double kFilesPerFrameS = 0.0005;
+  return build + (frame_s + kFilesPerFrameS) * n / std::max(1, threads);
+}
+
+// `planned`: the renders of the cases before this one (rendered by then).
+CaseCost case_cost(const Case& c, const Options& o, std::set<std::string>& planned) {
   render::Scenario s = render::load_scenario(o.scenarios + "/" + c.scenario);
-  render::Overrides ov;
-  ov.width = c.render_w;
-  ov.height = c.render_h;
-  ov.duration_s = c.duration;
-  ov.exposure_frames = c.exposure;
-  render::apply_overrides(s, ov);
+  adjust_scenario(c, s);
+  CaseCost k;
+  const std::string render = render_dir(c, o) + " " + render_key(c);
+  if (!render_is_cached(o.scenarios + "/" + c.scenario, render_dir(c, o), render_key(c)) && planned.insert(render).second)
+    k.render_s = sample_render_seconds(s, o.threads);
+  // Per frame and working size: decoding and binning the rendered frames,
+  // and the three engines, of which the VO costs most (about 2 ms a frame
+  // plus its share of the pixels, measured on 40x30 and 160x120).
   const double frames = s.duration_s * s.camera.rate_hz;
-  double pixels = 0;
-  for (const WorkSize& w : c.work) pixels += 2.0 * w.width * w.height;
-  if (!render_is_cached(o.scenarios + "/" + c.scenario, render_dir(c, o), render_key(c))) {
-    // Each plane in view and each exposure sub-frame is drawn again.
-    const double subframes = s.camera.exposure_frames > 0 ? 1 + 16 * s.camera.exposure_frames : 1;
-    pixels += 4.0 * s.camera.width * s.camera.height * (1 + 0.5 * static_cast<double>(s.planes.size())) * subframes;
-  }
-  return frames * pixels;
+  for (const WorkSize& w : c.work)
+    k.run_units += frames * (static_cast<double>(s.camera.width) * s.camera.height + 16000.0 + 2.0 * w.width * w.height);
+  return k;
 }
 
 std::string duration_text(double s) {
@@ -173,24 +213,34 @@ int run(const Options& o) {
   const std::string machine = machine_description();
   std::fprintf(stderr, "reproduce: page %s, renders in %s, on %s\n", o.doc.c_str(), o.out.c_str(), machine.c_str());
 
-  std::vector<double> costs;
+  std::vector<CaseCost> costs;
+  std::set<std::string> planned;
   for (const Study& st : studies)
-    for (const Case& c : st.cases) costs.push_back(case_cost(c, o));
-  double cost_total = 0, cost_done = 0;
-  for (double c : costs) cost_total += c;
+    for (const Case& c : st.cases) costs.push_back(case_cost(c, o, planned));
+  // The time left: the sampled renders, corrected by how the finished ones
+  // compared with their samples, and the engines' units at the rate seen so far.
+  double render_predicted_done = 0, render_actual_done = 0, run_units_done = 0, run_s_done = 0;
+  auto time_left = [&](size_t from) {
+    const double render_factor = render_predicted_done > 0 ? render_actual_done / render_predicted_done : 1.0;
+    double render_left = 0, units_left = 0;
+    for (size_t k = from; k < costs.size(); ++k) render_left += costs[k].render_s, units_left += costs[k].run_units;
+    return render_left * render_factor + units_left * run_s_done / run_units_done;
+  };
 
   std::vector<StudyResult> results;
   size_t i_case = 0;
   for (const Study& st : studies) {
     StudyResult sr{st, {}};
     for (const Case& c : st.cases) {
-      const std::string eta = cost_done > 0 ? duration_text(elapsed()) + " elapsed, about " +
-                                                  duration_text(elapsed() * (cost_total - cost_done) / cost_done) +
-                                                  " left for the studies"
-                                            : "the time left is estimated after this case";
+      const std::string eta = run_units_done > 0 ? duration_text(elapsed()) + " elapsed, about " +
+                                                       duration_text(time_left(i_case)) + " left for the studies"
+                                                 : "the time left is estimated after this case";
       std::fprintf(stderr, "[%zu/%zu] %s (%s)\n", i_case + 1, costs.size(), c.id.c_str(), eta.c_str());
-      cost_done += costs[i_case++];
+      const CaseCost& cost = costs[i_case++];
+      const double render_start = elapsed();
       const Recording rec = load_recording(render_case(c, o));
+      if (cost.render_s > 0) render_predicted_done += cost.render_s, render_actual_done += elapsed() - render_start;
+      const double run_start = elapsed();
       for (const WorkSize& w : c.work) {
         // The VO baseline runs beside both engines on the same frames.
         for (EngineKind kind : {EngineKind::kFixed, EngineKind::kFloat, EngineKind::kVo}) {
@@ -211,6 +261,8 @@ int run(const Options& o) {
           sr.cases.push_back(cr);
         }
       }
+      run_units_done += cost.run_units;
+      run_s_done += elapsed() - run_start;
     }
     results.push_back(sr);
   }

@@ -15,6 +15,7 @@
 #include "lumavel/host/hid_link.hpp"
 #include "lumavel/host/hid_sender.hpp"
 #include "lumavel/host/output_file.hpp"
+#include "lumavel/host/path_check.hpp"
 #include "lumavel/host/progress.hpp"
 #include "lumavel/host/run_recording.hpp"
 #include "lumavel/host/track_plot.hpp"
@@ -184,7 +185,23 @@ int run(const RunArgs& a) {
     throw cli::UsageError("--height: must be a whole number in 1.." + std::to_string(kMaxWorkHeight) +
                           " (the firmware core's limit; --engine vo goes up to the sensor's height), not '" +
                           std::to_string(a.height) + "'");
+  // Outputs that cannot be written are refused before the run, not after it.
+  auto check_output = [](const std::string& path, const char* what, const char* option) {
+    if (const std::string why = why_not_writable(path, what); !why.empty())
+      throw std::runtime_error(shown_path(path) + " (" + option + "): " + why);
+  };
+  if (a.output != "-" && !a.output.empty()) check_output(a.output, "CSV file", "-o");
+  if (!a.hid_config.empty()) {
+    check_output(a.hid_config, "configuration file", "--hid-config");
+    // It is read back too: a FIFO or a device there would block or never end.
+    if (path_present(a.hid_config))
+      if (const std::string why = why_not_a_file(a.hid_config, "configuration file"); !why.empty())
+        throw std::runtime_error(shown_path(a.hid_config) + " (--hid-config): " + why);
+  }
+  if (a.hid.rfind("file:", 0) == 0) check_output(a.hid.substr(5), "report file", "--hid file:");
   const Recording rec = load_recording(a.rec);
+  if (!rec.groundtruth.empty() || !a.plot.empty())
+    check_output(a.plot.empty() ? default_plot_path(a) : a.plot, "plot file", a.plot.empty() ? "the plot" : "--plot");
   const WorkingSize fallback = default_working_size(rec);
   options.size = {a.width > 0 ? a.width : fallback.width, a.height > 0 ? a.height : fallback.height};
   options.ignore_distortion = a.ignore_distortion;

@@ -126,10 +126,15 @@ std::string format_metrics(const RunMetrics& m) {
   return s;
 }
 
+namespace {
+constexpr uint16_t kNotFaults = kStatusConverging | kStatusStill | kStatusNoTof;
+}  // namespace
+
+bool is_fault(StatusFlag flag) { return (flag & kNotFaults) == 0; }
+
 FlagCounts count_flags(const std::vector<TrackPoint>& track) {
   FlagCounts c;
   c.frames = track.size();
-  constexpr uint16_t kNotFaults = kStatusConverging | kStatusStill | kStatusNoTof;
   for (const TrackPoint& p : track) {
     c.flagged += (p.status & ~kNotFaults) != 0;
     for (size_t k = 0; k < std::size(kStatusFlags); ++k) c.count[k] += (p.status & kStatusFlags[k].flag) != 0;

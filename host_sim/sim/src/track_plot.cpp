@@ -1,7 +1,9 @@
 #include "lumavel/host/track_plot.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdint>
+#include <cstring>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -29,17 +31,16 @@ constexpr const char* kEstimateColour = "#0072B2";
 constexpr const char* kTruthColour = "#9a9a9a";
 constexpr const char* kErrorColour = "#D55E00";
 
+// Faults (is_fault) are also shaded across the panels.
 struct FlagStyle {
   StatusFlag flag;
   const char* colour;
-  bool fault;  // shaded across the panels (CONVERGING, STILL and NO_TOF are not faults)
 };
 constexpr FlagStyle kFlagStyles[] = {
-    {kStatusConverging, "#c8c8c8", false}, {kStatusLowTexture, "#E69F00", true},
-    {kStatusSaturated, "#CC79A7", true},   {kStatusFrameGap, "#56B4E9", true},
-    {kStatusGyroGap, "#009E73", true},     {kStatusNoLight, "#333333", true},
-    {kStatusRestarted, "#8B4513", true},   {kStatusStill, "#9ecae1", false},
-    {kStatusNoStereo, "#F0E442", true},    {kStatusNoTof, "#dadaeb", false},
+    {kStatusConverging, "#c8c8c8"}, {kStatusLowTexture, "#E69F00"}, {kStatusSaturated, "#CC79A7"},
+    {kStatusFrameGap, "#56B4E9"},   {kStatusGyroGap, "#009E73"},    {kStatusNoLight, "#333333"},
+    {kStatusRestarted, "#8B4513"},  {kStatusStill, "#9ecae1"},      {kStatusNoStereo, "#F0E442"},
+    {kStatusNoTof, "#dadaeb"},
 };
 static_assert(sizeof(kFlagStyles) / sizeof(kFlagStyles[0]) == sizeof(kStatusFlags) / sizeof(kStatusFlags[0]),
               "a style for every status flag");
@@ -133,7 +134,7 @@ Line line(const std::vector<double>& t, const std::vector<double>& v, const Axis
     seg_points = 0;
   };
   int side = 0;  // the side of the current run of clipped points
-  long last_marker_col = -10;
+  long last_marker_col[2] = {-10, -10};  // below, above
   for (size_t i = 0; i < t.size(); ++i) {
     if (!std::isfinite(v[i])) {  // no data: break the line
       end_segment();
@@ -148,11 +149,12 @@ Line line(const std::vector<double>& t, const std::vector<double>& v, const Axis
       else out.highest = std::max(out.highest, val);
       val = s > 0 ? ay.hi : ay.lo;
       const long c = std::lround(ax.map(t[i], kX0, kX1));
-      if (s != side && c > last_marker_col + 3) {  // one triangle per run, a few pixels apart
+      long& last = last_marker_col[s > 0];
+      if (s != side && c > last + 3) {  // one triangle per run, a few pixels apart on each edge
         const double x = static_cast<double>(c), y = s > 0 ? p.top : p.bottom(), d = s > 0 ? 7 : -7;
         markers += "<path d=\"M" + px(x - 4) + "," + px(y + d) + " L" + px(x + 4) + "," + px(y + d) + " L" + px(x) +
                    "," + px(y) + " Z\" fill=\"" + colour + "\"/>\n";
-        last_marker_col = c;
+        last = c;
       }
     }
     side = s;
@@ -219,6 +221,10 @@ std::string legend(const Panel& p, const std::vector<std::pair<std::string, std:
   return s;
 }
 
+// The width of a key entry under the time axis: swatch, words at 11 px
+// (DejaVu Sans averages about 6.3 px a character there, capitals more), gap.
+double key_entry_width(const std::string& words) { return 14 + 6.6 * static_cast<double>(words.size()) + 16; }
+
 std::string frames_text(size_t n) { return std::to_string(n) + (n == 1 ? " frame" : " frames"); }
 
 // "down to -0.5, up to 6.7 m/s": how far beyond the axis the clipped points lie.
@@ -254,7 +260,8 @@ std::string stats_line(const RunMetrics& m, bool any_truth, const FlagCounts& fl
            fmt(" at %.2f s", m.worst_after_t);
   }
   const double share = flags.frames ? 100.0 * static_cast<double>(flags.flagged) / static_cast<double>(flags.frames) : 0;
-  s += flags.flagged ? fmt(kSep "flagged: %.0f %% of frames", share) : std::string(kSep "no frame flagged");
+  // Faults only: CONVERGING, STILL and NO_TOF say how V is made, not that it is wrong.
+  s += flags.flagged ? fmt(kSep "a fault flagged on %.0f %% of frames", share) : std::string(kSep "no fault flagged");
   return s;
 }
 
@@ -310,7 +317,7 @@ std::string track_svg(const std::vector<TrackPoint>& track, const std::string& t
   std::vector<std::vector<size_t>> key_rows(key.empty() ? 0 : 1);
   double row_x = kX0;
   for (size_t i = 0; i < key.size(); ++i) {
-    const double w = 14 + 5.7 * static_cast<double>(key[i].second.size()) + 18;
+    const double w = key_entry_width(key[i].second);
     if (row_x + w > kX1 && !key_rows.back().empty()) key_rows.emplace_back(), row_x = kX0;
     key_rows.back().push_back(i);
     row_x += w;
@@ -330,7 +337,7 @@ std::string track_svg(const std::vector<TrackPoint>& track, const std::string& t
   auto shade = [&](const Panel& p) {
     std::string b;
     for (const FlagStyle* f : lanes)
-      if (f->fault)
+      if (is_fault(f->flag))
         for (const auto& [a, e] : flag_runs(t, status, f->flag, ax))
           b += rect(ax.map(a, kX0, kX1), p.top, ax.map(e, kX0, kX1), p.bottom(), f->colour, 0.16);
     return b;
@@ -401,7 +408,7 @@ std::string track_svg(const std::vector<TrackPoint>& track, const std::string& t
     for (size_t i : key_rows[r]) {
       s += rect(x, y - 9, x + 10, y + 1, key[i].first->colour, 0.95);
       s += text(x + 14, y, key[i].second, "start", " font-size=\"11\"");
-      x += 14 + 5.7 * static_cast<double>(key[i].second.size()) + 18;
+      x += key_entry_width(key[i].second);
     }
   }
   s += "</svg>\n";
@@ -410,9 +417,10 @@ std::string track_svg(const std::vector<TrackPoint>& track, const std::string& t
 
 void write_track_svg(const std::string& path, const std::vector<TrackPoint>& track, const std::string& title) {
   std::ofstream out(path);
+  if (!out) throw std::runtime_error(path + ": cannot create the plot: " + std::strerror(errno));
   out << track_svg(track, title);
   out.close();
-  if (!out) throw std::runtime_error(path + ": cannot write the plot");
+  if (!out) throw std::runtime_error(path + ": cannot write the plot: " + std::strerror(errno));
 }
 
 }  // namespace lumavel::host

@@ -24,13 +24,14 @@ const char* const kExitStatus =
     "error, 3 no device, 4 permission denied, 5 the device refused the\n"
     "configuration.";
 
-// Device errors have exit codes of their own.
-cli::Action with_device_errors(std::function<int()> f) {
-  return [f] {
+// Device errors have exit codes of their own; said like every other error,
+// "lumavel-read COMMAND: error: what".
+cli::Action with_device_errors(const std::string& command, std::function<int()> f) {
+  return [command, f] {
     try {
       return f();
     } catch (const DeviceError& e) {
-      std::fprintf(stderr, "lumavel-read: %s\n", e.what());
+      std::fprintf(stderr, "lumavel-read %s: error: %s\n", command.c_str(), e.what());
       switch (e.kind()) {
         case DeviceErrorKind::kPermission: return static_cast<int>(kExitPermission);
         case DeviceErrorKind::kNoDevice:
@@ -61,7 +62,7 @@ void add_stream_options(CLI::App* c, StreamOptions& o, bool live_options) {
 void add_config_input(CLI::App* c, ConfigInput& in) {
   c->add_option("--file", in.files, "KEY=VALUE lines as `config get` prints them (# comments\nallowed); may be repeated")
       ->type_name("FILE");
-  c->add_option("SETTINGS", in.settings, "KEY=VALUE settings, after the files")->type_name("KEY=VALUE...");
+  c->add_option("SETTINGS", in.settings, "KEY=VALUE settings, after the files")->type_name("KEY=VALUE");
 }
 
 }  // namespace
@@ -83,7 +84,7 @@ int main(int argc, char** argv) {
                "lumavel devices seen by the backend\n\n"
                "Lists lumavel devices (USB 1209:0001, vendor usage page 0xFF00), one per line:\n"
                "PATH  VID:PID  interface  manufacturer / product / serial.",
-               with_device_errors([common] { return cmd_list(*common); }));
+               with_device_errors("list", [common] { return cmd_list(*common); }));
 
   auto stream = std::make_shared<StreamOptions>();
   CLI::App* s = tool.command(
@@ -94,7 +95,7 @@ int main(int argc, char** argv) {
       "stdout is a terminal it shows a live line (rate, V, distance, heading, status)\n"
       "instead, unless --csv. Lost reports (sequence gaps), duplicated and malformed\n"
       "reports are reported on stderr.",
-      with_device_errors([common, stream] { return cmd_stream(*common, *stream); }));
+      with_device_errors("stream", [common, stream] { return cmd_stream(*common, *stream); }));
   add_stream_options(s, *stream, true);
 
   tool.command("info",
@@ -103,14 +104,14 @@ int main(int argc, char** argv) {
                "resolution, build capacities, the outcome of the last configuration set and of\n"
                "the last lens piece, and which cameras have lens pieces uploaded that no\n"
                "configuration set has taken yet (lens_upload_pending).",
-               with_device_errors([common] { return cmd_info(*common); }));
+               with_device_errors("info", [common] { return cmd_info(*common); }));
 
   CLI::App* config = tool.command(tool.app(), "config",
                                   "the configuration: get, set, or check a file offline\n\n"
                                   "The device configuration as KEY=VALUE lines. Keys:\n" +
                                       std::string(lumavel::host::config_keys_help()));
   tool.command(*config, "get", "print the device's configuration as KEY=VALUE lines",
-               with_device_errors([common] { return cmd_config_get(*common); }));
+               with_device_errors("config get", [common] { return cmd_config_get(*common); }));
   auto set_in = std::make_shared<ConfigInput>();
   CLI::App* set = tool.command(
       *config, "set",
@@ -120,7 +121,7 @@ int main(int argc, char** argv) {
       "device's configuration, sends the lens tables and the whole configuration\n"
       "(versioned, CRC-protected), reads back and prints what is in force. The device\n"
       "validates again, applies and stores it.",
-      with_device_errors([common, set_in] { return cmd_config_set(*common, *set_in); }));
+      with_device_errors("config set", [common, set_in] { return cmd_config_set(*common, *set_in); }));
   add_config_input(set, *set_in);
   auto check_in = std::make_shared<ConfigInput>();
   CLI::App* check = tool.command(

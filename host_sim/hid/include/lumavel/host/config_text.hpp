@@ -43,7 +43,8 @@ struct GivenSettings {
   // Parses "KEY=VALUE" (its value is checked by apply_setting); throws
   // "WHERE: ..." when it does not parse.
   void add(const std::string& kv, const std::string& where);
-  // Every setting line of FILE (as apply_settings_file reads it).
+  // Every setting line of FILE (as apply_settings_file reads it); refuses a
+  // key given twice in the file and a file without any setting.
   void add_file(const std::string& path);
   void apply_to(DeviceSetup& s) const;  // in order (seal_lens afterwards)
   bool has(const std::string& key) const;

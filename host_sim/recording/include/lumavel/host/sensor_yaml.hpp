@@ -20,6 +20,11 @@ struct CameraSensor {
   Pose T_BS = identity_pose();
   double exposure_s = -1;              // optional; < 0 when absent
   std::string comment;                 // optional
+  // The line of each key in the file it was read from (0: not from a file),
+  // so that a value the firmware cannot take is blamed on its line.
+  struct Lines {
+    long resolution = 0, intrinsics = 0, distortion = 0, T_BS = 0;
+  } line;
 };
 
 struct ImuSensor {

@@ -47,10 +47,14 @@ RunMetrics compute_metrics(const std::vector<TrackPoint>& track, const MetricOpt
 // printed as nan or inf.
 std::string format_metrics(const RunMetrics& m);
 
+// A fault: a flag saying the estimate is held, degraded or missing. CONVERGING,
+// STILL and NO_TOF tell how the estimate is made, not that it is wrong.
+bool is_fault(StatusFlag flag);
+
 // How many points carry each status flag (lumavel::kStatusFlags order).
 struct FlagCounts {
   size_t frames = 0;
-  size_t flagged = 0;   // points with any flag but CONVERGING, STILL and NO_TOF (which are not faults)
+  size_t flagged = 0;   // points with a fault flag (is_fault)
   size_t count[sizeof(kStatusFlags) / sizeof(kStatusFlags[0])] = {};
 };
 FlagCounts count_flags(const std::vector<TrackPoint>& track);

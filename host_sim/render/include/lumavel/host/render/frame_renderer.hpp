@@ -38,9 +38,11 @@ class FrameRenderer {
   // (gray levels, may exceed 0..255).
   FrameStats render_radiance(int i, int cam, std::vector<double>& out) const;
   const CameraResponse& response(int cam) const { return response_[static_cast<size_t>(cam)]; }
+  // How many sub-frames the exposure of camera `cam`'s frame at `t_mid` is
+  // drawn with (its motion blur; reproduce weighs render times by it).
+  int subframes(double t_mid, int cam) const;
 
  private:
-  int subframes(double t_mid, int cam) const;
   const Scenario& s_;
   const Scene& scene_;
   StereoRig rig_;

@@ -1,0 +1,83 @@
+#include "lumavel/host/path_check.hpp"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <climits>
+#include <cstring>
+
+namespace lumavel::host {
+namespace {
+
+// The reason stat() failed, in words.
+std::string stat_failure(int err) {
+  switch (err) {
+    case ENOENT: return "does not exist";
+    case ENOTDIR: return "does not exist (a part of the path before it is a file, not a folder)";
+    case ELOOP: return "is a loop of symbolic links (or the path has too many of them)";
+    case ENAMETOOLONG:
+      return "the path is too long for the system (at most " + std::to_string(PATH_MAX) +
+             " characters, and " + std::to_string(NAME_MAX) + " per name)";
+    case EACCES: return "cannot be reached: permission denied on a folder of its path";
+    default: return std::string("cannot be examined: ") + std::strerror(err);
+  }
+}
+
+// What the file type is, for "is a ..., not a ..." (never a regular file or folder).
+const char* special_kind(mode_t mode) {
+  if (S_ISFIFO(mode)) return "a FIFO (named pipe)";
+  if (S_ISCHR(mode)) return "a character device node";
+  if (S_ISBLK(mode)) return "a block device node";
+  if (S_ISSOCK(mode)) return "a socket";
+  return "a special file";
+}
+
+}  // namespace
+
+std::string why_not_a_file(const std::string& path, const std::string& what) {
+  struct stat st {};
+  if (path.empty()) return "an empty path, not a " + what;
+  if (::stat(path.c_str(), &st) != 0) return stat_failure(errno);
+  if (S_ISREG(st.st_mode)) return {};
+  if (S_ISDIR(st.st_mode)) return "is a folder, not a " + what;
+  return std::string("is ") + special_kind(st.st_mode) + ", not a " + what;
+}
+
+std::string why_not_a_folder(const std::string& path, const std::string& what) {
+  struct stat st {};
+  if (path.empty()) return "an empty path, not a " + what;
+  if (::stat(path.c_str(), &st) != 0) return stat_failure(errno);
+  if (S_ISDIR(st.st_mode)) return {};
+  if (S_ISREG(st.st_mode)) return "is a file, not a " + what;
+  return std::string("is ") + special_kind(st.st_mode) + ", not a " + what;
+}
+
+std::string why_not_writable(const std::string& path, const std::string& what) {
+  struct stat st {};
+  if (path.empty()) return "an empty path, not a " + what;
+  if (::stat(path.c_str(), &st) == 0) return S_ISDIR(st.st_mode) ? "is a folder, not a " + what : std::string();
+  if (errno != ENOENT) return stat_failure(errno);
+  const size_t slash = path.find_last_of('/');
+  const std::string folder = slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
+  if (const std::string why = why_not_a_folder(folder); !why.empty())
+    return "cannot be created: its folder " + shown_path(folder) + " " + why;
+  if (::access(folder.c_str(), W_OK | X_OK) != 0)
+    return "cannot be created: no permission to write in its folder " + shown_path(folder);
+  return {};
+}
+
+bool path_present(const std::string& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) == 0) return true;
+  return errno != ENOENT;
+}
+
+std::string shown_path(const std::string& path) {
+  constexpr size_t kShown = 200, kEnds = 60;
+  if (path.size() <= kShown) return path;
+  return path.substr(0, kEnds) + "..." + path.substr(path.size() - kEnds) + " (" + std::to_string(path.size()) +
+         " characters)";
+}
+
+}  // namespace lumavel::host
