@@ -5,6 +5,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <stdexcept>
 #include <filesystem>
 #include <string>
 
@@ -40,6 +42,22 @@ double calibrated_deg(const char* scenario, double duration_s, double misalignme
   return c.misalignment * 180 / M_PI;
 }
 
+// Renders `scenario` at 160x120 for `duration_s` into a fresh temp folder.
+std::string rendered(const char* scenario, double duration_s, const char* id) {
+  render::Scenario s = render::load_scenario(std::string(LUMAVEL_SCENARIOS) + "/" + scenario);
+  render::Overrides o;
+  o.width = 160;
+  o.height = 120;
+  o.duration_s = duration_s;
+  render::apply_overrides(s, o);
+  const std::string dir = (std::filesystem::temp_directory_path() / (std::string("lumavel_calib_") + id)).string();
+  std::filesystem::remove_all(dir);
+  render::RenderOptions ro;
+  ro.progress = false;
+  render::render_recording(s, dir, ro);
+  return dir;
+}
+
 }  // namespace
 
 // yaml-cpp and the recording library keep function-local statics that the
@@ -64,4 +82,24 @@ TEST(Calibrate, PaperRigWithinATenthOfADegreeUpToThreeDegrees) {
 TEST(Calibrate, FastPhotoWallWithinATenthOfADegreeAtThreeDegrees) {
   DOUBLES_EQUAL(3.0, calibrated_deg("robustness_wall.yaml", 4, 3.0, "w3"), 0.1);
   DOUBLES_EQUAL(-3.0, calibrated_deg("robustness_wall.yaml", 4, -3.0, "wm3"), 0.1);
+}
+
+// A gyro that does not match the images (50 rad/s about z while the rig
+// goes straight) made calibrate answer 65 deg, far outside the +-6 deg it
+// searches, with exit 0: no answer outside the search range.
+TEST(Calibrate, NoAnswerOutsideTheSearchRange) {
+  const std::string dir = rendered("robustness_wall.yaml", 1.5, "spin");
+  const Recording good = load_recording(dir);
+  Recording spinning = good;
+  for (ImuSample& s : spinning.imu_samples) s.w[2] = 50;  // the renderer's imu is body-aligned
+  DOUBLES_EQUAL(50, body_yaw_rate(spinning.imu, spinning.imu_samples[0]), 1e-12);
+  std::string error = "(no error)";
+  try {
+    calibrate_misalignment(spinning);
+  } catch (const std::runtime_error& e) {
+    error = e.what();
+  }
+  STRCMP_CONTAINS("outside the +-6 deg searched", error.c_str());
+  CHECK(std::fabs(calibrate_misalignment(good).misalignment) < 0.1 * M_PI / 180);  // the same frames, intact
+  std::filesystem::remove_all(dir);
 }

@@ -372,3 +372,44 @@ TEST(Cli, ThePlotRendersToAPng) {
   STRCMP_EQUAL("", fixture::read_text(dir.path() + "/rsvg.err").c_str());
   STRCMP_CONTAINS(">FRAME_GAP<", fixture::read_text(svg).c_str());
 }
+
+// calibrate reads a rig by run's rules: what run refuses (a principal point
+// of 1e6 px, which used to overflow an int and crash calibrate; a 40 m
+// baseline; a 2 s frame period), calibrate refuses with the same message.
+TEST(Cli, CalibrateRefusesWhatRunRefuses) {
+  auto refused_alike = [&](const char* what) {
+    const Outcome run = sim("run rec -o est.csv --quiet"), cal = sim("calibrate rec --quiet");
+    LONGS_EQUAL_TEXT(1, run.code, what);
+    LONGS_EQUAL_TEXT(1, cal.code, what);
+    const std::string why = run.err.substr(run.err.find("error: ") + 7);
+    CHECK_TEXT(!why.empty(), what);
+    STRCMP_CONTAINS(why.substr(0, why.find(" = ")).c_str(), cal.err.c_str());
+    CHECK_TEXT(cal.out.find("misalignment:") == std::string::npos, what);
+  };
+  const std::string yaml0 = rec() + "/mav0/cam0/sensor.yaml", yaml1 = dir.path() + "/rec/mav0/cam1/sensor.yaml";
+  const std::string intact0 = fixture::read_text(yaml0), intact1 = fixture::read_text(yaml1);
+  std::string t = intact0;
+  t.replace(t.find("19.5, 14.5]"), 4, "1e6");  // cu
+  fixture::write_text(yaml0, t);
+  refused_alike("cu = 1e6");
+  STRCMP_CONTAINS("rec/mav0/cam0/sensor.yaml: intrinsics", sim("calibrate rec --quiet").err.c_str());
+  t = intact0;
+  const size_t fu = t.find("intrinsics: [") + 13;
+  t.replace(fu, t.find(',', fu) - fu, "1e300");
+  fixture::write_text(yaml0, t);
+  refused_alike("fu = 1e300");
+  fixture::write_text(yaml0, intact0);
+  t = intact1;
+  t.replace(t.find("0.04,"), 5, "40.04,");
+  fixture::write_text(yaml1, t);
+  refused_alike("baseline 40 m");
+  STRCMP_CONTAINS("baseline h = 40", sim("calibrate rec --quiet").err.c_str());
+  fixture::Options slow;
+  slow.t0 = 5000000000ull;
+  slow.frame_dt = 2000000000ull;  // 2 s between frames
+  slow.frames = 4;
+  std::filesystem::remove_all(dir.path() + "/rec");
+  rec(slow);
+  refused_alike("frame period 2 s");
+  STRCMP_CONTAINS("frame period must be 0.1 ms..1 s", sim("calibrate rec --quiet").err.c_str());
+}

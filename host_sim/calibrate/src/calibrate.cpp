@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iterator>
 #include <stdexcept>
 #include <vector>
@@ -9,6 +10,7 @@
 #include "lumavel/host/file_camera.hpp"
 #include "lumavel/host/recording_error.hpp"
 #include "lumavel/host/rig.hpp"
+#include "lumavel/host/rig_settings_check.hpp"
 
 namespace lumavel::host {
 namespace {
@@ -194,6 +196,13 @@ std::vector<double> field_shape(const FrameShifts& f) {
   return g;
 }
 
+// Radians as degrees for messages, %g.
+std::string deg(double rad) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%g", rad * 180 / M_PI);
+  return b;
+}
+
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   return v[v.size() / 2];
@@ -233,16 +242,25 @@ Calibration calibrate_misalignment(const Recording& rec, const CalibrationOption
   const int width = std::min(opt.width, rec.cam[0].width);
   const int height = std::min(rec.cam[0].height, 120);
   EstimatorSettings s = derive_settings(rec, {width, height});
+  // The rules `run` reads a rig by: what the core cannot take is refused here
+  // too, naming the file (a principal point of 1e6 px, a 40 m baseline).
+  check_rig_settings(rec, s);
   const std::vector<double> yaw0 = column_yaws(s, 0), yaw1 = column_yaws(s, 1);
   // Grid: a tenth of a column over the part of the view both cameras cover.
   const double lo = std::max(*std::min_element(yaw0.begin(), yaw0.end()), *std::min_element(yaw1.begin(), yaw1.end()));
   const double hi = std::min(*std::max_element(yaw0.begin(), yaw0.end()), *std::max_element(yaw1.begin(), yaw1.end()));
   Grid g;
   g.step = (hi - lo) / width / 10;
-  g.n = static_cast<int>((hi - lo) / g.step);
   g.start = lo;
-  const int max_shift = static_cast<int>(opt.max_shift_deg * M_PI / 180 / g.step);
-  if (2 * max_shift + 10 >= g.n) throw std::runtime_error("the view is too narrow for the shift search");
+  // Checked in double before any cast: a view a few ulps wide would
+  // overflow an int.
+  const double shift_steps = opt.max_shift_deg * M_PI / 180 / g.step;
+  if (!(g.step > 0) || !(2 * shift_steps + 10 < 10.0 * width))
+    throw RecordingError(rec.root + "/cam0/sensor.yaml and cam1/sensor.yaml: the view both cameras share is " +
+                         deg(hi - lo) + " deg wide, too narrow for the +-" + deg(opt.max_shift_deg * M_PI / 180) +
+                         " deg shift search");
+  g.n = static_cast<int>((hi - lo) / g.step);
+  const int max_shift = static_cast<int>(shift_steps);
 
   // Profiles and gyro headings at every frame.
   FileStereoCamera camera(rec, width, height);
@@ -357,6 +375,12 @@ Calibration calibrate_misalignment(const Recording& rec, const CalibrationOption
   if (samples.empty())
     throw std::runtime_error("no frame pair registered (does the rig move past a textured scene?)");
   out.misalignment = median(samples);
+  // The search covers +-max_shift_deg: a median outside it (the gyro's
+  // heading change dominating the registrations) is no answer.
+  if (!(std::fabs(out.misalignment) <= opt.max_shift_deg * M_PI / 180))
+    throw std::runtime_error("the registrations give " + deg(out.misalignment) + " deg, outside the +-" +
+                             deg(opt.max_shift_deg * M_PI / 180) + " deg searched (--max-shift): no misalignment explains them (a gyro that does not "
+                             "match the images?)");
   // Neighbouring frames see the same scene, so their errors are alike: the
   // spread of medians over blocks of frames, not of single frames, gives
   // the uncertainty (1 sigma; 1.4826 MAD is sigma, 1.2533 sigma/sqrt(n) is

@@ -7,6 +7,7 @@
 #include "lumavel/host/file_camera.hpp"
 #include "lumavel/host/groundtruth.hpp"
 #include "lumavel/host/recording_layout.hpp"
+#include "lumavel/host/rig_settings_check.hpp"
 #include "lumavel/host/vo_engine.hpp"
 #include "native_camera.hpp"
 
@@ -42,26 +43,6 @@ void write_row(std::FILE* f, const EngineEstimate& e, uint64_t t_ns) {
   p = put_double(p, end, e.scale);
   *p++ = '\n';
   std::fwrite(buf, 1, static_cast<size_t>(p - buf), f);
-}
-
-// The file (and key) a derived setting comes from, so that a setting the
-// firmware cannot take is blamed on what the user can change.
-std::string source_of(const Recording& rec, const std::string& setting) {
-  const std::string cam[2] = {rec.root + "/" + layout::kCamDir[0] + "/sensor.yaml",
-                              rec.root + "/" + layout::kCamDir[1] + "/sensor.yaml"};
-  for (int i = 0; i < 2; ++i) {
-    const std::string c = "cam[" + std::to_string(i) + "].";
-    if (setting == c + "fu" || setting == c + "cu") return cam[i] + ": intrinsics (at the working resolution)";
-    if (setting == c + "axis_yaw") return cam[i] + ": T_BS";
-  }
-  if (setting == "baseline") return cam[0] + " and cam1/sensor.yaml: T_BS (the baseline is cam1's x minus cam0's)";
-  if (setting == "frame_period")
-    return rec.root + "/" + layout::kCamDir[0] + "/data.csv: the median interval between frames";
-  if (setting == "gyro_gap") return rec.root + "/" + layout::kImuDir + "/data.csv: the median interval between samples";
-  if (setting == "kernels") return cam[0] + ": the field of view (resolution and intrinsics) sizes the kernels";
-  if (setting == "cam[].edges") return cam[0] + " or cam1/sensor.yaml: distortion_coefficients";
-  if (setting == "width" || setting == "height") return "the working size (--width/--height)";
-  return rec.root + ": the estimator configuration derived from it";
 }
 
 }  // namespace
@@ -119,7 +100,7 @@ RunResult run_recording(const Recording& rec, const RunOptions& options, std::FI
   try {
     engine = make_run_engine(rec, options, settings);
   } catch (const SettingsError& e) {
-    throw RecordingError(source_of(rec, e.setting()) + ": " + e.what());
+    throw RecordingError(setting_source(rec, e.setting()) + ": " + e.what());
   }
   RunResult r = run_recording(rec, settings, *engine, options.decode_threads, csv, progress, options.sink);
   r.lens_distorted = options.engine == EngineKind::kVo ? has_lens_distortion(rec)
