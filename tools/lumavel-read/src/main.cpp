@@ -34,6 +34,7 @@ cli::Action with_device_errors(std::function<int()> f) {
       switch (e.kind()) {
         case DeviceErrorKind::kPermission: return static_cast<int>(kExitPermission);
         case DeviceErrorKind::kNoDevice:
+        case DeviceErrorKind::kNotHidraw:
         case DeviceErrorKind::kGone: return static_cast<int>(kExitNoDevice);
         default: return static_cast<int>(kExitFailure);
       }
