@@ -130,6 +130,19 @@ TEST(BadInput, NotANumberInGyro) {
                   load_error().c_str());
 }
 
+// strtod stops at a NUL byte: "9<NUL>0.0092" was read as 9 rad/s.
+TEST(BadInput, NulByteInsideANumber) {
+  fixture::set_line(m + "imu0/data.csv", 12, std::string("1010000000,0.001,-0.002,9\0" "0.0092,0.1,0,9.81", 43));
+  STRCMP_CONTAINS((m + "imu0/data.csv:12: column 'w_RS_S_z [rad s^-1]': '9' is followed by a NUL byte inside the "
+                       "number (character 2): not a number").c_str(),
+                  load_error().c_str());
+  const std::string gt = m + "state_groundtruth_estimate0/data.csv";
+  const std::string line4 = fixture::read_lines(gt)[3];
+  fixture::set_line(gt, 4, line4.substr(0, line4.find(',')) + std::string(",0\0" "5,0,0,1,0,0,0,1,0,0,0,0,0,0,0,0", 34));
+  fixture::set_line(m + "imu0/data.csv", 12, "1010000000,0.001,-0.002,0.02,0.1,0,9.81");
+  STRCMP_CONTAINS((gt + ":4: column 'p_RS_R_x [m]': '0' is followed by a NUL byte").c_str(), load_error().c_str());
+}
+
 TEST(BadInput, InfInGroundTruth) {
   const std::string gt = m + "state_groundtruth_estimate0/data.csv";
   const std::string line4 = fixture::read_lines(gt)[3];

@@ -26,19 +26,29 @@ std::string num(double v) {
   return b;
 }
 
+// strto* stop at a NUL byte: "9<NUL>0.0092" would be read as 9.
+void refuse_nul(const std::string& key, const std::string& v) {
+  const size_t nul = v.find('\0');
+  if (nul != std::string::npos)
+    throw std::runtime_error(key + ": \"" + v.substr(0, nul) + "\" is followed by a NUL byte (character " +
+                             std::to_string(nul + 1) + "): not a value");
+}
+
 double parse_double(const std::string& key, const std::string& v) {
+  refuse_nul(key, v);
   char* end = nullptr;
   const double d = std::strtod(v.c_str(), &end);
-  if (v.empty() || *end != '\0' || !std::isfinite(d)) {
+  if (v.empty() || end != v.c_str() + v.size() || !std::isfinite(d)) {
     throw std::runtime_error(key + ": \"" + v + "\" is not a number");
   }
   return d;
 }
 
 long long parse_int(const std::string& key, const std::string& v, long long lo, long long hi) {
+  refuse_nul(key, v);
   char* end = nullptr;
   const long long n = std::strtoll(v.c_str(), &end, 10);
-  if (v.empty() || *end != '\0' || n < lo || n > hi) {
+  if (v.empty() || end != v.c_str() + v.size() || n < lo || n > hi) {
     throw std::runtime_error(key + ": \"" + v + "\" is not an integer in [" + std::to_string(lo) +
                              ", " + std::to_string(hi) + "]");
   }
@@ -223,6 +233,10 @@ void for_each_setting_line(const std::string& text, F f) {
 
 void apply_setting(DeviceSetup& d, const std::string& kv) {
   proto::DeviceConfig& c = d.config;
+  const size_t nul = kv.find('\0');  // in a key or a word too, not only in numbers
+  if (nul != std::string::npos)
+    throw std::runtime_error("\"" + kv.substr(0, nul) + "\" is followed by a NUL byte (character " +
+                             std::to_string(nul + 1) + "): not a KEY=VALUE setting");
   const auto [k, v] = split_setting(kv);
   const long long u32 = 4294967295LL;
   auto option = [&](uint8_t b) {
