@@ -267,6 +267,20 @@ TEST(BadInput, PoseNotARotation) {
   STRCMP_CONTAINS(y.c_str(), load_error().c_str());
 }
 
+// Orthonormal but a mirror (determinant -1): was accepted (E 97 %).
+TEST(BadInput, PoseIsAReflection) {
+  for (const char* sensor : {"cam1", "imu0"}) {
+    const std::string y = m + sensor + "/sensor.yaml";
+    std::string t = fixture::read_text(y);
+    t.replace(t.find("data: [") + 7, 0, "-");  // negate R(0,0): the body x axis mirrored
+    fixture::write_text(y, t);
+    STRCMP_CONTAINS((y + ":").c_str(), load_error().c_str());
+    STRCMP_CONTAINS("T_BS: rotation part has determinant -1: a reflection, not a rotation", load_error().c_str());
+    fixture::write_text(y, t.erase(t.find("data: [") + 7, 1));
+  }
+  STRCMP_EQUAL("(no error)", load_error().c_str());
+}
+
 TEST(BadInput, NoFramesOrNoGyro) {
   fixture::write_lines(m + "imu0/data.csv", {fixture::read_lines(m + "imu0/data.csv")[0]});
   STRCMP_CONTAINS((m + "imu0/data.csv:2: no gyro samples").c_str(), load_error().c_str());
