@@ -281,6 +281,26 @@ TEST(BadInput, PoseIsAReflection) {
   STRCMP_EQUAL("(no error)", load_error().c_str());
 }
 
+// k1 = 1e10 was accepted ("distortion corrected", estimates equal to a
+// pinhole run, calibrate --write wrote all-zero tables); p2 = 20 surfaced as
+// a NaN column edge. A lens that cannot be inverted over the image is refused.
+TEST(BadInput, LensThatCannotBeInvertedOverTheImage) {
+  const std::string y = m + "cam1/sensor.yaml";
+  const std::string intact = fixture::read_text(y);
+  for (const char* coeffs : {"[1e10, 0, 0, 0]", "[0, 0, 0, 20]", "[-3, 0, 0, 0]"}) {
+    std::string t = intact;
+    const size_t at = t.find('[', t.find("distortion_coefficients:"));
+    t.replace(at, t.find(']', at) + 1 - at, coeffs);
+    fixture::write_text(y, t);
+    const std::string e = load_error();
+    STRCMP_CONTAINS((y + ": distortion_coefficients [").c_str(), e.c_str());
+    CHECK_TEXT(e.find("cannot be inverted") != std::string::npos || e.find("folds the image") != std::string::npos,
+               e.c_str());
+  }
+  fixture::write_text(y, intact);
+  STRCMP_EQUAL("(no error)", load_error().c_str());
+}
+
 TEST(BadInput, NoFramesOrNoGyro) {
   fixture::write_lines(m + "imu0/data.csv", {fixture::read_lines(m + "imu0/data.csv")[0]});
   STRCMP_CONTAINS((m + "imu0/data.csv:2: no gyro samples").c_str(), load_error().c_str());

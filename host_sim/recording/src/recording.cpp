@@ -8,6 +8,7 @@
 #include "lumavel/host/csv_table.hpp"
 #include "lumavel/host/image_io.hpp"
 #include "lumavel/host/recording_layout.hpp"
+#include "lumavel/host/rig.hpp"
 
 namespace lumavel::host {
 namespace {
@@ -159,6 +160,7 @@ Recording load_recording(const std::string& dir_arg) {
   for (int c = 0; c < 2; ++c) {
     yaml[c] = root + "/" + layout::kCamDir[c] + "/sensor.yaml";
     rec.cam[c] = read_camera_yaml(yaml[c]);
+    check_lens_invertible(rec.cam[c], yaml[c]);
   }
   rec.imu = read_imu_yaml(root + "/" + layout::kImuDir + "/sensor.yaml");
 
