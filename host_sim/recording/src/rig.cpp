@@ -136,6 +136,8 @@ std::vector<double> undistorted_column_edges(const CameraSensor& c, int work_wid
   return edges;
 }
 
+double gyro_gap_s(double imu_period_s) { return std::max(EstimatorSettings{}.gyro_gap, 2.5 * imu_period_s); }
+
 WorkingSize default_working_size(const Recording& rec) {
   return {default_columns(rec.cam[0].width), default_rows(rec.cam[0].height)};
 }
@@ -167,9 +169,7 @@ EstimatorSettings derive_settings(const Recording& rec, WorkingSize size) {
   if (std::fabs(s.baseline) < 1e-4)
     throw recording_error_in(yaml0, "T_BS: cam0 and cam1 are less than 0.1 mm apart along body x (no baseline)");
   s.frame_period = rec.frame_period_s;
-  // A slow gyro must not look like a gyro gap at every frame: a hole is
-  // more than 2.5 nominal periods (as counted in GapReport).
-  s.gyro_gap = std::max(s.gyro_gap, 2.5 * rec.imu_period_s);
+  s.gyro_gap = gyro_gap_s(rec.imu_period_s);
   const double hfov = 2.0 * std::atan(0.5 * rec.cam[0].width / rec.cam[0].fu);
   s.kernels = default_kernels(hfov);
   return s;

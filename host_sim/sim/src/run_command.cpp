@@ -109,11 +109,14 @@ std::string default_plot_path(const RunArgs& a) {
 }
 
 std::string gaps_line(const Recording& rec) {
-  char buf[256];
+  char buf[320];
   std::snprintf(buf, sizeof buf,
-                "gaps: %d frame gaps (about %ld pairs missing, longest %.3f s), %d gyro holes (longest %.3f s)",
+                "gaps: %d frame gaps (about %ld pairs missing, longest %.3f s), %d gyro holes (longest %.3f s)%s",
                 rec.gaps.frame_gaps, rec.gaps.frames_missing, rec.gaps.longest_frame_gap_s, rec.gaps.gyro_holes,
-                rec.gaps.longest_gyro_hole_s);
+                rec.gaps.longest_gyro_hole_s,
+                rec.gaps.frames_beyond_gyro > 0
+                    ? (", " + std::to_string(rec.gaps.frames_beyond_gyro) + " frames beyond the gyro's samples").c_str()
+                    : "");
   return buf;
 }
 

@@ -35,6 +35,11 @@ void check_lens_invertible(const CameraSensor& c, const std::string& yaml_path);
 
 std::vector<double> undistorted_column_edges(const CameraSensor& c, int work_width, double axis_yaw, int u_sign);
 
+// The gyro gap for a gyro sampled every `imu_period_s`: the settings'
+// default, or 2.5 nominal periods for a slow gyro (as GapReport counts holes),
+// so that a slow gyro does not look like a gyro gap at every frame.
+double gyro_gap_s(double imu_period_s);
+
 // Full settings; throws RecordingError for a working size the sensors cannot
 // be binned to, or for cameras that do not share one resolution.
 EstimatorSettings derive_settings(const Recording& rec, WorkingSize size);
