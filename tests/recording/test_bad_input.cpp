@@ -1,6 +1,7 @@
 // Every "Bad input" case of the recording format (docs/recording-format.md)
 // is refused with one message that names the file and the line or frame.
 #include <png.h>
+#include <zlib.h>
 
 #include <cstdio>
 
@@ -212,6 +213,43 @@ TEST(BadInput, CorruptFrame) {
   const std::string e = full_error();
   STRCMP_CONTAINS("frame 11 (t=1110000000 ns, cam1)", e.c_str());
   STRCMP_CONTAINS((image(1, 11) + ": corrupt PNG").c_str(), e.c_str());
+}
+
+// Pixel data damaged inside a chunk whose CRC-32 was recomputed (an editor,
+// a faulty writer): only zlib's Adler-32 tells, and it used to be skipped.
+TEST(BadInput, DamagedPixelsUnderAValidChunkCrc) {
+  // Stored (uncompressed) deflate blocks, so one flipped pixel byte still
+  // inflates: nothing but the Adler-32 can notice.
+  std::FILE* f = std::fopen(image(0, 5).c_str(), "wb");
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png_create_info_struct(png);
+  png_init_io(png, f);
+  png_set_compression_level(png, 0);
+  png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_NONE);
+  png_set_IHDR(png, info, 40, 30, 8, PNG_COLOR_TYPE_GRAY, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_BASE,
+               PNG_FILTER_TYPE_BASE);
+  png_write_info(png, info);
+  const std::vector<uint8_t> px = fixture::frame_pixels(o, 5, 0);
+  for (int y = 0; y < 30; ++y) png_write_row(png, px.data() + 40 * y);
+  png_write_end(png, nullptr);
+  png_destroy_write_struct(&png, &info);
+  std::fclose(f);
+  STRCMP_EQUAL("(no error)", full_error().c_str());  // intact, it decodes
+  std::string bytes = fixture::read_text(image(0, 5));
+  const size_t idat = bytes.find("IDAT");
+  const uint32_t len = (static_cast<uint32_t>(static_cast<uint8_t>(bytes[idat - 4])) << 24) |
+                       (static_cast<uint32_t>(static_cast<uint8_t>(bytes[idat - 3])) << 16) |
+                       (static_cast<uint32_t>(static_cast<uint8_t>(bytes[idat - 2])) << 8) |
+                       static_cast<uint8_t>(bytes[idat - 1]);
+  const size_t pixel = idat + 4 + 2 + 5 + 41 * 10 + 20;  // zlib header, stored-block header, row 10, column 19
+  bytes[pixel] = static_cast<char>(bytes[pixel] ^ 0x40);
+  uLong crc = crc32(0L, Z_NULL, 0);
+  crc = crc32(crc, reinterpret_cast<const Bytef*>(bytes.data() + idat), static_cast<uInt>(len + 4));
+  for (size_t k = 0; k < 4; ++k) bytes[idat + 4 + len + k] = static_cast<char>((crc >> (24 - 8 * k)) & 0xFFu);
+  fixture::write_text(image(0, 5), bytes);
+  const std::string e = full_error();
+  STRCMP_CONTAINS("frame 5 (t=1050000000 ns, cam0)", e.c_str());
+  STRCMP_CONTAINS((image(0, 5) + ": corrupt PNG").c_str(), e.c_str());
 }
 
 TEST(BadInput, SensorYamlMissingKey) {
