@@ -392,7 +392,7 @@ TEST(Cli, CalibrateRefusesWhatRunRefuses) {
   t.replace(t.find("19.5, 14.5]"), 4, "1e6");  // cu
   fixture::write_text(yaml0, t);
   refused_alike("cu = 1e6");
-  STRCMP_CONTAINS("rec/mav0/cam0/sensor.yaml: intrinsics", sim("calibrate rec --quiet").err.c_str());
+  STRCMP_CONTAINS("rec/mav0/cam0/sensor.yaml: ", sim("calibrate rec --quiet").err.c_str());
   t = intact0;
   const size_t fu = t.find("intrinsics: [") + 13;
   t.replace(fu, t.find(',', fu) - fu, "1e300");
@@ -412,4 +412,29 @@ TEST(Cli, CalibrateRefusesWhatRunRefuses) {
   rec(slow);
   refused_alike("frame period 2 s");
   STRCMP_CONTAINS("frame period must be 0.1 ms..1 s", sim("calibrate rec --quiet").err.c_str());
+}
+
+// Every engine reads a rig by the same rules: the vo engine accepted a 40 m
+// baseline and cu = 1e6 px (exit 0, a meaningless V) that fixed and float refuse.
+TEST(Cli, EveryEngineRefusesTheSameRig) {
+  const std::string yaml0 = rec() + "/mav0/cam0/sensor.yaml", yaml1 = dir.path() + "/rec/mav0/cam1/sensor.yaml";
+  const std::string intact0 = fixture::read_text(yaml0), intact1 = fixture::read_text(yaml1);
+  std::string t = intact1;
+  t.replace(t.find("0.04,"), 5, "40.04,");
+  fixture::write_text(yaml1, t);
+  for (const char* engine : {"fixed", "float", "vo"}) {
+    const Outcome r = sim(std::string("run rec -o est.csv --quiet --engine ") + engine);
+    LONGS_EQUAL_TEXT(1, r.code, engine);
+    STRCMP_CONTAINS("T_BS (the baseline is cam1's x minus cam0's): baseline h = 40", r.err.c_str());
+  }
+  fixture::write_text(yaml1, intact1);
+  t = intact0;
+  t.replace(t.find("19.5, 14.5]"), 4, "1e6");
+  fixture::write_text(yaml0, t);
+  for (const char* engine : {"fixed", "float", "vo"}) {
+    const Outcome r = sim(std::string("run rec -o est.csv --quiet --engine ") + engine);
+    LONGS_EQUAL_TEXT(1, r.code, engine);
+    STRCMP_CONTAINS("rec/mav0/cam0/sensor.yaml: ", r.err.c_str());  // the lens or the principal point
+  }
+  CHECK(!exists(dir.path() + "/est.csv"));
 }

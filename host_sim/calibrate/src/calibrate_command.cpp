@@ -11,6 +11,7 @@
 #include "lumavel/host/device_setup_from_rig.hpp"
 #include "lumavel/host/progress.hpp"
 #include "lumavel/host/rig.hpp"
+#include "lumavel/host/rig_settings_check.hpp"
 
 namespace lumavel::host {
 namespace {
@@ -61,6 +62,9 @@ int calibrate(CalibrateArgs& a) {
   const Recording rec = load_recording(a.rec);
   WorkingSize write_size = default_working_size(rec);
   if (!a.write_size.empty()) cli::parse_size(a.write_size, write_size.width, write_size.height);
+  // The configuration --write will carry, checked by run's rules before the
+  // registration (naming the file), not after it with a bare message.
+  if (!a.write_path.empty()) check_rig_settings(rec, derive_settings(rec, write_size));
   const int columns = std::min(a.opt.width, rec.cam[0].width);
   if (columns < kRegistrationColumns)
     std::fprintf(stderr,

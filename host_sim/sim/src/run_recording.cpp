@@ -73,6 +73,9 @@ EstimatorSettings run_settings(const Recording& rec, const RunOptions& options) 
                                    " columns (binned like lumavel's engines) or unbinned at the sensor's resolution " +
                                    std::to_string(c.width) + "x" + std::to_string(c.height) + ", not at " +
                                    std::to_string(options.size.width) + "x" + std::to_string(options.size.height));
+    // The same rig rules as lumavel's engines (a 40 m baseline, cu = 1e6 px
+    // are refused, naming the file), checked at the default working size.
+    check_rig_settings(rec, derive_settings(rec, default_working_size(rec)));
     EstimatorSettings s;  // the VO reads its geometry from the recording itself
     s.width = options.size.width;
     s.height = options.size.height;
