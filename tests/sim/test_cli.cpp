@@ -438,3 +438,43 @@ TEST(Cli, EveryEngineRefusesTheSameRig) {
   }
   CHECK(!exists(dir.path() + "/est.csv"));
 }
+
+// Outputs are complete or absent. A run that failed mid-way used to leave a
+// header and the rows before the bad frame on standard output, a partial
+// --hid file: report file that replay accepted, and a CSV when the plot
+// could not be written.
+TEST(Cli, ARunThatFailsMidwayLeavesNoPartialOutput) {
+  const std::string m = rec() + "/mav0/";
+  fixture::write_text(m + "cam0/data/1080000000.png", "not an image");  // frame 8 of 12
+  Outcome r = sim("run rec --quiet");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("frame 8 (t=1080000000 ns, cam0)", r.err.c_str());
+  STRCMP_EQUAL("", r.out.c_str());  // no header, no rows
+  r = sim("run rec -o est.csv --quiet --hid file:run.hidrep");
+  LONGS_EQUAL(1, r.code);
+  CHECK(!exists(dir.path() + "/est.csv"));
+  CHECK(!exists(dir.path() + "/run.hidrep"));
+  size_t files = 0;  // no temporary file left behind either
+  for (const auto& e : std::filesystem::directory_iterator(dir.path())) files += e.is_regular_file();
+  LONGS_EQUAL(2, files);  // stdout.txt, stderr.txt
+}
+
+TEST(Cli, APlotThatCannotBeWrittenLeavesNoCsv) {
+  rec();
+  const Outcome r = sim("run rec -o est.csv --quiet --plot no/such/folder/p.svg --hid file:run.hidrep");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("no/such/folder/p.svg: cannot create the output file", r.err.c_str());
+  CHECK(!exists(dir.path() + "/est.csv"));
+  CHECK(!exists(dir.path() + "/run.hidrep"));
+}
+
+TEST(Cli, AGoodRunWritesItsHidReportFileWhole) {
+  rec();
+  const Outcome r = sim("run rec -o est.csv --quiet --hid file:run.hidrep");
+  LONGS_EQUAL(0, r.code);
+  const std::string bytes = fixture::read_text(dir.path() + "/run.hidrep");
+  CHECK(bytes.rfind("LMVHID1\n", 0) == 0);
+  CHECK(bytes.size() > 8 + 12 * 2);  // one report per frame at least
+  LONGS_EQUAL(0, sim("run rec --quiet --hid file:/dev/null -o /dev/null").code);  // in place, never replaced
+  CHECK(exists("/dev/null"));
+}
