@@ -478,3 +478,22 @@ TEST(Cli, AGoodRunWritesItsHidReportFileWhole) {
   LONGS_EQUAL(0, sim("run rec --quiet --hid file:/dev/null -o /dev/null").code);  // in place, never replaced
   CHECK(exists("/dev/null"));
 }
+
+// calibrate suggests a value for a board only when its uncertainty is at
+// most 0.1 deg: at 40 columns it used to print the config set command for an
+// estimate 0.36 deg off with a quoted 0.04 deg.
+TEST(Cli, CalibrateSuggestsNothingItCannotKnow) {
+  const std::string scenario = LUMAVEL_SOURCE_DIR "/host_sim/scenarios/paper_sim_misaligned.yaml";
+  LONGS_EQUAL(0, sim("render '" + scenario + "' coarse --resolution 40x30 --duration 4 --quiet").code);
+  Outcome r = sim("calibrate coarse --quiet --write coarse.cfg");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("misalignment: ", r.out.c_str());  // the estimate is still shown
+  STRCMP_CONTAINS("not suggested for a board: the uncertainty, ", r.err.c_str());
+  STRCMP_CONTAINS("deg, is above 0.1 deg; nothing written", r.err.c_str());
+  CHECK(r.out.find("send to a board") == std::string::npos);
+  CHECK(!exists(dir.path() + "/coarse.cfg"));
+  LONGS_EQUAL(0, sim("render '" + scenario + "' fine --resolution 160x120 --duration 2 --quiet").code);
+  r = sim("calibrate fine --quiet");
+  LONGS_EQUAL(0, r.code);
+  STRCMP_CONTAINS("send to a board: lumavel-read config set misalignment_rad=", r.out.c_str());
+}
