@@ -105,7 +105,11 @@ void check_lens_invertible(const CameraSensor& c, const std::string& yaml_path) 
       lens.undistort(xd, yd, x, y);
       lens.distort(x, y, ru, rv);
       const double miss = std::hypot((ru - xd) * c.fu, (rv - yd) * c.fv);
-      if (!(miss <= kLensInverseTolerancePx))
+      // Below 1e-12 in normalised coordinates the inverse is exact to
+      // rounding: an absurd focal length (1e300 px, refused by the settings
+      // check naming it) must not make that look like a lens fault.
+      const bool exact = std::hypot(ru - xd, rv - yd) <= 1e-12;
+      if (!(miss <= kLensInverseTolerancePx || exact))
         throw recording_error_in(yaml_path, coeffs + "the lens model cannot be inverted at pixel (" + g(u) + ", " +
                                                 g(v) + "): no undistorted point maps to it (" +
                                                 (std::isfinite(miss) ? "the nearest misses by " + g(miss) + " px"
