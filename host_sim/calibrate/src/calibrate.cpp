@@ -43,6 +43,7 @@ constexpr size_t kShapeHalfSpan = 15;
 // in 34 of 40, and in every one of the 9 whose uncertainty is at most 0.1 deg
 // (all at 160 columns); the 6 outside are at 20 and 40 columns, where the
 // floor alone exceeds 0.1 deg (1/7 left a 40-column estimate at 2.02 sigma).
+// Repeat with host_sim/calibrate/study/uncertainty_study.sh.
 constexpr double kResolutionFloorColumns = 1.0 / 6;
 
 struct Grid {
