@@ -114,4 +114,16 @@ rc=$?
 if [ $rc -eq 3 ]; then  # no device here (the usual case on a build machine)
   grep -q "^lumavel-read info: error: no lumavel device" nodev.err || fail "no-device message: $(cat nodev.err)"
 fi
+# --device paths that are not hidraw nodes never reach hidapi (Debian 12's
+# hid_open_path crashed on them): exit 3, the path named and what it is;
+# stream does not wait for a device that cannot appear there.
+for dev in /dev/null /dev/zero run.hidrep .; do
+  for c in info "config get" "config set width=40" "stream --timeout 1"; do
+    timeout 10 "$READ" --device "$dev" $c > /dev/null 2> dev.err
+    rc=$?
+    [ $rc -eq 3 ] || fail "--device $dev $c: exit $rc, expected 3: $(cat dev.err)"
+    grep -qF "$dev is " dev.err || fail "--device $dev $c: path not named: $(cat dev.err)"
+    grep -qF "not a hidraw device" dev.err || fail "--device $dev $c: $(cat dev.err)"
+  done
+done
 echo "replay CLI: ok"

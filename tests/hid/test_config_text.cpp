@@ -236,3 +236,17 @@ TEST(ConfigText, DeviceCheckBlamesTheGivenKey) {
   device.lens[1].clear();  // now the device's cu (19.5 px) no longer fits 16 columns
   STRCMP_EQUAL("command line: width = 16: cu must be 0..width - 1 px", host::check_settings(device, narrow).c_str());
 }
+
+// A NUL byte inside a value used to end the number there (strtod):
+// "tau_us=25<NUL>0000" was read as 25. Refused, in a file and offline alike.
+TEST(ConfigText, ANulByteIsRefusedNotTruncated) {
+  DeviceSetup s = sample();
+  const uint32_t tau = s.config.tau_us;
+  STRCMP_EQUAL("rig.cfg:2: \"tau_us=25\" is followed by a NUL byte (character 10): not a KEY=VALUE setting",
+               error_of(s, std::string("width=40\ntau_us=25\0" "0000\n", 24)).c_str());
+  LONGS_EQUAL(tau, s.config.tau_us);
+  STRCMP_EQUAL("rig.cfg:1: \"baseline_m=0.0\" is followed by a NUL byte (character 15): not a KEY=VALUE setting",
+               offline_refusal(std::string("baseline_m=0.0\0" "8\n", 17)).c_str());
+  STRCMP_EQUAL("rig.cfg:1: \"look=le\" is followed by a NUL byte (character 8): not a KEY=VALUE setting",
+               offline_refusal(std::string("look=le\0" "ft\n", 11)).c_str());
+}

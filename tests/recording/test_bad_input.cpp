@@ -1,6 +1,7 @@
 // Every "Bad input" case of the recording format (docs/recording-format.md)
 // is refused with one message that names the file and the line or frame.
 #include <png.h>
+#include <zlib.h>
 
 #include <sys/stat.h>
 
@@ -133,6 +134,19 @@ TEST(BadInput, NotANumberInGyro) {
                   load_error().c_str());
 }
 
+// strtod stops at a NUL byte: "9<NUL>0.0092" was read as 9 rad/s.
+TEST(BadInput, NulByteInsideANumber) {
+  fixture::set_line(m + "imu0/data.csv", 12, std::string("1010000000,0.001,-0.002,9\0" "0.0092,0.1,0,9.81", 43));
+  STRCMP_CONTAINS((m + "imu0/data.csv:12: column 'w_RS_S_z [rad s^-1]': '9' is followed by a NUL byte inside the "
+                       "number (character 2): not a number").c_str(),
+                  load_error().c_str());
+  const std::string gt = m + "state_groundtruth_estimate0/data.csv";
+  const std::string line4 = fixture::read_lines(gt)[3];
+  fixture::set_line(gt, 4, line4.substr(0, line4.find(',')) + std::string(",0\0" "5,0,0,1,0,0,0,1,0,0,0,0,0,0,0,0", 34));
+  fixture::set_line(m + "imu0/data.csv", 12, "1010000000,0.001,-0.002,0.02,0.1,0,9.81");
+  STRCMP_CONTAINS((gt + ":4: column 'p_RS_R_x [m]': '0' is followed by a NUL byte").c_str(), load_error().c_str());
+}
+
 TEST(BadInput, InfInGroundTruth) {
   const std::string gt = m + "state_groundtruth_estimate0/data.csv";
   const std::string line4 = fixture::read_lines(gt)[3];
@@ -204,6 +218,43 @@ TEST(BadInput, CorruptFrame) {
   STRCMP_CONTAINS((image(1, 11) + ": corrupt PNG").c_str(), e.c_str());
 }
 
+// Pixel data damaged inside a chunk whose CRC-32 was recomputed (an editor,
+// a faulty writer): only zlib's Adler-32 tells, and it used to be skipped.
+TEST(BadInput, DamagedPixelsUnderAValidChunkCrc) {
+  // Stored (uncompressed) deflate blocks, so one flipped pixel byte still
+  // inflates: nothing but the Adler-32 can notice.
+  std::FILE* f = std::fopen(image(0, 5).c_str(), "wb");
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png_create_info_struct(png);
+  png_init_io(png, f);
+  png_set_compression_level(png, 0);
+  png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_NONE);
+  png_set_IHDR(png, info, 40, 30, 8, PNG_COLOR_TYPE_GRAY, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_BASE,
+               PNG_FILTER_TYPE_BASE);
+  png_write_info(png, info);
+  const std::vector<uint8_t> px = fixture::frame_pixels(o, 5, 0);
+  for (int y = 0; y < 30; ++y) png_write_row(png, px.data() + 40 * y);
+  png_write_end(png, nullptr);
+  png_destroy_write_struct(&png, &info);
+  std::fclose(f);
+  STRCMP_EQUAL("(no error)", full_error().c_str());  // intact, it decodes
+  std::string bytes = fixture::read_text(image(0, 5));
+  const size_t idat = bytes.find("IDAT");
+  const uint32_t len = (static_cast<uint32_t>(static_cast<uint8_t>(bytes[idat - 4])) << 24) |
+                       (static_cast<uint32_t>(static_cast<uint8_t>(bytes[idat - 3])) << 16) |
+                       (static_cast<uint32_t>(static_cast<uint8_t>(bytes[idat - 2])) << 8) |
+                       static_cast<uint8_t>(bytes[idat - 1]);
+  const size_t pixel = idat + 4 + 2 + 5 + 41 * 10 + 20;  // zlib header, stored-block header, row 10, column 19
+  bytes[pixel] = static_cast<char>(bytes[pixel] ^ 0x40);
+  uLong crc = crc32(0L, Z_NULL, 0);
+  crc = crc32(crc, reinterpret_cast<const Bytef*>(bytes.data() + idat), static_cast<uInt>(len + 4));
+  for (size_t k = 0; k < 4; ++k) bytes[idat + 4 + len + k] = static_cast<char>((crc >> (24 - 8 * k)) & 0xFFu);
+  fixture::write_text(image(0, 5), bytes);
+  const std::string e = full_error();
+  STRCMP_CONTAINS("frame 5 (t=1050000000 ns, cam0)", e.c_str());
+  STRCMP_CONTAINS((image(0, 5) + ": corrupt PNG").c_str(), e.c_str());
+}
+
 TEST(BadInput, SensorYamlMissingKey) {
   const std::string y = m + "cam0/sensor.yaml";
   std::vector<std::string> lines = fixture::read_lines(y);
@@ -255,6 +306,40 @@ TEST(BadInput, PoseNotARotation) {
   fixture::write_text(y, t);
   STRCMP_CONTAINS("T_BS: rotation part is not orthonormal", load_error().c_str());
   STRCMP_CONTAINS(y.c_str(), load_error().c_str());
+}
+
+// Orthonormal but a mirror (determinant -1): was accepted (E 97 %).
+TEST(BadInput, PoseIsAReflection) {
+  for (const char* sensor : {"cam1", "imu0"}) {
+    const std::string y = m + sensor + "/sensor.yaml";
+    std::string t = fixture::read_text(y);
+    t.replace(t.find("data: [") + 7, 0, "-");  // negate R(0,0): the body x axis mirrored
+    fixture::write_text(y, t);
+    STRCMP_CONTAINS((y + ":").c_str(), load_error().c_str());
+    STRCMP_CONTAINS("T_BS: rotation part has determinant -1: a reflection, not a rotation", load_error().c_str());
+    fixture::write_text(y, t.erase(t.find("data: [") + 7, 1));
+  }
+  STRCMP_EQUAL("(no error)", load_error().c_str());
+}
+
+// k1 = 1e10 was accepted ("distortion corrected", estimates equal to a
+// pinhole run, calibrate --write wrote all-zero tables); p2 = 20 surfaced as
+// a NaN column edge. A lens that cannot be inverted over the image is refused.
+TEST(BadInput, LensThatCannotBeInvertedOverTheImage) {
+  const std::string y = m + "cam1/sensor.yaml";
+  const std::string intact = fixture::read_text(y);
+  for (const char* coeffs : {"[1e10, 0, 0, 0]", "[0, 0, 0, 20]", "[-3, 0, 0, 0]"}) {
+    std::string t = intact;
+    const size_t at = t.find('[', t.find("distortion_coefficients:"));
+    t.replace(at, t.find(']', at) + 1 - at, coeffs);
+    fixture::write_text(y, t);
+    const std::string e = load_error();
+    STRCMP_CONTAINS((y + ": distortion_coefficients [").c_str(), e.c_str());
+    CHECK_TEXT(e.find("cannot be inverted") != std::string::npos || e.find("folds the image") != std::string::npos,
+               e.c_str());
+  }
+  fixture::write_text(y, intact);
+  STRCMP_EQUAL("(no error)", load_error().c_str());
 }
 
 TEST(BadInput, NoFramesOrNoGyro) {

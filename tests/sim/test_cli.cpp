@@ -452,3 +452,128 @@ TEST(Cli, QuietIsDashQEverywhere) {
   for (const char* cmd : {"run", "render", "calibrate"})
     STRCMP_CONTAINS("-q,--quiet", sim(std::string(cmd) + " --help").out.c_str());
 }
+
+// calibrate reads a rig by run's rules: what run refuses (a principal point
+// of 1e6 px, which used to overflow an int and crash calibrate; a 40 m
+// baseline; a 2 s frame period), calibrate refuses with the same message.
+TEST(Cli, CalibrateRefusesWhatRunRefuses) {
+  auto refused_alike = [&](const char* what) {
+    const Outcome run = sim("run rec -o est.csv --quiet"), cal = sim("calibrate rec --quiet");
+    LONGS_EQUAL_TEXT(1, run.code, what);
+    LONGS_EQUAL_TEXT(1, cal.code, what);
+    const std::string why = run.err.substr(run.err.find("error: ") + 7);
+    CHECK_TEXT(!why.empty(), what);
+    STRCMP_CONTAINS(why.substr(0, why.find(" = ")).c_str(), cal.err.c_str());
+    CHECK_TEXT(cal.out.find("misalignment:") == std::string::npos, what);
+  };
+  const std::string yaml0 = rec() + "/mav0/cam0/sensor.yaml", yaml1 = dir.path() + "/rec/mav0/cam1/sensor.yaml";
+  const std::string intact0 = fixture::read_text(yaml0), intact1 = fixture::read_text(yaml1);
+  std::string t = intact0;
+  t.replace(t.find("19.5, 14.5]"), 4, "1e6");  // cu
+  fixture::write_text(yaml0, t);
+  refused_alike("cu = 1e6");
+  STRCMP_CONTAINS("rec/mav0/cam0/sensor.yaml: ", sim("calibrate rec --quiet").err.c_str());
+  t = intact0;
+  const size_t fu = t.find("intrinsics: [") + 13;
+  t.replace(fu, t.find(',', fu) - fu, "1e300");
+  fixture::write_text(yaml0, t);
+  refused_alike("fu = 1e300");
+  fixture::write_text(yaml0, intact0);
+  t = intact1;
+  t.replace(t.find("0.04,"), 5, "40.04,");
+  fixture::write_text(yaml1, t);
+  refused_alike("baseline 40 m");
+  STRCMP_CONTAINS("baseline h = 40", sim("calibrate rec --quiet").err.c_str());
+  fixture::Options slow;
+  slow.t0 = 5000000000ull;
+  slow.frame_dt = 2000000000ull;  // 2 s between frames
+  slow.frames = 4;
+  std::filesystem::remove_all(dir.path() + "/rec");
+  rec(slow);
+  refused_alike("frame period 2 s");
+  STRCMP_CONTAINS("frame period must be 0.1 ms..1 s", sim("calibrate rec --quiet").err.c_str());
+}
+
+// Every engine reads a rig by the same rules: the vo engine accepted a 40 m
+// baseline and cu = 1e6 px (exit 0, a meaningless V) that fixed and float refuse.
+TEST(Cli, EveryEngineRefusesTheSameRig) {
+  const std::string yaml0 = rec() + "/mav0/cam0/sensor.yaml", yaml1 = dir.path() + "/rec/mav0/cam1/sensor.yaml";
+  const std::string intact0 = fixture::read_text(yaml0), intact1 = fixture::read_text(yaml1);
+  std::string t = intact1;
+  t.replace(t.find("0.04,"), 5, "40.04,");
+  fixture::write_text(yaml1, t);
+  for (const char* engine : {"fixed", "float", "vo"}) {
+    const Outcome r = sim(std::string("run rec -o est.csv --quiet --engine ") + engine);
+    LONGS_EQUAL_TEXT(1, r.code, engine);
+    STRCMP_CONTAINS("T_BS (the baseline is cam1's x minus cam0's): baseline h = 40", r.err.c_str());
+  }
+  fixture::write_text(yaml1, intact1);
+  t = intact0;
+  t.replace(t.find("19.5, 14.5]"), 4, "1e6");
+  fixture::write_text(yaml0, t);
+  for (const char* engine : {"fixed", "float", "vo"}) {
+    const Outcome r = sim(std::string("run rec -o est.csv --quiet --engine ") + engine);
+    LONGS_EQUAL_TEXT(1, r.code, engine);
+    STRCMP_CONTAINS("rec/mav0/cam0/sensor.yaml: ", r.err.c_str());  // the lens or the principal point
+  }
+  CHECK(!exists(dir.path() + "/est.csv"));
+}
+
+// Outputs are complete or absent. A run that failed mid-way used to leave a
+// header and the rows before the bad frame on standard output, a partial
+// --hid file: report file that replay accepted, and a CSV when the plot
+// could not be written.
+TEST(Cli, ARunThatFailsMidwayLeavesNoPartialOutput) {
+  const std::string m = rec() + "/mav0/";
+  fixture::write_text(m + "cam0/data/1080000000.png", "not an image");  // frame 8 of 12
+  Outcome r = sim("run rec --quiet");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("frame 8 (t=1080000000 ns, cam0)", r.err.c_str());
+  STRCMP_EQUAL("", r.out.c_str());  // no header, no rows
+  r = sim("run rec -o est.csv --quiet --hid file:run.hidrep");
+  LONGS_EQUAL(1, r.code);
+  CHECK(!exists(dir.path() + "/est.csv"));
+  CHECK(!exists(dir.path() + "/run.hidrep"));
+  size_t files = 0;  // no temporary file left behind either
+  for (const auto& e : std::filesystem::directory_iterator(dir.path())) files += e.is_regular_file();
+  LONGS_EQUAL(2, files);  // stdout.txt, stderr.txt
+}
+
+TEST(Cli, APlotThatCannotBeWrittenLeavesNoCsv) {
+  rec();
+  const Outcome r = sim("run rec -o est.csv --quiet --plot no/such/folder/p.svg --hid file:run.hidrep");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("no/such/folder/p.svg: cannot create the output file", r.err.c_str());
+  CHECK(!exists(dir.path() + "/est.csv"));
+  CHECK(!exists(dir.path() + "/run.hidrep"));
+}
+
+TEST(Cli, AGoodRunWritesItsHidReportFileWhole) {
+  rec();
+  const Outcome r = sim("run rec -o est.csv --quiet --hid file:run.hidrep");
+  LONGS_EQUAL(0, r.code);
+  const std::string bytes = fixture::read_text(dir.path() + "/run.hidrep");
+  CHECK(bytes.rfind("LMVHID1\n", 0) == 0);
+  CHECK(bytes.size() > 8 + 12 * 2);  // one report per frame at least
+  LONGS_EQUAL(0, sim("run rec --quiet --hid file:/dev/null -o /dev/null").code);  // in place, never replaced
+  CHECK(exists("/dev/null"));
+}
+
+// calibrate suggests a value for a board only when its uncertainty is at
+// most 0.1 deg: at 40 columns it used to print the config set command for an
+// estimate 0.36 deg off with a quoted 0.04 deg.
+TEST(Cli, CalibrateSuggestsNothingItCannotKnow) {
+  const std::string scenario = LUMAVEL_SOURCE_DIR "/host_sim/scenarios/paper_sim_misaligned.yaml";
+  LONGS_EQUAL(0, sim("render '" + scenario + "' coarse --resolution 40x30 --duration 4 --quiet").code);
+  Outcome r = sim("calibrate coarse --quiet --write coarse.cfg");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("misalignment: ", r.out.c_str());  // the estimate is still shown
+  STRCMP_CONTAINS("not suggested for a board: the uncertainty, ", r.err.c_str());
+  STRCMP_CONTAINS("deg, is above 0.1 deg; nothing written", r.err.c_str());
+  CHECK(r.out.find("send to a board") == std::string::npos);
+  CHECK(!exists(dir.path() + "/coarse.cfg"));
+  LONGS_EQUAL(0, sim("render '" + scenario + "' fine --resolution 160x120 --duration 2 --quiet").code);
+  r = sim("calibrate fine --quiet");
+  LONGS_EQUAL(0, r.code);
+  STRCMP_CONTAINS("send to a board: lumavel-read config set misalignment_rad=", r.out.c_str());
+}

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iterator>
 #include <stdexcept>
 #include <vector>
@@ -9,6 +10,7 @@
 #include "lumavel/host/file_camera.hpp"
 #include "lumavel/host/recording_error.hpp"
 #include "lumavel/host/rig.hpp"
+#include "lumavel/host/rig_settings_check.hpp"
 
 namespace lumavel::host {
 namespace {
@@ -33,6 +35,16 @@ constexpr size_t kMinCompleteFrames = 30;
 constexpr size_t kUncertaintyBlock = 20;
 // Frames either side whose translation-field shapes are averaged.
 constexpr size_t kShapeHalfSpan = 15;
+// The registration's resolution floor, in working columns, added in
+// quadrature to the spread over blocks: the spread alone said 0.04 deg where
+// the error was 0.36 deg at 40 columns (issue 15). Measured on robustness_wall
+// and paper_sim_misaligned at 20, 40, 80 and 160 columns, misaligned by -3..3
+// deg (40 renders of 4 s): with 1/6 of a column the truth is within 2 sigma
+// in 34 of 40, and in every one of the 9 whose uncertainty is at most 0.1 deg
+// (all at 160 columns); the 6 outside are at 20 and 40 columns, where the
+// floor alone exceeds 0.1 deg (1/7 left a 40-column estimate at 2.02 sigma).
+// Repeat with host_sim/calibrate/study/uncertainty_study.sh.
+constexpr double kResolutionFloorColumns = 1.0 / 6;
 
 struct Grid {
   double start = 0, step = 0;
@@ -194,6 +206,13 @@ std::vector<double> field_shape(const FrameShifts& f) {
   return g;
 }
 
+// Radians as degrees for messages, %g.
+std::string deg(double rad) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%g", rad * 180 / M_PI);
+  return b;
+}
+
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   return v[v.size() / 2];
@@ -233,16 +252,25 @@ Calibration calibrate_misalignment(const Recording& rec, const CalibrationOption
   const int width = std::min(opt.width, rec.cam[0].width);
   const int height = std::min(rec.cam[0].height, 120);
   EstimatorSettings s = derive_settings(rec, {width, height});
+  // The rules `run` reads a rig by: what the core cannot take is refused here
+  // too, naming the file (a principal point of 1e6 px, a 40 m baseline).
+  check_rig_settings(rec, s);
   const std::vector<double> yaw0 = column_yaws(s, 0), yaw1 = column_yaws(s, 1);
   // Grid: a tenth of a column over the part of the view both cameras cover.
   const double lo = std::max(*std::min_element(yaw0.begin(), yaw0.end()), *std::min_element(yaw1.begin(), yaw1.end()));
   const double hi = std::min(*std::max_element(yaw0.begin(), yaw0.end()), *std::max_element(yaw1.begin(), yaw1.end()));
   Grid g;
   g.step = (hi - lo) / width / 10;
-  g.n = static_cast<int>((hi - lo) / g.step);
   g.start = lo;
-  const int max_shift = static_cast<int>(opt.max_shift_deg * M_PI / 180 / g.step);
-  if (2 * max_shift + 10 >= g.n) throw std::runtime_error("the view is too narrow for the shift search");
+  // Checked in double before any cast: a view a few ulps wide would
+  // overflow an int.
+  const double shift_steps = opt.max_shift_deg * M_PI / 180 / g.step;
+  if (!(g.step > 0) || !(2 * shift_steps + 10 < 10.0 * width))
+    throw RecordingError(rec.root + "/cam0/sensor.yaml and cam1/sensor.yaml: the view both cameras share is " +
+                         deg(hi - lo) + " deg wide, too narrow for the +-" + deg(opt.max_shift_deg * M_PI / 180) +
+                         " deg shift search");
+  g.n = static_cast<int>((hi - lo) / g.step);
+  const int max_shift = static_cast<int>(shift_steps);
 
   // Profiles and gyro headings at every frame.
   FileStereoCamera camera(rec, width, height);
@@ -357,6 +385,12 @@ Calibration calibrate_misalignment(const Recording& rec, const CalibrationOption
   if (samples.empty())
     throw std::runtime_error("no frame pair registered (does the rig move past a textured scene?)");
   out.misalignment = median(samples);
+  // The search covers +-max_shift_deg: a median outside it (the gyro's
+  // heading change dominating the registrations) is no answer.
+  if (!(std::fabs(out.misalignment) <= opt.max_shift_deg * M_PI / 180))
+    throw std::runtime_error("the registrations give " + deg(out.misalignment) + " deg, outside the +-" +
+                             deg(opt.max_shift_deg * M_PI / 180) + " deg searched (--max-shift): no misalignment explains them (a gyro that does not "
+                             "match the images?)");
   // Neighbouring frames see the same scene, so their errors are alike: the
   // spread of medians over blocks of frames, not of single frames, gives
   // the uncertainty (1 sigma; 1.4826 MAD is sigma, 1.2533 sigma/sqrt(n) is
@@ -368,7 +402,9 @@ Calibration calibrate_misalignment(const Recording& rec, const CalibrationOption
   if (blocks.size() < 3) blocks = samples;  // short recordings: optimistic
   std::vector<double> dev;
   for (double x : blocks) dev.push_back(std::fabs(x - out.misalignment));
-  out.uncertainty = 1.4826 * median(dev) * 1.2533 / std::sqrt(static_cast<double>(blocks.size()));
+  const double spread = 1.4826 * median(dev) * 1.2533 / std::sqrt(static_cast<double>(blocks.size()));
+  const double column = g.step * 10;  // one working column of the shared view, rad
+  out.uncertainty = std::hypot(spread, kResolutionFloorColumns * column);
   out.samples = samples.size();
   return out;
 }

@@ -14,6 +14,7 @@
 #include "lumavel/host/path_check.hpp"
 #include "lumavel/host/progress.hpp"
 #include "lumavel/host/rig.hpp"
+#include "lumavel/host/rig_settings_check.hpp"
 
 namespace lumavel::host {
 namespace {
@@ -25,8 +26,14 @@ const char* const kDescription =
     "stood, the two views differ by the misalignment plus the measured heading\n"
     "change. The rig must move past a textured scene. Prints the working size used,\n"
     "the estimate with its uncertainty, the value in the recording's sensor.yaml for\n"
-    "comparison, and the lumavel-read command that sends it to a board. Progress\n"
-    "goes to standard error.";
+    "comparison, and the lumavel-read command that sends it to a board; with an\n"
+    "uncertainty above 0.1 deg it suggests nothing, writes nothing and exits 1.\n"
+    "Progress goes to standard error.";
+
+// A misalignment is suggested for a board (printed as a config set command
+// or written by --write) only with an uncertainty at most this (issue 15):
+// a 0.1 deg yaw error is about 1 % of V on the paper's rig.
+constexpr double kMaxSuggestedUncertaintyDeg = 0.1;
 
 // The registration is validated at this many columns (docs/results.md);
 // coarser recordings are registered at their own width, with a warning.
@@ -67,6 +74,9 @@ int calibrate(CalibrateArgs& a) {
   const Recording rec = load_recording(a.rec);
   WorkingSize write_size = default_working_size(rec);
   if (!a.write_size.empty()) cli::parse_size(a.write_size, write_size.width, write_size.height);
+  // The configuration --write will carry, checked by run's rules before the
+  // registration (naming the file), not after it with a bare message.
+  if (!a.write_path.empty()) check_rig_settings(rec, derive_settings(rec, write_size));
   const int columns = std::min(a.opt.width, rec.cam[0].width);
   if (columns < kRegistrationColumns)
     std::fprintf(stderr,
@@ -95,6 +105,16 @@ int calibrate(CalibrateArgs& a) {
   std::printf("misalignment: %.4f deg +- %.4f deg (%zu of %zu frames registered)\n", c.misalignment * 180 / M_PI,
               c.uncertainty * 180 / M_PI, c.samples, c.candidates);
   std::printf("sensor.yaml says: %.4f deg\n", in_yaml * 180 / M_PI);
+  const double uncertainty_deg = c.uncertainty * 180 / M_PI;
+  if (!(uncertainty_deg <= kMaxSuggestedUncertaintyDeg)) {
+    char why[512];
+    std::snprintf(why, sizeof why,
+                  "not suggested for a board: the uncertainty, %.4f deg, is above %.1f deg%s (register at more "
+                  "columns, up to %d, or record a longer pass past a textured scene)",
+                  uncertainty_deg, kMaxSuggestedUncertaintyDeg, a.write_path.empty() ? "" : "; nothing written",
+                  kRegistrationColumns);
+    throw std::runtime_error(why);
+  }
   if (a.write_path.empty()) {
     std::printf("send to a board: lumavel-read config set misalignment_rad=%.6f\n", c.misalignment);
     return 0;

@@ -11,7 +11,9 @@ namespace lumavel::host {
 
 OutputFile::OutputFile(const std::string& path) : path_(path) {
   if (path.empty()) {
-    file_ = stdout;
+    file_ = std::tmpfile();
+    if (!file_) throw std::runtime_error(std::string("standard output: cannot create its temporary file: ") +
+                                         std::strerror(errno));
     return;
   }
   // Anything that exists and is not a plain regular file (device, pipe, or a
@@ -24,7 +26,7 @@ OutputFile::OutputFile(const std::string& path) : path_(path) {
 }
 
 OutputFile::~OutputFile() {
-  if (committed_ || file_ == stdout) return;
+  if (committed_) return;
   std::fclose(file_);
   if (!temp_.empty()) std::remove(temp_.c_str());
 }
@@ -32,8 +34,16 @@ OutputFile::~OutputFile() {
 void OutputFile::commit() {
   const std::string name = path_.empty() ? std::string("standard output") : path_;
   if (std::fflush(file_) != 0 || std::ferror(file_)) throw std::runtime_error(name + ": write error");
-  if (file_ == stdout) {
+  if (path_.empty()) {  // copy the gathered output to standard output
+    std::rewind(file_);
+    char buf[1 << 16];
+    size_t n = 0;
+    bool ok = true;
+    while (ok && (n = std::fread(buf, 1, sizeof buf, file_)) > 0) ok = std::fwrite(buf, 1, n, stdout) == n;
+    ok = ok && !std::ferror(file_);
+    std::fclose(file_);
     committed_ = true;
+    if (!ok || std::fflush(stdout) != 0) throw std::runtime_error(name + ": write error");
     return;
   }
   const int closed = std::fclose(file_);

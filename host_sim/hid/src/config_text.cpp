@@ -287,6 +287,12 @@ void apply_value(DeviceSetup& d, const std::string& k, const std::string& v) {
 }  // namespace
 
 void apply_setting(DeviceSetup& d, const std::string& kv) {
+  // strto* stop at a NUL byte ("9<NUL>0.0092" would be read as 9): refused
+  // wherever it is, in a key or a word too.
+  const size_t nul = kv.find('\0');
+  if (nul != std::string::npos)
+    throw std::runtime_error("\"" + kv.substr(0, nul) + "\" is followed by a NUL byte (character " +
+                             std::to_string(nul + 1) + "): not a KEY=VALUE setting");
   const auto [k, v] = split_setting(kv);
   try {
     apply_value(d, k, v);

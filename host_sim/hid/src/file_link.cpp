@@ -1,4 +1,17 @@
 // file:PATH: input reports appended to a report-stream file.
+//
+// Complete or absent, like `run -o`: the reports go to PATH.tmpPID and the
+// file is moved to PATH only when the link is closed normally; a run that
+// fails mid-way (the link destroyed while an exception unwinds) removes it,
+// so `lumavel-read replay` never reads half a run as if it were whole.
+// Anything at PATH that is not a regular file (a FIFO, /dev/null, a symlink)
+// is written in place.
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <exception>
+#include <memory>
 #include <stdexcept>
 
 #include "links.hpp"
@@ -9,15 +22,32 @@ namespace lumavel::host {
 
 namespace {
 
+bool is_special(const std::string& path) {
+  struct stat st {};
+  return ::lstat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode);
+}
+
 class FileLink : public hal::ReportLink {
  public:
-  explicit FileLink(const std::string& path) : out_(path) {}
-  ~FileLink() override { out_.flush(); }
-  bool send_input(const uint8_t* report, size_t len) override { return out_.write(report, len); }
+  explicit FileLink(const std::string& path)
+      : path_(path),
+        temp_(is_special(path) ? std::string() : path + ".tmp" + std::to_string(::getpid())),
+        out_(std::make_unique<ReportFileWriter>(temp_.empty() ? path_ : temp_)),
+        exceptions_(std::uncaught_exceptions()) {}
+  ~FileLink() override {
+    const bool failed = std::uncaught_exceptions() > exceptions_;
+    const bool written = out_->flush();
+    out_.reset();  // closed before the rename
+    if (temp_.empty()) return;
+    if (failed || !written || std::rename(temp_.c_str(), path_.c_str()) != 0) std::remove(temp_.c_str());
+  }
+  bool send_input(const uint8_t* report, size_t len) override { return out_->write(report, len); }
   void poll_features(FeatureHandler, void*) override {}  // nobody asks through a file
 
  private:
-  ReportFileWriter out_;
+  std::string path_, temp_;  // temp_ empty: written in place
+  std::unique_ptr<ReportFileWriter> out_;
+  int exceptions_;  // std::uncaught_exceptions() when opened
 };
 
 }  // namespace

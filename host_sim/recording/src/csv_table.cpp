@@ -42,10 +42,16 @@ std::string join(const std::vector<std::string>& v) {
 
 double parse_finite(const std::string& text, const std::string& path, long line, const std::string& column) {
   if (text.empty()) throw recording_error_at(path, line, "column '" + column + "' is empty");
+  // strtod stops at a NUL byte: "9<NUL>0.0092" would be read as 9.
+  const size_t nul = text.find('\0');
+  if (nul != std::string::npos)
+    throw recording_error_at(path, line, "column '" + column + "': '" + text.substr(0, nul) +
+                                             "' is followed by a NUL byte inside the number (character " +
+                                             std::to_string(nul + 1) + "): not a number");
   char* end = nullptr;
   errno = 0;
   const double v = std::strtod(text.c_str(), &end);
-  if (end == text.c_str() || *end != '\0')
+  if (end == text.c_str() || end != text.c_str() + text.size())
     throw recording_error_at(path, line, "column '" + column + "': '" + text + "' is not a number");
   if (!std::isfinite(v))
     throw recording_error_at(path, line, "column '" + column + "': value '" + text + "' is not finite");

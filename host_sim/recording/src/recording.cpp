@@ -7,6 +7,7 @@
 #include "lumavel/host/image_io.hpp"
 #include "lumavel/host/path_check.hpp"
 #include "lumavel/host/recording_layout.hpp"
+#include "lumavel/host/rig.hpp"
 
 namespace lumavel::host {
 namespace {
@@ -138,6 +139,28 @@ void count_gaps(Recording& rec) {
   }
 }
 
+// Counts the frames whose interval the gyro's span does not hold; refuses a
+// gyro that covers none (stopped before the first frame, started after the
+// last, or 1000 s away): no heading change could be measured at all.
+void check_gyro_coverage(Recording& rec, const std::string& imu_csv, const std::string& cam_csv) {
+  const uint64_t g0 = rec.imu_samples.front().t_ns, g1 = rec.imu_samples.back().t_ns;
+  // The engines' tolerance: an interval end within the gyro gap of a sample is covered.
+  const uint64_t tol = static_cast<uint64_t>(std::llround(gyro_gap_s(rec.imu_period_s) * 1e9));
+  auto covers = [&](uint64_t from, uint64_t to) { return from + tol >= g0 && to <= g1 + tol; };
+  const std::vector<FramePairEntry>& f = rec.frames;
+  long covered = 0;
+  for (size_t i = 1; i < f.size(); ++i) {
+    if (covers(f[i - 1].t_ns, f[i].t_ns)) ++covered;
+    else ++rec.gaps.frames_beyond_gyro;
+  }
+  const bool none = f.size() == 1 ? !covers(f[0].t_ns, f[0].t_ns) : covered == 0;
+  if (none)
+    throw recording_error_in(imu_csv, "the gyro samples (t = " + std::to_string(g0) + " .. " + std::to_string(g1) +
+                                          " ns) cover none of the intervals between the frames of " + cam_csv +
+                                          " (t = " + std::to_string(f.front().t_ns) + " .. " +
+                                          std::to_string(f.back().t_ns) + " ns): no heading change can be measured");
+}
+
 }  // namespace
 
 Recording load_recording(const std::string& dir_arg) {
@@ -154,6 +177,7 @@ Recording load_recording(const std::string& dir_arg) {
   for (int c = 0; c < 2; ++c) {
     yaml[c] = root + "/" + layout::kCamDir[c] + "/sensor.yaml";
     rec.cam[c] = read_camera_yaml(yaml[c]);
+    check_lens_invertible(rec.cam[c], yaml[c]);
   }
   rec.imu = read_imu_yaml(root + "/" + layout::kImuDir + "/sensor.yaml");
 
@@ -179,6 +203,7 @@ Recording load_recording(const std::string& dir_arg) {
   for (const ImuSample& s : rec.imu_samples) t.push_back(s.t_ns);
   rec.imu_period_s = rec.imu_samples.size() >= 2 ? median_interval_s(t) : 1.0 / rec.imu.rate_hz;
   count_gaps(rec);
+  check_gyro_coverage(rec, imu_csv, c0.csv);
   return rec;
 }
 

@@ -52,19 +52,28 @@ CameraModel derive_camera(const CameraSensor& c, int work_width, const std::stri
   return m;
 }
 
-std::vector<double> undistorted_column_edges(const CameraSensor& c, int work_width, double axis_yaw, int u_sign) {
-  const std::vector<double>& d = c.distortion;
-  const bool distorted = std::any_of(d.begin(), d.end(), [](double k) { return k != 0; });
-  if (!distorted || c.distortion_model != "radial-tangential") return {};
-  const double k1 = d.size() > 0 ? d[0] : 0, k2 = d.size() > 1 ? d[1] : 0;
-  const double p1 = d.size() > 2 ? d[2] : 0, p2 = d.size() > 3 ? d[3] : 0;
-  std::vector<double> edges(static_cast<size_t>(work_width) + 1);
-  const double scale = static_cast<double>(c.width) / static_cast<double>(work_width);
-  for (int u = 0; u <= work_width; ++u) {
-    // Working edge u on the sensor: native pixel i spans [i - 0.5, i + 0.5].
-    const double xd = (u * scale - 0.5 - c.cu) / c.fu, yd = 0;  // on the principal row
-    double x = xd, y = yd;
-    for (int it = 0; it < 20; ++it) {  // fixed-point inverse of the radial-tangential model
+namespace {
+
+struct RadTan {
+  double k1 = 0, k2 = 0, p1 = 0, p2 = 0;
+  // The model applies: radial-tangential with a coefficient that is not 0.
+  static bool applies(const CameraSensor& c) {
+    const std::vector<double>& d = c.distortion;
+    return c.distortion_model == "radial-tangential" && std::any_of(d.begin(), d.end(), [](double k) { return k != 0; });
+  }
+  explicit RadTan(const std::vector<double>& d)
+      : k1(d.size() > 0 ? d[0] : 0), k2(d.size() > 1 ? d[1] : 0), p1(d.size() > 2 ? d[2] : 0),
+        p2(d.size() > 3 ? d[3] : 0) {}
+  void distort(double x, double y, double& xd, double& yd) const {
+    const double r2 = x * x + y * y;
+    const double radial = 1 + k1 * r2 + k2 * r2 * r2;
+    xd = x * radial + 2 * p1 * x * y + p2 * (r2 + 2 * x * x);
+    yd = y * radial + p1 * (r2 + 2 * y * y) + 2 * p2 * x * y;
+  }
+  // Fixed-point inverse (normalised image coordinates).
+  void undistort(double xd, double yd, double& x, double& y) const {
+    x = xd, y = yd;
+    for (int it = 0; it < 20; ++it) {
       const double r2 = x * x + y * y;
       const double radial = 1 + k1 * r2 + k2 * r2 * r2;
       const double dx = 2 * p1 * x * y + p2 * (r2 + 2 * x * x);
@@ -72,10 +81,72 @@ std::vector<double> undistorted_column_edges(const CameraSensor& c, int work_wid
       x = (xd - dx) / radial;
       y = (yd - dy) / radial;
     }
+  }
+};
+
+// How far (px) an undistorted point may miss its pixel when distorted again.
+constexpr double kLensInverseTolerancePx = 0.01;
+
+std::string g(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%g", v);
+  return b;
+}
+
+}  // namespace
+
+void check_lens_invertible(const CameraSensor& c, const std::string& yaml_path) {
+  if (!RadTan::applies(c)) return;
+  const RadTan lens(c.distortion);
+  const std::string coeffs = "distortion_coefficients [" + g(lens.k1) + ", " + g(lens.k2) + ", " + g(lens.p1) +
+                             ", " + g(lens.p2) + "]: ";
+  // Every pixel edge of the principal row (the columns' angles come from
+  // there), then the top and bottom rows' edges (the whole image).
+  double prev_x = -HUGE_VAL;
+  for (const double v : {c.cv, -0.5, c.height - 0.5}) {
+    for (int i = 0; i <= c.width; ++i) {
+      const double u = i - 0.5;
+      const double xd = (u - c.cu) / c.fu, yd = (v - c.cv) / c.fv;
+      double x = 0, y = 0, ru = 0, rv = 0;
+      lens.undistort(xd, yd, x, y);
+      lens.distort(x, y, ru, rv);
+      const double miss = std::hypot((ru - xd) * c.fu, (rv - yd) * c.fv);
+      // Below 1e-12 in normalised coordinates the inverse is exact to
+      // rounding: an absurd focal length (1e300 px, refused by the settings
+      // check naming it) must not make that look like a lens fault.
+      const bool exact = std::hypot(ru - xd, rv - yd) <= 1e-12;
+      if (!(miss <= kLensInverseTolerancePx || exact))
+        throw recording_error_in(yaml_path, coeffs + "the lens model cannot be inverted at pixel (" + g(u) + ", " +
+                                                g(v) + "): no undistorted point maps to it (" +
+                                                (std::isfinite(miss) ? "the nearest misses by " + g(miss) + " px"
+                                                                     : std::string("the inverse diverges")) +
+                                                "); is a coefficient wrong?");
+      if (v == c.cv) {
+        if (!(x > prev_x))
+          throw recording_error_in(yaml_path, coeffs + "the undistorted columns are not in order at column edge " +
+                                                  g(u) + " of the principal row: the lens folds the image");
+        prev_x = x;
+      }
+    }
+  }
+}
+
+std::vector<double> undistorted_column_edges(const CameraSensor& c, int work_width, double axis_yaw, int u_sign) {
+  if (!RadTan::applies(c)) return {};
+  const RadTan lens(c.distortion);
+  std::vector<double> edges(static_cast<size_t>(work_width) + 1);
+  const double scale = static_cast<double>(c.width) / static_cast<double>(work_width);
+  for (int u = 0; u <= work_width; ++u) {
+    // Working edge u on the sensor: native pixel i spans [i - 0.5, i + 0.5].
+    const double xd = (u * scale - 0.5 - c.cu) / c.fu, yd = 0;  // on the principal row
+    double x = 0, y = 0;
+    lens.undistort(xd, yd, x, y);
     edges[static_cast<size_t>(u)] = axis_yaw + u_sign * std::atan(x);
   }
   return edges;
 }
+
+double gyro_gap_s(double imu_period_s) { return std::max(EstimatorSettings{}.gyro_gap, 2.5 * imu_period_s); }
 
 WorkingSize default_working_size(const Recording& rec) {
   return {default_columns(rec.cam[0].width), default_rows(rec.cam[0].height)};
@@ -109,9 +180,7 @@ EstimatorSettings derive_settings(const Recording& rec, WorkingSize size) {
     throw error_at_key(yaml0, rec.cam[0].line.T_BS,
                        "T_BS: cam0 and cam1 are less than 0.1 mm apart along body x (no baseline)");
   s.frame_period = rec.frame_period_s;
-  // A slow gyro must not look like a gyro gap at every frame: a hole is
-  // more than 2.5 nominal periods (as counted in GapReport).
-  s.gyro_gap = std::max(s.gyro_gap, 2.5 * rec.imu_period_s);
+  s.gyro_gap = gyro_gap_s(rec.imu_period_s);
   const double hfov = 2.0 * std::atan(0.5 * rec.cam[0].width / rec.cam[0].fu);
   s.kernels = default_kernels(hfov);
   return s;

@@ -4,6 +4,7 @@
 
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -104,6 +105,16 @@ Pose read_pose(const YAML::Node& root, const std::string& path) {
       if (std::fabs(dot - (i == j ? 1.0 : 0.0)) > 1e-3)
         throw recording_error_at(path, line_of(t), "T_BS: rotation part is not orthonormal");
     }
+  // Orthonormal with determinant -1 is a mirror: it flips the image's u
+  // axis against the body's and gives an answer that is wrong, not refused.
+  const double det = d[0] * (d[5] * d[10] - d[6] * d[9]) - d[1] * (d[4] * d[10] - d[6] * d[8]) +
+                     d[2] * (d[4] * d[9] - d[5] * d[8]);
+  if (det < 0) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.4g", det);
+    throw recording_error_at(path, line_of(t), std::string("T_BS: rotation part has determinant ") + b +
+                                                   ": a reflection, not a rotation (check the sign of one axis)");
+  }
   if (std::fabs(d[12]) + std::fabs(d[13]) + std::fabs(d[14]) > 1e-9 || std::fabs(d[15] - 1.0) > 1e-9)
     throw recording_error_at(path, line_of(t), "T_BS: last row must be 0, 0, 0, 1");
   Pose p;

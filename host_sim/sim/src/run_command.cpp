@@ -111,11 +111,14 @@ std::string default_plot_path(const RunArgs& a) {
 }
 
 std::string gaps_line(const Recording& rec) {
-  char buf[256];
+  char buf[320];
   std::snprintf(buf, sizeof buf,
-                "gaps: %d frame gaps (about %ld pairs missing, longest %.3f s), %d gyro holes (longest %.3f s)",
+                "gaps: %d frame gaps (about %ld pairs missing, longest %.3f s), %d gyro holes (longest %.3f s)%s",
                 rec.gaps.frame_gaps, rec.gaps.frames_missing, rec.gaps.longest_frame_gap_s, rec.gaps.gyro_holes,
-                rec.gaps.longest_gyro_hole_s);
+                rec.gaps.longest_gyro_hole_s,
+                rec.gaps.frames_beyond_gyro > 0
+                    ? (", " + std::to_string(rec.gaps.frames_beyond_gyro) + " frames beyond the gyro's samples").c_str()
+                    : "");
   return buf;
 }
 
@@ -227,8 +230,13 @@ int run(const RunArgs& a) {
   };
 
   OutputFile out(a.output == "-" ? std::string() : a.output);
-  static char out_buf[1 << 16];
-  if (out.get() == stdout) std::setvbuf(stdout, out_buf, _IOFBF, sizeof out_buf);
+  // The plot is opened before the run (a folder that does not exist fails
+  // now, not after it) and both outputs are committed together: never a CSV
+  // without the plot that was asked for.
+  const std::string plot = a.plot.empty() ? default_plot_path(a) : a.plot;
+  const bool want_plot = !rec.groundtruth.empty() || !a.plot.empty();
+  std::unique_ptr<OutputFile> plot_out;
+  if (want_plot) plot_out = std::make_unique<OutputFile>(plot);
 
   std::unique_ptr<cli::Progress> bar;
   if (!a.quiet) bar = std::make_unique<cli::Progress>(static_cast<long>(rec.frames.size()), "run");
@@ -236,19 +244,20 @@ int run(const RunArgs& a) {
   RunResult result;
   try {
     result = run_recording(rec, options, out.get(), bar ? progress : std::function<void(size_t, size_t)>{});
-    out.commit();
   } catch (...) {
     if (bar) bar->finish();
     throw;
   }
   if (bar) bar->finish();
-
-  const std::string plot = a.plot.empty() ? default_plot_path(a) : a.plot;
-  const bool want_plot = result.has_truth || !a.plot.empty();
-  if (want_plot)
-    write_track_svg(plot, result.track,
-                    recording_name(a.rec) + ": V_xb, " + engine_name(options.engine) + " engine, " +
-                        std::to_string(result.width) + "x" + std::to_string(result.height));
+  if (plot_out) {
+    const std::string svg = track_svg(result.track, recording_name(a.rec) + ": V_xb, " + engine_name(options.engine) +
+                                                        " engine, " + std::to_string(result.width) + "x" +
+                                                        std::to_string(result.height));
+    if (std::fwrite(svg.data(), 1, svg.size(), plot_out->get()) != svg.size())
+      throw std::runtime_error(plot + ": cannot write the plot");
+    plot_out->commit();
+  }
+  out.commit();
   if (!a.quiet) {
     const double span = rec.frames.size() > 1
                             ? static_cast<double>(rec.frames.back().t_ns - rec.frames.front().t_ns) * 1e-9

@@ -7,6 +7,7 @@
 #include "lumavel/host/file_camera.hpp"
 #include "lumavel/host/groundtruth.hpp"
 #include "lumavel/host/recording_layout.hpp"
+#include "lumavel/host/rig_settings_check.hpp"
 #include "lumavel/host/vo_engine.hpp"
 #include "native_camera.hpp"
 
@@ -44,36 +45,6 @@ void write_row(std::FILE* f, const EngineEstimate& e, uint64_t t_ns) {
   std::fwrite(buf, 1, static_cast<size_t>(p - buf), f);
 }
 
-// The file (and key) a derived setting comes from, so that a setting the
-// firmware cannot take is blamed on what the user can change.
-std::string source_of(const Recording& rec, const std::string& setting) {
-  const std::string cam[2] = {rec.root + "/" + layout::kCamDir[0] + "/sensor.yaml",
-                              rec.root + "/" + layout::kCamDir[1] + "/sensor.yaml"};
-  // "FILE:LINE" of a key, or "FILE" when the recording was not read from files.
-  auto at = [](const std::string& file, long line) { return line > 0 ? file + ":" + std::to_string(line) : file; };
-  for (int i = 0; i < 2; ++i) {
-    const std::string c = "cam[" + std::to_string(i) + "].";
-    if (setting == c + "fu" || setting == c + "cu")
-      return at(cam[i], rec.cam[i].line.intrinsics) + ": intrinsics (at the working resolution)";
-    if (setting == c + "axis_yaw") return at(cam[i], rec.cam[i].line.T_BS) + ": T_BS";
-  }
-  if (setting == "baseline")
-    return at(cam[0], rec.cam[0].line.T_BS) + " and " + at(std::string(layout::kCamDir[1]) + "/sensor.yaml",
-                                                           rec.cam[1].line.T_BS) +
-           ": T_BS (the baseline is cam1's x minus cam0's)";
-  if (setting == "frame_period")
-    return rec.root + "/" + layout::kCamDir[0] + "/data.csv: the median interval between frames";
-  if (setting == "gyro_gap") return rec.root + "/" + layout::kImuDir + "/data.csv: the median interval between samples";
-  if (setting == "kernels")
-    return at(cam[0], rec.cam[0].line.intrinsics) + ": the field of view (resolution and intrinsics) sizes the kernels";
-  if (setting == "cam[].edges")
-    return at(cam[0], rec.cam[0].line.distortion) + " or " +
-           at(std::string(layout::kCamDir[1]) + "/sensor.yaml", rec.cam[1].line.distortion) +
-           ": distortion_coefficients";
-  if (setting == "width" || setting == "height") return "the working size (--width/--height)";
-  return rec.root + ": the estimator configuration derived from it";
-}
-
 }  // namespace
 
 const char* const kEstimatesHeader =
@@ -102,6 +73,9 @@ EstimatorSettings run_settings(const Recording& rec, const RunOptions& options) 
                                    " columns (binned like lumavel's engines) or unbinned at the sensor's resolution " +
                                    std::to_string(c.width) + "x" + std::to_string(c.height) + ", not at " +
                                    std::to_string(options.size.width) + "x" + std::to_string(options.size.height));
+    // The same rig rules as lumavel's engines (a 40 m baseline, cu = 1e6 px
+    // are refused, naming the file), checked at the default working size.
+    check_rig_settings(rec, derive_settings(rec, default_working_size(rec)));
     EstimatorSettings s;  // the VO reads its geometry from the recording itself
     s.width = options.size.width;
     s.height = options.size.height;
@@ -130,7 +104,7 @@ RunResult run_recording(const Recording& rec, const RunOptions& options, std::FI
   try {
     engine = make_run_engine(rec, options, settings);
   } catch (const SettingsError& e) {
-    throw RecordingError(source_of(rec, e.setting()) + ": " + e.what());
+    throw RecordingError(setting_source(rec, e.setting()) + ": " + e.what());
   }
   RunResult r = run_recording(rec, settings, *engine, options.decode_threads, csv, progress, options.sink);
   r.lens_distorted = options.engine == EngineKind::kVo ? has_lens_distortion(rec)

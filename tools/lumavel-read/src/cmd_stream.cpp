@@ -83,7 +83,7 @@ int cmd_stream(const Common& c, const StreamOptions& o) {
         std::fprintf(stderr, "%s\n", e.what());
         return kExitPermission;
       }
-      if (o.no_reconnect || timed_out()) {
+      if (o.no_reconnect || timed_out() || e.kind() == DeviceErrorKind::kNotHidraw) {
         std::fprintf(stderr, "%s\n", e.what());
         status = kExitNoDevice;
         break;

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <random>
 
+#include "hidraw_path.hpp"
 #include "lumavel/protocol/descriptor.hpp"
 
 namespace lumavel::read {
@@ -54,6 +55,12 @@ Device::Device(const HidApi& api, const std::string& path)
       path_(path),
       // Start where another process's recent requests are unlikely to be.
       next_tag_(static_cast<uint8_t>(std::random_device{}())) {
+  // A path given by the user goes to the hidraw backend only when it is a
+  // hidraw node (hidraw_path.hpp); enumerated paths come from hidapi itself.
+  if (!path_.empty() && api.backend == Backend::kHidraw) {
+    const std::string why = why_not_hidraw(path_);
+    if (!why.empty()) throw DeviceError(DeviceErrorKind::kNotHidraw, why);
+  }
   if (path_.empty()) {
     const std::vector<DeviceEntry> found = list_devices(api);
     if (found.empty()) {

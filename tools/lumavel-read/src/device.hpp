@@ -12,7 +12,9 @@
 
 namespace lumavel::read {
 
-enum class DeviceErrorKind { kNoDevice, kPermission, kGone, kProtocol, kIo };
+// kNotHidraw: the --device path is something else (a file, /dev/null): no
+// device will ever appear there, so `stream` does not wait for one.
+enum class DeviceErrorKind { kNoDevice, kNotHidraw, kPermission, kGone, kProtocol, kIo };
 
 class DeviceError : public std::runtime_error {
  public:

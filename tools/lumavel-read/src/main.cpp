@@ -35,6 +35,7 @@ cli::Action with_device_errors(const std::string& command, std::function<int()> 
       switch (e.kind()) {
         case DeviceErrorKind::kPermission: return static_cast<int>(kExitPermission);
         case DeviceErrorKind::kNoDevice:
+        case DeviceErrorKind::kNotHidraw:
         case DeviceErrorKind::kGone: return static_cast<int>(kExitNoDevice);
         default: return static_cast<int>(kExitFailure);
       }

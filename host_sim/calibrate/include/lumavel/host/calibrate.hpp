@@ -12,7 +12,8 @@
 // Regressing the shifts on that term's shape (averaged over neighbouring
 // frames) and taking the intercept extrapolates to zero translation: one
 // sample per frame. The median of the samples is the estimate; the spread of
-// medians over blocks of 20 frames gives its uncertainty.
+// medians over blocks of 20 frames, with a resolution floor of 1/6 of a
+// working column in quadrature, gives its uncertainty.
 //
 // Limits: on a single plane the translation term varies by only ~10 % across
 // a 50 deg view, so the extrapolation amplifies registration noise ~10x; a
@@ -40,7 +41,7 @@ struct CalibrationOptions {
 
 struct Calibration {
   double misalignment = 0;   // rad, yaw from cam0 to cam1
-  double uncertainty = 0;    // rad, 1 sigma of the median (from the spread over blocks of frames)
+  double uncertainty = 0;    // rad, 1 sigma: the spread over blocks of frames and the resolution floor
   size_t samples = 0;        // registered frame pairs used
   size_t candidates = 0;     // frames tried
   int width = 0, height = 0;  // working size the frames were registered at

@@ -38,6 +38,10 @@ struct GapReport {
   double longest_frame_gap_s = 0;
   int gyro_holes = 0;          // gyro intervals longer than 2.5 nominal periods
   double longest_gyro_hole_s = 0;
+  // Frames whose interval [previous frame, frame] lies partly outside the
+  // gyro's span [first sample, last sample]: a gyro that starts late or
+  // stops early (each carries GYRO_GAP). A gyro covering none is refused.
+  long frames_beyond_gyro = 0;
 };
 
 struct Recording {

@@ -27,7 +27,18 @@ CameraModel derive_camera(const CameraSensor& c, int work_width, const std::stri
 // Body yaw of the working columns' edges through the sensor's
 // radial-tangential distortion, inverted on the principal row (empty when the
 // coefficients are all zero: the pinhole model applies).
+// Throws RecordingError naming the sensor.yaml when its radial-tangential
+// distortion cannot be inverted over the image (k1 = 1e10: no undistorted
+// point maps to the outer pixels) or folds the principal row's columns.
+// load_recording checks both cameras, so every command and engine refuses it.
+void check_lens_invertible(const CameraSensor& c, const std::string& yaml_path);
+
 std::vector<double> undistorted_column_edges(const CameraSensor& c, int work_width, double axis_yaw, int u_sign);
+
+// The gyro gap for a gyro sampled every `imu_period_s`: the settings'
+// default, or 2.5 nominal periods for a slow gyro (as GapReport counts holes),
+// so that a slow gyro does not look like a gyro gap at every frame.
+double gyro_gap_s(double imu_period_s);
 
 // Full settings; throws RecordingError for a working size the sensors cannot
 // be binned to, or for cameras that do not share one resolution.

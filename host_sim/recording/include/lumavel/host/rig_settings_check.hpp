@@ -1,0 +1,20 @@
+// One rule for every command that reads a rig (run, calibrate, reproduce):
+// the settings derived from a recording must be ones the firmware core takes,
+// and a refusal names the file (and key) the offending value came from.
+#pragma once
+#include <string>
+
+#include "lumavel/host/recording.hpp"
+#include "lumavel/host/settings.hpp"
+
+namespace lumavel::host {
+
+// The file (and key) an EstimatorSettings member ("cam[1].fu", "baseline",
+// "frame_period", ...) is derived from, for messages.
+std::string setting_source(const Recording& rec, const std::string& setting);
+
+// Quantises `s` as the core takes it (to_fixed_config); throws RecordingError
+// "FILE: key: value: rule" for the first setting it cannot take.
+void check_rig_settings(const Recording& rec, const EstimatorSettings& s);
+
+}  // namespace lumavel::host

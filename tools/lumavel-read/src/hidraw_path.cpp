@@ -1,0 +1,42 @@
+#include "hidraw_path.hpp"
+
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+
+namespace lumavel::read {
+namespace {
+
+constexpr const char* kHint = " (use a path that `lumavel-read list` shows, such as /dev/hidraw0)";
+
+// The kernel subsystem of a character device: the last part of
+// /sys/dev/char/MAJ:MIN/subsystem ("hidraw", "mem", "tty"), or "" when unknown.
+std::string char_subsystem(dev_t rdev) {
+  const std::string link =
+      "/sys/dev/char/" + std::to_string(major(rdev)) + ":" + std::to_string(minor(rdev)) + "/subsystem";
+  std::error_code ec;
+  const std::filesystem::path target = std::filesystem::read_symlink(link, ec);
+  return ec ? std::string() : target.filename().string();
+}
+
+}  // namespace
+
+std::string why_not_hidraw(const std::string& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) {
+    if (errno == ENOENT) return "";
+    return path + ": " + std::strerror(errno) + kHint;
+  }
+  if (S_ISREG(st.st_mode)) return path + " is a regular file, not a hidraw device" + kHint;
+  if (S_ISDIR(st.st_mode)) return path + " is a directory, not a hidraw device" + kHint;
+  if (!S_ISCHR(st.st_mode)) return path + " is not a character device, so not a hidraw device" + kHint;
+  const std::string sub = char_subsystem(st.st_rdev);
+  if (sub == "hidraw") return "";
+  return path + " is the character device " + std::to_string(major(st.st_rdev)) + ":" +
+         std::to_string(minor(st.st_rdev)) + (sub.empty() ? "" : " (" + sub + ")") + ", not a hidraw device" + kHint;
+}
+
+}  // namespace lumavel::read
