@@ -83,7 +83,7 @@ struct RecordingCase {
 const std::vector<RecordingCase>& recording_corpus() {
   static const std::vector<RecordingCase> c = {
       {"cam0 data.csv missing", [](const std::string& m) { std::remove((m + "cam0/data.csv").c_str()); },
-       "cam0/data.csv: cannot open"},
+       "cam0/data.csv: does not exist"},
       {"imu header renamed", [](const std::string& m) { replace_in(m + "imu0/data.csv", "w_RS_S_z", "w_z"); },
        "imu0/data.csv:1: header column 3"},
       {"extra column in a gyro row",
@@ -127,9 +127,9 @@ const std::vector<RecordingCase>& recording_corpus() {
       {"camera looking up", [](const std::string& m) {
          replace_in(m + "cam0/sensor.yaml", "0, 0, 1, 0,\n         0, -1, 0, 0", "0, 1, 0, 0,\n         0, 0, 1, 0");
        },
-       "cam0/sensor.yaml: T_BS: this camera looks along body"},
+       "cam0/sensor.yaml:5: T_BS: this camera looks along body"},
       {"fu = 1e300", [](const std::string& m) { replace_in(m + "cam0/sensor.yaml", "intrinsics: [36", "intrinsics: [1e300"); },
-       "cam0/sensor.yaml: intrinsics (at the working resolution): focal length fu"},
+       "cam0/sensor.yaml:17: intrinsics (at the working resolution): focal length fu"},
       {"cu = 1e6", [](const std::string& m) { replace_in(m + "cam1/sensor.yaml", "19.5, 14.5]", "1e6, 14.5]"); },
        "cam1/sensor.yaml: "},
       {"k1 = 1e10", [](const std::string& m) { replace_in(m + "cam0/sensor.yaml", "[0.01, ", "[1e10, "); },
@@ -139,7 +139,7 @@ const std::vector<RecordingCase>& recording_corpus() {
       {"baseline 40 m", [](const std::string& m) { replace_in(m + "cam1/sensor.yaml", "0.04,", "40.04,"); },
        "baseline h = 40"},
       {"no baseline", [](const std::string& m) { replace_in(m + "cam1/sensor.yaml", "0.04,", "-0.04,"); },
-       "cam0/sensor.yaml: T_BS: cam0 and cam1 are less than 0.1 mm apart"},
+       "cam0/sensor.yaml:5: T_BS: cam0 and cam1 are less than 0.1 mm apart"},
       {"truncated PNG",
        [](const std::string& m) {
          const std::string b = fixture::read_text(m + image(0, 9));
@@ -233,7 +233,7 @@ TEST(Corpus, EveryDamagedConfigurationFileIsRefusedNamingTheLine) {
     std::string text;
     const char* refused_with;
   } cases[] = {
-      {"width=40\ntau_us=fast\n", "rig.cfg:2: tau_us:"},
+      {"width=40\ntau_us=fast\n", "rig.cfg:2: tau_us = fast: not a whole number"},
       {std::string("tau_us=25\0" "0000\n", 15), "rig.cfg:1: \"tau_us=25\" is followed by a NUL byte"},
       {std::string("look=le\0" "ft\n", 11), "rig.cfg:1: \"look=le\" is followed by a NUL byte"},
       {"baseline_m=5\n", "rig.cfg:1: baseline_m = 5"},

@@ -543,7 +543,7 @@ TEST(Cli, APlotThatCannotBeWrittenLeavesNoCsv) {
   rec();
   const Outcome r = sim("run rec -o est.csv --quiet --plot no/such/folder/p.svg --hid file:run.hidrep");
   LONGS_EQUAL(1, r.code);
-  STRCMP_CONTAINS("no/such/folder/p.svg: cannot create the output file", r.err.c_str());
+  STRCMP_CONTAINS("no/such/folder/p.svg (--plot): cannot be created: its folder no/such/folder does not exist", r.err.c_str());
   CHECK(!exists(dir.path() + "/est.csv"));
   CHECK(!exists(dir.path() + "/run.hidrep"));
 }

@@ -55,7 +55,7 @@ TEST(VoCli, RefusesARigWithoutBaselineNamingTheFile) {
   const Outcome r = sim("run rec --engine vo");
   LONGS_EQUAL(1, r.code);
   // The rig rules every engine shares (check_rig_settings) refuse it first.
-  STRCMP_CONTAINS("lumavel-sim run: error: rec/mav0/cam0/sensor.yaml: T_BS: cam0 and cam1 are less than 0.1 mm apart "
+  STRCMP_CONTAINS("lumavel-sim run: error: rec/mav0/cam0/sensor.yaml:5: T_BS: cam0 and cam1 are less than 0.1 mm apart "
                   "along body x (no baseline)",
                   r.err.c_str());
 }
