@@ -14,15 +14,14 @@
 // of V leaves that error times S in every sample, and the twin, whose V
 // differs within its allowance, learned another b_k (the day soak split the
 // time of flight on 4x more frames). The weights and the lead keep 1e-5 of
-// themselves for the same reason. The correction starts after
-// kBalanceReadyLength, so that d / h sees the offset removed early. It is
-// subtracted from cam1's F_k before S, M and the phases are formed
-// (measurement.hpp), once kBalanceLength of travel has been averaged.
+// themselves for the same reason. b_k is subtracted from cam1's F_k before
+// S, M and the phases are formed (measurement.hpp) once kBalanceReadyLength
+// of travel has been averaged, so that d / h sees the offset removed early.
 // What it does not learn: a difference that follows the scene (a contrast
 // or a vignetting shape that differs), clipping in one camera only.
 //
 // Formats: b_k in Q28 (ValueQ28); travel in Q24 m; the travel weight alpha
-// in Q16; the lead h / d in Q20, |.| <= 2 kBalanceMaxLeadSteps; the least
+// in Q30; the lead h / d in Q20, |.| <= 2 kBalanceMaxLeadSteps; the least
 // squares' sums in Q56 (S and dM held within +-2).
 #pragma once
 #include <cstdint>

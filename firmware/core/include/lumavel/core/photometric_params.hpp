@@ -16,10 +16,12 @@ constexpr double kBalanceLength = 4.0;
 // near clutter and reversals by 18-26 %, 4 m left the offset half learned on
 // a 10 s run; 2 m: docs/design.md.)
 constexpr double kBalanceReadyLength = 2.0;
-// Frames whose displacement is below |h| / kBalanceMaxLeadSteps teach nothing
-// (the stereo prediction h dM / d would amplify the noise of dM beyond this).
+// A frame's weight fades from full at a displacement of |h| / kBalanceMaxLeadSteps
+// to nothing at half of it (the stereo prediction h dM / d would amplify the
+// noise of dM beyond this).
 constexpr double kBalanceMaxLeadSteps = 16.0;
-// Frames that turn more than this per metre teach nothing (rad/m): the
+// Frames that turn more than this per metre teach nothing, and the weight
+// fades from half of it (rad/m): the
 // rotation term of the stereo prediction is first order only, and its error
 // (the field of view's, see velocity_observer.hpp) would read as cam1's offset.
 constexpr double kBalanceMaxCurvature = 0.05;
