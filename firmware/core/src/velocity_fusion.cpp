@@ -51,6 +51,8 @@ FusionOutput VelocityFusion::update(const FusionInput& in) {
   // restarts long before).
   const int64_t dt_us = in.dt_ns <= 0 ? 0 : static_cast<int64_t>(static_cast<uint32_t>(std::min<int64_t>(in.dt_ns, kInt31 - 1)) / 1000u);
   const int64_t tau_us = use_tof ? static_cast<int64_t>(static_cast<uint32_t>(tof.tau_ns) / 1000u) : 0;
+  // The time the observer has measured without a hold, capped beyond any window.
+  measured_us_ = in.direct ? std::min<int64_t>(measured_us_ + dt_us, kInt31) : 0;
   if (in.direct && abs64(in.v_direct) > kResidualMinSpeedQ16)
     residual_ = static_cast<FracQ16>(residual_ + fx::shr_round(kResidualGainQ16 * (int64_t{in.residual} - residual_), 16));
 
@@ -67,7 +69,9 @@ FusionOutput VelocityFusion::update(const FusionInput& in) {
     const int64_t change_limit = (kScaleMaxChangeQ16 * abs64(tof.v)) >> 16;  // Q16 m/s
     const int64_t q_change =
         change_limit > 0 ? fx::div_q(abs64(accel_) * tau_us, change_limit * 1000000, 16) : fx::kInt32Max;
-    if (q_res < kSoftCutQ16 && q_change < kSoftCutQ16) learn_scale(in, dt_us, q_res, q_change);
+    // The window [t - tau, t] and the frame interval holding its start measured throughout.
+    const bool whole_window = measured_us_ >= tau_us + dt_us;
+    if (whole_window && q_res < kSoftCutQ16 && q_change < kSoftCutQ16) learn_scale(in, dt_us, q_res, q_change);
   }
 
   const int64_t vd = fx::shr_round(int64_t{in.v_differential} * inv_scale_, fx::kScaleFrac);  // Q16

@@ -14,6 +14,11 @@ FloatFusionOutput FloatVelocityFusion::update(const FloatFusionInput& in) {
   const FloatTofResult& tof = *in.tof;
   const bool use_tof = tof.ok && tof.tau_ns < kTofMaxTau * 1e9;
   const double dt = std::min(in.dt, 2.147483647);  // as the core: below 2^31 ns
+  // The time the observer has measured without a hold (the core's comment).
+  const int64_t dt_us = dt > 0 ? std::llround(dt * 1e9) / 1000 : 0;
+  const int64_t tau_us = use_tof ? static_cast<int64_t>(tof.tau_ns) / 1000 : 0;
+  measured_us_ = in.direct ? std::min<int64_t>(measured_us_ + dt_us, int64_t{1} << 31) : 0;
+  const bool whole_window = measured_us_ >= tau_us + dt_us;
   if (in.direct && std::fabs(in.v_direct) > kFusionResidualMinSpeed)
     residual_ += kFusionResidualGain * (in.residual - residual_);
   // The scale's measurement weighed by how clean and how steady (the core's comment).
@@ -22,7 +27,7 @@ FloatFusionOutput FloatVelocityFusion::update(const FloatFusionInput& in) {
   const double change_limit = kFusionScaleMaxChange * std::fabs(tof.v);
   const double q_res = std::max(residual_, 0.0) / kFusionScaleMaxResidual;
   const double q_change = change_limit > 0 ? change / change_limit : HUGE_VAL;
-  if (use_tof && q_res < kFusionScaleSoftCut && q_change < kFusionScaleSoftCut) {
+  if (use_tof && whole_window && q_res < kFusionScaleSoftCut && q_change < kFusionScaleSoftCut) {
     const double ratio = (in.y - tof.y_then) / (tof.direction * in.baseline);
     if (ratio > 0) {
       const double measured = std::clamp(ratio, kFusionScaleMin, kFusionScaleMax);

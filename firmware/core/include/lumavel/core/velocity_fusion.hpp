@@ -15,7 +15,9 @@
 //   learned where the differential is clean, as a slow random walk, and the
 //   differential is divided by it: a consistent bias, e.g. from a finite
 //   baseline on broadband texture, goes away even where no time of flight is
-//   found for a while.
+//   found for a while. Only over a window the observer measured throughout:
+//   over a hold (low texture, a gap, no light) the differential's integral
+//   stands still or carries the held V, which would read as a scale.
 // - Without a time of flight (standstill, too slow for the history, turning,
 //   reversing, lost), the output follows the differential, more slowly the
 //   less it can be trusted; the caller flags the frame (kStatusNoTof).
@@ -55,7 +57,10 @@ class VelocityFusion {
   // After a break (gap, no light): V is held until the next update, which
   // starts again from the differential; the learned scale, residual and
   // inflation are kept.
-  void restart() { started_ = false; }
+  void restart() {
+    started_ = false;
+    measured_us_ = 0;
+  }
   FusionOutput update(const FusionInput& in);
   // The fused V: held over frames without an update (no light, gaps, low
   // texture) and before the first one (0).
@@ -68,6 +73,7 @@ class VelocityFusion {
   AccelQ16 accel_ = 0;
   FracQ16 residual_ = 0;           // tracked residual ratio of the differential
   int32_t tof_inflation_ = int32_t{1} << 16;  // Q16, >= 1: the time of flight's variance factor
+  int64_t measured_us_ = 0;        // how long the observer has measured without a break (us, capped)
   void learn_scale(const FusionInput& in, int64_t dt_us, int64_t q_res, int64_t q_change);
 
   ScaleQ24 scale_ = int32_t{1} << fx::kScaleFrac;

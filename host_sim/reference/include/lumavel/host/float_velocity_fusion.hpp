@@ -26,7 +26,10 @@ struct FloatFusionOutput {
 class FloatVelocityFusion {
  public:
   void reset() { *this = FloatVelocityFusion{}; }
-  void restart() { started_ = false; }
+  void restart() {
+    started_ = false;
+    measured_us_ = 0;
+  }
   FloatFusionOutput update(const FloatFusionInput& in);
   double v() const { return v_; }
   double scale() const { return scale_; }
@@ -36,6 +39,9 @@ class FloatVelocityFusion {
   double v_ = 0, accel_ = 0, residual_ = 0, tof_inflation_ = 1;
   double scale_ = 1, scale_var_ = 0;
   bool scale_started_ = false;
+  // How long the observer has measured without a hold: counted as the core
+  // counts it (whole microseconds), so that both gate the same frames.
+  int64_t measured_us_ = 0;
 };
 
 }  // namespace lumavel::host
