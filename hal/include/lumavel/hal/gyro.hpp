@@ -2,7 +2,7 @@
 #pragma once
 #include <cstdint>
 
-#include "lumavel/core/fixed.hpp"
+#include "lumavel/units/fixed.hpp"
 
 namespace lumavel::hal {
 

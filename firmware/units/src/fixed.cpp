@@ -1,4 +1,4 @@
-#include "lumavel/core/fixed.hpp"
+#include "lumavel/units/fixed.hpp"
 
 namespace lumavel::fx {
 

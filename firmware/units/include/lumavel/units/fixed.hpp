@@ -1,0 +1,134 @@
+// Named fixed-point formats of the firmware, with range, resolution and
+// saturation. Every quantity crossing a module boundary uses one of these.
+//
+//   name        storage  format   range                 resolution        used for
+//   q31_t       int32    Q0.31    [-1, 1)               4.66e-10          kernel tables (see kernel_bank.hpp)
+//   AngleQ28    int32    Q3.28    [-8, 8) rad           3.73e-9 rad       angles: yaw, heading, gyro increments
+//   RateQ24     int32    Q7.24    [-128, 128) rad/s     5.96e-8 rad/s     gyro rate (MPU-6050 max 34.9 rad/s)
+//   LengthQ24   int32    Q7.24    [-128, 128) m         5.96e-8 m         baseline h (0.06 ppm of 8 cm)
+//   SpeedQ16    int32    Q15.16   [-32768, 32768) m/s   1.53e-5 m/s       velocity V (report and state)
+//   DistQ32     int64    Q31.32   +-2.1e9 m             2.3e-10 m         travelled distance s
+//   ValueQ28    int32    Q3.28    [-8, 8)               3.73e-9           normalised kernel outputs F, S, dM
+//   SlopeQ20    int32    Q11.20   [-2048, 2048) /rad    9.5e-7 /rad       angular derivative dF/dtheta
+//   PixelQ16    int32    Q15.16   [-32768, 32768) px    1.53e-5 px        intrinsics fu, cu
+//   CurvQ12     int32    Q19.12   [-524288, 524288)/rad^3 2.4e-4 /rad^3   d3F/dtheta3 (a correction term:
+//                                                                         1e-4 relative is plenty)
+//   FracQ16     int32    Q15.16   [0, 1] used           1.53e-5           fractions and ratios: the observer's
+//                                                                         least-squares residual, weights,
+//                                                                         relative precisions
+//   ScaleQ24    int32    Q7.24    [0.5, 2] used         6e-8              the differential's scale against the
+//                                                                         time of flight (velocity_fusion.hpp)
+//   AccelQ16    int32    Q15.16   [-10, 10] m/s^2 used  1.53e-5 m/s^2     the fused velocity's rate of change
+//   VarQ40      int64    Q23.40   [0, 2^23)             9.1e-13           variance of the scale (1e-8..1e-2)
+//   TravelQ16Ns uint64   V (Q16 m/s) x ns, wrapping   1.5e-14 m         integral of the differential for the
+//                                                                         time of flight: only differences
+//                                                                         over its window are read (exact,
+//                                                                         no division: travel_between)
+//   EdgeOffsetQ15 int16  Q0.15    [-1, 1) rad           3.05e-5 rad       lens correction of a column edge,
+//                                                                         added to the pinhole edge (config.hpp).
+//                                                                         Rounding <= 1.5e-5 rad: 0.06 % of a
+//                                                                         column at 40 columns / 60 deg, 0.2 %
+//                                                                         at 128; held to the fixed-vs-float
+//                                                                         V budget by test_fixed_vs_float
+//
+// Every conversion that can overflow saturates and reports it (see sat32).
+#pragma once
+#include <cstdint>
+
+namespace lumavel {
+
+using q31_t = int32_t;
+using AngleQ28 = int32_t;
+using RateQ24 = int32_t;
+using LengthQ24 = int32_t;
+using SpeedQ16 = int32_t;
+using DistQ32 = int64_t;
+using ValueQ28 = int32_t;
+using SlopeQ20 = int32_t;
+using PixelQ16 = int32_t;
+using CurvQ12 = int32_t;
+using EdgeOffsetQ15 = int16_t;
+using FracQ16 = int32_t;
+using ScaleQ24 = int32_t;
+using AccelQ16 = int32_t;
+using VarQ40 = int64_t;
+using TravelQ16Ns = uint64_t;
+
+namespace fx {
+
+constexpr int kAngleFrac = 28;
+constexpr int kRateFrac = 24;
+constexpr int kLengthFrac = 24;
+constexpr int kSpeedFrac = 16;
+constexpr int kDistFrac = 32;
+constexpr int kValueFrac = 28;
+constexpr int kSlopeFrac = 20;
+constexpr int kPixelFrac = 16;
+constexpr int kCurvFrac = 12;
+constexpr int kEdgeOffsetFrac = 15;
+constexpr int kFracFrac = 16;
+constexpr int kScaleFrac = 24;
+constexpr int kAccelFrac = 16;
+constexpr int kVarFrac = 40;
+
+constexpr int32_t kInt32Max = 2147483647;
+constexpr int32_t kInt32Min = -kInt32Max - 1;
+
+// pi in Q3.28, rounded.
+constexpr AngleQ28 kPiQ28 = 843314857;
+
+// A gyro rate at either end of RateQ24 was clipped on the way in (the
+// sensor's or the conversion's range): its true value is unknown.
+constexpr bool rate_at_rail(RateQ24 r) { return r == kInt32Max || r == kInt32Min; }
+
+// A constant in a Q format, built from its real value at compile time: use it
+// only to initialise constexpr integers (the firmware computes no floats).
+constexpr int64_t q_of(double v, int frac) {
+  double s = v;
+  for (int i = 0; i < frac; ++i) s *= 2;
+  return static_cast<int64_t>(s >= 0 ? s + 0.5 : s - 0.5);
+}
+
+// Clamps a 64-bit value into int32; sets *saturated when it had to.
+constexpr int32_t sat32(int64_t v, bool* saturated = nullptr) {
+  if (v > kInt32Max) {
+    if (saturated) *saturated = true;
+    return kInt32Max;
+  }
+  if (v < kInt32Min) {
+    if (saturated) *saturated = true;
+    return kInt32Min;
+  }
+  return static_cast<int32_t>(v);
+}
+
+// Arithmetic shift right with round-half-away-from-zero (symmetric, so that
+// positive and negative values carry no opposite biases).
+constexpr int64_t shr_round(int64_t v, int s) {
+  if (s <= 0) return v;
+  const int64_t half = int64_t{1} << (s - 1);
+  return v >= 0 ? (v + half) >> s : -((-v + half) >> s);
+}
+
+// Rounded, saturated quotient num/den in Q(q) (0 <= q <= 62; beyond 31 the
+// scale moves into num or den). A zero
+// denominator saturates toward the sign of num and sets *saturated.
+int32_t div_q(int64_t num, int64_t den, int q, bool* saturated = nullptr);
+
+// num / den in Q16 for 0 <= num <= den and den > 0 (a fraction), rounded,
+// with one 32-bit division instead of div_q's 64-bit ones: both are shifted
+// right until den < 2^16, which keeps 15-16 significant bits of den. Error
+// <= 2^-15 of the result plus half a Q16 step (<= 4.6e-5 in all).
+inline int32_t fraction_q16(int64_t num, int64_t den) {
+  const int lz = __builtin_clzll(static_cast<uint64_t>(den));
+  const int s = lz >= 48 ? 0 : 48 - lz;
+  const uint32_t n = static_cast<uint32_t>(num >> s), d = static_cast<uint32_t>(den >> s);
+  return static_cast<int32_t>(((n << 16) + d / 2) / d);
+}
+
+// The travel from `since` to `now` (Q16 m/s x ns): exact while it is below
+// 2^63, i.e. for any window of the time of flight.
+constexpr int64_t travel_between(TravelQ16Ns now, TravelQ16Ns since) { return static_cast<int64_t>(now - since); }
+
+}  // namespace fx
+}  // namespace lumavel
