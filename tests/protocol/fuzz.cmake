@@ -24,7 +24,7 @@ foreach(kind reports config)
   add_custom_command(OUTPUT ${_bin}
     COMMAND ${LUMAVEL_CLANGXX} -std=c++17 -g -O1 ${_defs}
             -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all
-            -I${_proto}/include -I${PROJECT_SOURCE_DIR}/firmware/core/include
+            -I${_proto}/include -I${PROJECT_SOURCE_DIR}/firmware/core/include -I${PROJECT_SOURCE_DIR}/firmware/units/include
             ${_fuzz_srcs} -o ${_bin}
     DEPENDS ${_fuzz_srcs} ${_fuzz_headers}
     COMMENT "Building libFuzzer target fuzz_${kind} with ${LUMAVEL_CLANGXX}")

@@ -25,7 +25,7 @@ set(_bin ${CMAKE_CURRENT_BINARY_DIR}/fuzz_recording_reader)
 add_custom_command(OUTPUT ${_bin}
   COMMAND ${LUMAVEL_CLANGXX} -std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all
           -I${_rec}/include -I${PROJECT_SOURCE_DIR}/host_sim/reference/include
-          -I${PROJECT_SOURCE_DIR}/host_sim/cli/include -I${PROJECT_SOURCE_DIR}/firmware/core/include -I${PROJECT_SOURCE_DIR}/hal/include
+          -I${PROJECT_SOURCE_DIR}/host_sim/cli/include -I${PROJECT_SOURCE_DIR}/firmware/core/include -I${PROJECT_SOURCE_DIR}/firmware/units/include -I${PROJECT_SOURCE_DIR}/hal/include
           ${_srcs} ${LUMAVEL_YAML_CPP_LIB} ${LUMAVEL_PNG_LIB} -o ${_bin}
   DEPENDS ${_srcs} ${_hdrs}
   COMMENT "Building libFuzzer target fuzz_recording_reader with ${LUMAVEL_CLANGXX}")

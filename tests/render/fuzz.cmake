@@ -21,7 +21,7 @@ set(_bin ${CMAKE_CURRENT_BINARY_DIR}/fuzz_scenario_loader)
 add_custom_command(OUTPUT ${_bin}
   COMMAND ${LUMAVEL_CLANGXX} -std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all
           -I${_render}/include -I${PROJECT_SOURCE_DIR}/host_sim/recording/include
-          -I${PROJECT_SOURCE_DIR}/host_sim/reference/include -I${PROJECT_SOURCE_DIR}/host_sim/cli/include -I${PROJECT_SOURCE_DIR}/firmware/core/include
+          -I${PROJECT_SOURCE_DIR}/host_sim/reference/include -I${PROJECT_SOURCE_DIR}/host_sim/cli/include -I${PROJECT_SOURCE_DIR}/firmware/core/include -I${PROJECT_SOURCE_DIR}/firmware/units/include
           -I${PROJECT_SOURCE_DIR}/hal/include -I${_eigen_inc}
           ${_srcs} ${LUMAVEL_YAML_CPP_LIB} -o ${_bin}
   DEPENDS ${_srcs} ${_hdrs}
