@@ -22,13 +22,6 @@ bool MpuGyro::read(lumavel::hal::GyroSample& out) {
   return true;
 }
 
-bool MpuGyro::peek_time(uint64_t& t_ns) {
-  if (count_ == 0) poll();
-  if (count_ == 0) return false;
-  t_ns = ring_[head_].t_ns;
-  return true;
-}
-
 void TslCamera::init() {
   port_.init();
   lumavel::bluepill::tsl1401_flush(port_);  // clears power-up charge, starts integrating

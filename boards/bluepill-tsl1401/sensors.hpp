@@ -20,7 +20,6 @@ class MpuGyro final : public lumavel::hal::Gyro {
   bool init() { return present_ = mpu_.init(bus_); }
   void poll();  // FIFO -> ring
   bool read(lumavel::hal::GyroSample& out) override;
-  bool peek_time(uint64_t& t_ns) override;
 
  private:
   static constexpr int kRing = 64;

@@ -16,11 +16,6 @@
 #include "lumavel/stream/format.hpp"
 #include "stream_writer.hpp"
 
-namespace {
-
-
-}  // namespace
-
 int main(int argc, char** argv) {
   if (argc != 5) {
     std::fprintf(stderr, "usage: %s <recording dir> <out.lvs> <width> <height>\n", argv[0]);
@@ -48,6 +43,9 @@ int main(int argc, char** argv) {
     lumavel::hal::StereoImage img{0, {px[0].data(), px[1].data()}, static_cast<uint16_t>(w),
                                   static_cast<uint16_t>(h)};
     size_t frames = 0, samples = 0;
+    // One sample read ahead: the first one after the frames written so far.
+    lumavel::hal::GyroSample next{};
+    bool have_next = gyro.read(next);
     for (;;) {
       const lumavel::hal::CaptureStatus st = camera.capture(img);
       if (st == lumavel::hal::CaptureStatus::kEnd) break;
@@ -56,11 +54,10 @@ int main(int argc, char** argv) {
         std::fclose(o.f);
         return 2;
       }
-      uint64_t t = 0;
-      lumavel::hal::GyroSample s{};
-      while (gyro.peek_time(t) && t <= img.t_ns && gyro.read(s)) {
-        o.gyro(s.t_ns, s.rate_z);
+      while (have_next && next.t_ns <= img.t_ns) {
+        o.gyro(next.t_ns, next.rate_z);
         ++samples;
+        have_next = gyro.read(next);
       }
       o.u8(lumavel::stream::kTagFrame);
       o.u64(img.t_ns);
@@ -68,9 +65,8 @@ int main(int argc, char** argv) {
       o.bytes(px[1].data(), px[1].size());
       ++frames;
     }
-    lumavel::hal::GyroSample s{};
-    if (gyro.read(s)) {  // the first sample after the last frame: interpolation needs it
-      o.gyro(s.t_ns, s.rate_z);
+    if (have_next) {  // the first sample after the last frame: interpolation needs it
+      o.gyro(next.t_ns, next.rate_z);
       ++samples;
     }
     if (std::fclose(o.f) != 0) {

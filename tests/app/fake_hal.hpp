@@ -41,11 +41,6 @@ struct Gyro : lumavel::hal::Gyro {
     out = samples[next++];
     return true;
   }
-  bool peek_time(uint64_t& t) override {
-    if (next >= samples.size() || next >= ready) return false;
-    t = samples[next].t_ns;
-    return true;
-  }
 };
 
 struct Clock : lumavel::hal::Clock {

@@ -19,10 +19,4 @@ bool FileGyro::read(hal::GyroSample& out) {
   return true;
 }
 
-bool FileGyro::peek_time(uint64_t& t_ns) {
-  if (next_ >= rec_.imu_samples.size()) return false;
-  t_ns = rec_.imu_samples[next_].t_ns;
-  return true;
-}
-
 }  // namespace lumavel::host

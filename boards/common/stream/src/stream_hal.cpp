@@ -163,20 +163,7 @@ hal::CaptureStatus StreamCamera::capture(hal::StereoImage& out) {
   return hal::CaptureStatus::kOk;
 }
 
-bool StreamGyro::read(hal::GyroSample& out) {
-  if (have_) {
-    out = next_;
-    have_ = false;
-    return true;
-  }
-  return r_.next_gyro(out);
-}
-
-bool StreamGyro::peek_time(uint64_t& t_ns) {
-  if (!have_) have_ = r_.next_gyro(next_);
-  if (have_) t_ns = next_.t_ns;
-  return have_;
-}
+bool StreamGyro::read(hal::GyroSample& out) { return r_.next_gyro(out); }
 
 bool StreamReportLink::emit(uint8_t kind, const uint8_t* bytes, size_t len) {
   if (len > 255) return false;

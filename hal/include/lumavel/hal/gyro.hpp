@@ -16,8 +16,6 @@ class Gyro {
   virtual ~Gyro() = default;
   // The next sample if one is ready (non-blocking); false otherwise.
   virtual bool read(GyroSample& out) = 0;
-  // Timestamp of the next sample without consuming it; false if none is ready.
-  virtual bool peek_time(uint64_t& t_ns) = 0;
 };
 
 }  // namespace lumavel::hal

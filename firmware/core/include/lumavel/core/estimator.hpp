@@ -52,7 +52,6 @@ class Estimator {
 
   const EstimatorConfig& config() const { return cfg_; }
   const KernelBank& bank() const { return bank_; }
-  const StereoMeasurement& last_measurement() const { return meas_[cur_]; }
   // The index the next frame gets (tests: the wrap at 2^32, 2.3 years at
   // 60 Hz, 50 days at 1 kHz, must change nothing but the index).
   void set_next_frame_index(uint32_t index) { frame_index_ = index; }

@@ -14,7 +14,6 @@ class GyroIntegrator {
   // Integrated angle at t (unwrapped, Q28 in int64): interpolated between the
   // last two samples, held at the last rate beyond the last one.
   int64_t angle_at(uint64_t t_ns) const;
-  bool has_samples() const { return count_ > 0; }
   // Longest spacing between samples seen since the last call (ns).
   uint64_t take_max_spacing();
   // Whether the samples cover the interval [from, to] to within `gap_ns`:

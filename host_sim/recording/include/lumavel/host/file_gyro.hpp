@@ -15,7 +15,6 @@ class FileGyro : public hal::Gyro {
  public:
   explicit FileGyro(const Recording& rec) : rec_(rec) {}  // rec must outlive the gyro
   bool read(hal::GyroSample& out) override;
-  bool peek_time(uint64_t& t_ns) override;
 
  private:
   const Recording& rec_;

@@ -88,12 +88,9 @@ class StreamGyro final : public hal::Gyro {
  public:
   explicit StreamGyro(StreamReader& r) : r_(r) {}
   bool read(hal::GyroSample& out) override;
-  bool peek_time(uint64_t& t_ns) override;
 
  private:
   StreamReader& r_;
-  bool have_ = false;
-  hal::GyroSample next_{};
 };
 
 // Input reports and feature replies go to the sink, framed as in format.hpp.
