@@ -84,7 +84,7 @@ std::vector<std::vector<uint8_t>> lens_sets(Lens lens, int w, int h) {
   lumavel::protocol::DeviceConfig c = lumavel::stream::defaults_for(static_cast<uint16_t>(w), static_cast<uint16_t>(h));
   c.tau_us = 250000;
   lumavel::EstimatorConfig geometry{};
-  if (!lumavel::protocol::to_estimator_config(c, geometry)) std::abort();
+  if (!lumavel::app::to_estimator_config(c, geometry)) std::abort();
   std::vector<lumavel::EdgeOffsetQ15> tables[2];
   for (int i = 0; i < 2; ++i) {
     tables[i] = lens == Lens::kBarrel

@@ -10,6 +10,7 @@
 //     -semihosting-config enable=on,target=native,arg=bench,arg=<in.lvs>,arg=<label> -kernel lumavel_qemu_bench.elf
 #include <cstdint>
 
+#include "lumavel/app/estimator_config.hpp"
 #include "lumavel/board/text.hpp"
 #include "lumavel/core/column_profile.hpp"
 #include "lumavel/core/estimator.hpp"
@@ -90,7 +91,7 @@ int main() {
   if (!reader.open()) fail("not a stream\n");
   const uint16_t w = reader.width(), h = reader.height();
   lumavel::EstimatorConfig cfg{};
-  if (!lumavel::protocol::to_estimator_config(lumavel::stream::defaults_for(w, h), cfg) ||
+  if (!lumavel::app::to_estimator_config(lumavel::stream::defaults_for(w, h), cfg) ||
       estimator.configure(cfg) != lumavel::ConfigError::kOk) {
     fail("default configuration refused\n");
   }

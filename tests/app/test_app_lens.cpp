@@ -16,6 +16,7 @@
 #include "app_env.hpp"
 #include "fake_hal.hpp"
 #include "lumavel/app/app.hpp"
+#include "lumavel/app/estimator_config.hpp"
 #include "lumavel/core/estimator.hpp"
 #include "lumavel/host/settings.hpp"
 #include "lumavel/protocol/device_config.hpp"
@@ -79,7 +80,7 @@ TEST_GROUP(AppLens) {
     env = std::make_unique<Env>();
     for (uint64_t k = 1; k <= 40; ++k) env->camera.times.push_back(k * kPeriod);
     CHECK_TRUE(env->app.start());
-    CHECK_TRUE(protocol::to_estimator_config(protocol::default_device_config(), fixed));
+    CHECK_TRUE(lumavel::app::to_estimator_config(protocol::default_device_config(), fixed));
     for (int i = 0; i < 2; ++i) {
       model[i] = barrel(fixed.cam[i], i == 0 ? -0.14 : -0.10);
       table[i] = host::to_fixed_edge_offsets(model[i], fixed.cam[i], 40);

@@ -1,7 +1,7 @@
 // Device side of the HID end-to-end test: serves an estimates CSV (or a report
 // file) as lumavel input reports through a host link (uhid, hidg, file), and
 // answers the feature reports (info, config get/set with a file-backed store)
-// through protocol::FeatureServer, as the firmware does.
+// through app::FeatureServer, as the firmware does.
 #include <csignal>
 #include <chrono>
 #include <cstdio>
@@ -13,11 +13,11 @@
 #include <vector>
 
 #include "estimates_csv.hpp"
+#include "lumavel/app/feature_server.hpp"
 #include "lumavel/host/file_config_store.hpp"
 #include "lumavel/host/hid_link.hpp"
 #include "lumavel/host/report_file.hpp"
 #include "lumavel/protocol/descriptor.hpp"
-#include "lumavel/protocol/feature_server.hpp"
 
 namespace proto = lumavel::protocol;
 using Clock = std::chrono::steady_clock;
@@ -113,10 +113,10 @@ int main(int argc, char** argv) {
     id.max_rows = lumavel::kMaxRows;
     id.max_kernels = lumavel::kMaxKernels;
     lumavel::host::FileConfigStore file_store(store_path);
-    proto::FeatureServer server(id, store_path.empty() ? nullptr : &file_store, accept_all, nullptr);
+    lumavel::app::FeatureServer server(id, store_path.empty() ? nullptr : &file_store, accept_all, nullptr);
     server.boot(proto::default_device_config());
 
-    auto serve = [&] { link->poll_features(&proto::FeatureServer::handle, &server); };
+    auto serve = [&] { link->poll_features(&lumavel::app::FeatureServer::handle, &server); };
     size_t sent = 0;
     for (const auto& r : out) {
       const auto deadline = Clock::now() + std::chrono::milliseconds(wait_ms);

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "lumavel/app/estimator_config.hpp"
 #include "lumavel/core/kernel_bank.hpp"
 #include "lumavel/host/device_setup_from_rig.hpp"
 #include "recording_fixture.hpp"
@@ -54,7 +55,7 @@ TEST(DeviceSetup, DeviceEdgesEqualTheHostsRelativeToCam0) {
   // What the device builds from it.
   EstimatorConfig dev{};
   const EdgeOffsetQ15* const lens[2] = {d.lens[0].data(), nullptr};
-  CHECK_TRUE(protocol::to_estimator_config(d.config, dev, lens));
+  CHECK_TRUE(app::to_estimator_config(d.config, dev, lens));
   STRCMP_EQUAL("ok", to_string(validate(dev)));
   AngleQ28 e0[41], e1[41];
   column_edge_yaws(dev.cam[0], dev.edge_offsets[0], 40, e0);

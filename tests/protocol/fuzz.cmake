@@ -12,8 +12,10 @@ endif()
 set(_proto ${PROJECT_SOURCE_DIR}/firmware/protocol)
 set(_fuzz_srcs ${_proto}/src/crc.cpp ${_proto}/src/descriptor.cpp ${_proto}/src/reports.cpp
                ${_proto}/src/device_config.cpp ${_proto}/src/lens.cpp
+               ${PROJECT_SOURCE_DIR}/firmware/app/src/estimator_config.cpp
                ${CMAKE_CURRENT_SOURCE_DIR}/fuzz_targets.cpp)
-file(GLOB _fuzz_headers ${_proto}/include/lumavel/protocol/*.hpp ${_proto}/src/*.hpp)
+file(GLOB _fuzz_headers ${_proto}/include/lumavel/protocol/*.hpp ${_proto}/src/*.hpp
+     ${PROJECT_SOURCE_DIR}/firmware/app/include/lumavel/app/estimator_config.hpp)
 
 foreach(kind reports config)
   set(_bin ${CMAKE_CURRENT_BINARY_DIR}/fuzz_${kind})
@@ -24,7 +26,7 @@ foreach(kind reports config)
   add_custom_command(OUTPUT ${_bin}
     COMMAND ${LUMAVEL_CLANGXX} -std=c++17 -g -O1 ${_defs}
             -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all
-            -I${_proto}/include -I${PROJECT_SOURCE_DIR}/firmware/core/include -I${PROJECT_SOURCE_DIR}/firmware/units/include
+            -I${_proto}/include -I${PROJECT_SOURCE_DIR}/firmware/app/include -I${PROJECT_SOURCE_DIR}/firmware/core/include -I${PROJECT_SOURCE_DIR}/firmware/units/include
             ${_fuzz_srcs} -o ${_bin}
     DEPENDS ${_fuzz_srcs} ${_fuzz_headers}
     COMMENT "Building libFuzzer target fuzz_${kind} with ${LUMAVEL_CLANGXX}")

@@ -9,12 +9,14 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "lumavel/app/estimator_config.hpp"
 #include "lumavel/protocol/crc.hpp"
 #include "lumavel/protocol/device_config.hpp"
 #include "lumavel/protocol/lens.hpp"
 #include "lumavel/protocol/reports.hpp"
 
 using namespace lumavel::protocol;
+using lumavel::app::to_estimator_config;
 
 namespace {
 

@@ -2,11 +2,13 @@
 
 #include <cstring>
 
+#include "lumavel/app/estimator_config.hpp"
 #include "lumavel/protocol/crc.hpp"
 #include "lumavel/protocol/device_config.hpp"
 
 using namespace lumavel::protocol;
 using lumavel::EstimatorConfig;
+using lumavel::app::to_estimator_config;
 
 namespace {
 

@@ -1,5 +1,6 @@
 #include "lumavel/app/app.hpp"
 
+#include "lumavel/app/estimator_config.hpp"
 #include "lumavel/protocol/descriptor.hpp"
 
 namespace lumavel::app {
@@ -41,7 +42,7 @@ ConfigField App::apply(const protocol::DeviceConfig& c, const EdgeOffsetQ15* con
   if (c.width != hal_.camera.width()) return ConfigField::kWidth;
   if (c.height != hal_.camera.height()) return ConfigField::kHeight;
   EstimatorConfig e{};
-  if (!protocol::to_estimator_config(c, e, lens)) {
+  if (!to_estimator_config(c, e, lens)) {
     const ConfigField f = protocol::validate(c);
     return f != ConfigField::kOk ? f : ConfigField::kLens;
   }
@@ -120,7 +121,7 @@ size_t App::handle_feature(uint8_t id, bool is_set, uint8_t* buf, size_t len, si
     mailbox_tag_ = tag;
     return 1;
   }
-  return protocol::FeatureServer::handle(&features_, id, is_set, buf, len, cap);
+  return FeatureServer::handle(&features_, id, is_set, buf, len, cap);
 }
 
 size_t App::feature_trampoline(void* ctx, uint8_t id, bool is_set, uint8_t* buf, size_t len,
@@ -131,7 +132,7 @@ size_t App::feature_trampoline(void* ctx, uint8_t id, bool is_set, uint8_t* buf,
 void App::send_mailbox() {
   if (mailbox_id_ == 0) return;
   uint8_t report[protocol::kMaxReportSize];
-  const size_t n = protocol::FeatureServer::handle(&features_, mailbox_id_, false, report, sizeof report,
+  const size_t n = FeatureServer::handle(&features_, mailbox_id_, false, report, sizeof report,
                                                   sizeof report);
   mailbox_id_ = 0;
   for (size_t i = 0; i < protocol::feature_chunk_count(n); ++i) {

@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "lumavel/app/estimator_config.hpp"
 #include "lumavel/core/fixed.hpp"
 
 namespace lumavel::host {
@@ -65,7 +66,7 @@ DeviceSetup device_setup_from_settings(const EstimatorSettings& in) {
   d.lens = 0;
   d.lens_crc = 0;
   const proto::ConfigField f = proto::validate(d);
-  if (f != proto::ConfigField::kOk || !proto::to_estimator_config(d, dev))
+  if (f != proto::ConfigField::kOk || !app::to_estimator_config(d, dev))
     throw std::invalid_argument(std::string("the rig's ") + proto::to_string(f) +
                                 " is outside what the HID configuration accepts (docs/usb-hid.md)");
   for (int i = 0; i < 2; ++i) out.lens[i] = to_fixed_edge_offsets(s.cam[i], dev.cam[i], s.width);

@@ -84,7 +84,7 @@ void HidSender::set_resolution(uint16_t width, uint16_t height) {
   accept_ = store_ != nullptr;
 }
 
-void HidSender::poll() { link_->poll_features(&proto::FeatureServer::handle, &features_); }
+void HidSender::poll() { link_->poll_features(&app::FeatureServer::handle, &features_); }
 
 bool HidSender::send(uint64_t t_ns, double v_mps, double distance_m, double heading_rad,
                      uint16_t status, double gyro_offset_radps) {

@@ -6,12 +6,13 @@
 // of the interval (up to the first one at or after the frame time), step the
 // estimator, send the measurement report, serve feature requests.
 // Configuration (boot from the store or defaults, get/set from the host) is
-// the protocol's FeatureServer; the app adds the camera check, the estimator
+// the FeatureServer (feature_server.hpp); the app adds the camera check, the estimator
 // and the mailbox (feature reports sent as input chunks).
 #pragma once
 #include <cstddef>
 #include <cstdint>
 
+#include "lumavel/app/feature_server.hpp"
 #include "lumavel/core/estimator.hpp"
 #include "lumavel/core/limits.hpp"
 #include "lumavel/hal/camera.hpp"
@@ -21,7 +22,6 @@
 #include "lumavel/hal/report_link.hpp"
 #include "lumavel/hal/watchdog.hpp"
 #include "lumavel/protocol/device_config.hpp"
-#include "lumavel/protocol/feature_server.hpp"
 #include "lumavel/protocol/reports.hpp"
 
 namespace lumavel::app {
@@ -95,7 +95,7 @@ class App {
   Hal hal_;
   Board board_;
   Estimator estimator_{};
-  protocol::FeatureServer features_;
+  FeatureServer features_;
   uint16_t width_ = 0;   // of the running configuration
   uint16_t height_ = 0;
   uint32_t frame_period_us_ = 0;

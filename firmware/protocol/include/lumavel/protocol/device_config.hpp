@@ -1,16 +1,16 @@
 // The user-facing device configuration (feature report 0x03, and the blob kept
 // in the HAL's ConfigStore: the same bytes). Physical quantities in the named
-// fixed-point formats of lumavel/core/fixed.hpp; integer only.
+// fixed-point formats of lumavel/units/fixed.hpp; integer only.
 //
 // Flow on the device: decode_config() (CRC, version) -> validate() (ranges) ->
-// to_estimator_config() -> Estimator::configure() (the core's own checks) ->
-// ConfigStore::save(encoded bytes). Nothing is applied unless all pass.
+// app::to_estimator_config() -> Estimator::configure() (the core's own checks)
+// -> ConfigStore::save(encoded bytes). Nothing is applied unless all pass.
 #pragma once
 #include <cstddef>
 #include <cstdint>
 
-#include "lumavel/core/config.hpp"
-#include "lumavel/core/fixed.hpp"
+#include "lumavel/core/config.hpp"  // the estimator's option bits only (header, no link)
+#include "lumavel/units/fixed.hpp"
 #include "lumavel/protocol/lens.hpp"
 #include "lumavel/protocol/reports.hpp"
 
@@ -128,13 +128,6 @@ DecodeResult decode_config(const uint8_t* buf, size_t len, DeviceConfig& out);
 // The same checks, the outcome as a ConfigField: kMalformed for length, ID,
 // version or CRC, else the first field out of range (kOk: out is set).
 ConfigField parse_config(const uint8_t* buf, size_t len, DeviceConfig& out);
-
-// Builds the estimator's configuration. False (out untouched) if validate()
-// refuses c, or c.lens names a camera whose entry in `lens` is null. The
-// estimator's edge_offsets point into `lens` (read by configure() only).
-// The estimator still runs its own validate() in configure().
-bool to_estimator_config(const DeviceConfig& c, EstimatorConfig& out,
-                         const EdgeOffsetQ15* const lens[2] = nullptr);
 
 // The blob kept in the ConfigStore: the configuration report (kConfigSize
 // bytes) followed by the lens tables it names (camera 0 first, width + 1

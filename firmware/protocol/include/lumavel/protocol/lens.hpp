@@ -9,8 +9,8 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "lumavel/core/fixed.hpp"
-#include "lumavel/core/limits.hpp"
+#include "lumavel/units/fixed.hpp"
+#include "lumavel/units/limits.hpp"
 #include "lumavel/protocol/reports.hpp"
 
 namespace lumavel::protocol {

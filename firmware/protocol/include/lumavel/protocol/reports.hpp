@@ -6,8 +6,8 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "lumavel/core/fixed.hpp"
-#include "lumavel/core/status.hpp"
+#include "lumavel/units/fixed.hpp"
+#include "lumavel/units/status.hpp"
 #include "lumavel/protocol/descriptor.hpp"
 
 namespace lumavel::protocol {

@@ -10,9 +10,9 @@
 #include <memory>
 #include <string>
 
+#include "lumavel/app/feature_server.hpp"
 #include "lumavel/hal/config_store.hpp"
 #include "lumavel/hal/report_link.hpp"
-#include "lumavel/protocol/feature_server.hpp"
 #include "lumavel/protocol/reports.hpp"
 
 namespace lumavel::host {
@@ -50,7 +50,7 @@ class HidSender {
   HidSenderOptions opt_;
   std::unique_ptr<hal::ConfigStore> store_;
   bool accept_ = false;  // read by the FeatureServer apply hook: host sets allowed
-  protocol::FeatureServer features_;
+  app::FeatureServer features_;
   uint32_t frame_ = 0;
   uint32_t sent_ = 0;
   uint16_t overruns_ = 0;

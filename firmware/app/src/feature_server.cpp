@@ -1,6 +1,8 @@
-#include "lumavel/protocol/feature_server.hpp"
+#include "lumavel/app/feature_server.hpp"
 
-namespace lumavel::protocol {
+namespace lumavel::app {
+
+using namespace protocol;
 
 FeatureServer::FeatureServer(const DeviceInfo& identity, hal::ConfigStore* store, ApplyFn apply,
                              void* ctx)
@@ -129,4 +131,4 @@ size_t FeatureServer::handle(void* ctx, uint8_t id, bool is_set, uint8_t* buf, s
   return 0;  // stall
 }
 
-}  // namespace lumavel::protocol
+}  // namespace lumavel::app

@@ -2,9 +2,10 @@
 
 #include <cstring>
 
-#include "lumavel/protocol/feature_server.hpp"
+#include "lumavel/app/feature_server.hpp"
 
 using namespace lumavel::protocol;
+using lumavel::app::FeatureServer;
 
 namespace {
 
