@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "lumavel/app/estimator_config.hpp"
 #include "lumavel/protocol/descriptor.hpp"
 #include "lumavel/protocol/device_config.hpp"
 #include "lumavel/protocol/reports.hpp"
