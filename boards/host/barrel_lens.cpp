@@ -1,6 +1,5 @@
 #include "barrel_lens.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -43,14 +42,11 @@ std::vector<std::vector<uint8_t>> lens_upload_reports(protocol::DeviceConfig c,
   std::vector<std::vector<uint8_t>> out;
   for (uint8_t cam = 0; cam < 2; ++cam) {
     const std::vector<EdgeOffsetQ15>& t = tables[cam];
-    for (size_t first = 0; first < t.size(); first += protocol::kLensChunkEdges) {
-      protocol::LensChunk piece{};
-      piece.camera = cam;
-      piece.first = static_cast<uint8_t>(first);
-      piece.count = static_cast<uint8_t>(std::min(protocol::kLensChunkEdges, t.size() - first));
-      for (size_t i = 0; i < piece.count; ++i) piece.offsets[i] = t[first + i];
+    for (size_t i = 0; i < protocol::lens_piece_count(t.size()); ++i) {
       std::vector<uint8_t> r(protocol::kLensChunkSize);
-      if (protocol::encode_lens_chunk(piece, r.data(), r.size()) != r.size()) std::abort();
+      if (protocol::encode_lens_chunk(protocol::lens_piece(cam, t.data(), t.size(), i), r.data(), r.size()) !=
+          r.size())
+        std::abort();
       out.push_back(r);
     }
   }

@@ -156,3 +156,29 @@ TEST(LensChunk, StoredBlobRoundTripsAndRefusesMismatch) {
   t.filled[1] = 40;  // incomplete: nothing to store
   CHECK_EQUAL(0u, encode_stored_config(c, t, blob, sizeof blob));
 }
+
+// The one cutting rule (lens_piece): 24 values a piece, the last one shorter;
+// sent in order, the pieces fill the device's table exactly.
+TEST(LensChunk, PiecesCutATableThatTheyRefillInOrder) {
+  LONGS_EQUAL(0, lens_piece_count(0));
+  LONGS_EQUAL(1, lens_piece_count(24));
+  LONGS_EQUAL(2, lens_piece_count(25));
+  LONGS_EQUAL(6, lens_piece_count(129));  // a 128-column camera
+  EdgeOffsetQ15 t[41];
+  for (int u = 0; u < 41; ++u) t[u] = static_cast<EdgeOffsetQ15>(u * 700 - 14000);
+  static LensTables got{};
+  for (size_t i = 0; i < lens_piece_count(41); ++i) {
+    const LensChunk c = lens_piece(1, t, 41, i);
+    CHECK_EQUAL(1, c.camera);
+    CHECK_EQUAL(i * kLensChunkEdges, c.first);
+    CHECK_EQUAL(i == 0 ? 24u : 17u, c.count);
+    uint8_t b[kLensChunkSize];
+    CHECK_EQUAL(kLensChunkSize, encode_lens_chunk(c, b, sizeof b));
+    LensChunk back{};
+    CHECK_TRUE(decode_lens_chunk(b, sizeof b, back).ok());
+    CHECK_TRUE(store_lens_chunk(got, back));
+  }
+  CHECK_EQUAL(41, got.filled[1]);
+  CHECK_EQUAL(0, got.filled[0]);
+  MEMCMP_EQUAL(t, got.offsets[1], sizeof t);
+}

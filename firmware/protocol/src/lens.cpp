@@ -49,6 +49,19 @@ DecodeResult decode_lens_chunk(const uint8_t* buf, size_t len, LensChunk& out) {
   return fail(ReportError::kOk);
 }
 
+size_t lens_piece_count(size_t edges) { return (edges + kLensChunkEdges - 1) / kLensChunkEdges; }
+
+LensChunk lens_piece(uint8_t camera, const EdgeOffsetQ15* table, size_t edges, size_t index) {
+  LensChunk c{};
+  const size_t first = index * kLensChunkEdges;
+  c.camera = camera;
+  c.first = static_cast<uint8_t>(first);
+  const size_t left = first < edges ? edges - first : 0;
+  c.count = static_cast<uint8_t>(left < kLensChunkEdges ? left : kLensChunkEdges);
+  for (size_t i = 0; i < c.count; ++i) c.offsets[i] = table[first + i];
+  return c;
+}
+
 bool store_lens_chunk(LensTables& t, const LensChunk& c) {
   if (c.camera > 1 || c.count > kLensChunkEdges) return false;
   if (c.count == 0) {

@@ -46,14 +46,9 @@ proto::DeviceInfo read_info(Device& dev) {
 
 // Sends lens pieces of `t` for camera `cam`, 24 values each, in order.
 void upload_lens(Device& dev, uint8_t cam, const std::vector<EdgeOffsetQ15>& t) {
-  for (size_t first = 0; first < t.size(); first += proto::kLensChunkEdges) {
-    proto::LensChunk c{};
-    c.camera = cam;
-    c.first = static_cast<uint8_t>(first);
-    c.count = static_cast<uint8_t>(std::min(proto::kLensChunkEdges, t.size() - first));
-    std::copy(t.begin() + static_cast<long>(first), t.begin() + static_cast<long>(first + c.count), c.offsets);
+  for (size_t i = 0; i < proto::lens_piece_count(t.size()); ++i) {
     uint8_t buf[proto::kLensChunkSize];
-    proto::encode_lens_chunk(c, buf, sizeof buf);
+    proto::encode_lens_chunk(proto::lens_piece(cam, t.data(), t.size(), i), buf, sizeof buf);
     dev.set_feature(buf, sizeof buf);
     pause_after_set();
   }

@@ -43,6 +43,13 @@ size_t encode_lens_chunk(const LensChunk& c, uint8_t* buf, size_t cap);
 // and zero unused slots ("camera", "count", "first", "padding").
 DecodeResult decode_lens_chunk(const uint8_t* buf, size_t len, LensChunk& out);
 
+// A table of `edges` values (width + 1) for camera `camera`, cut into
+// lens_piece_count(edges) upload pieces; piece `index` holds the values from
+// index * 24 on (24, fewer in the last). Sent in order, they fill the table.
+// The one cutting rule for every sender (host tools, test streams).
+size_t lens_piece_count(size_t edges);
+LensChunk lens_piece(uint8_t camera, const EdgeOffsetQ15* table, size_t edges, size_t index);
+
 // Lens tables of both cameras, `filled[cam]` edges from 0 on: on a device,
 // the tables in force and, apart, the staging that uploads go to
 // (FeatureServer). Uploads run in order: a piece must start at 0 (starting
