@@ -18,14 +18,14 @@ endif()
 
 set(_rec ${PROJECT_SOURCE_DIR}/host_sim/recording)
 set(_srcs ${_rec}/src/csv_table.cpp ${_rec}/src/sensor_yaml.cpp ${_rec}/src/image_io.cpp
-          ${_rec}/src/recording_error.cpp ${PROJECT_SOURCE_DIR}/host_sim/cli/src/path_check.cpp
+          ${_rec}/src/recording_error.cpp ${PROJECT_SOURCE_DIR}/tools/common/cli/src/path_check.cpp
           ${CMAKE_CURRENT_SOURCE_DIR}/fuzz_recording_reader.cpp)
 file(GLOB _hdrs ${_rec}/include/lumavel/host/*.hpp)
 set(_bin ${CMAKE_CURRENT_BINARY_DIR}/fuzz_recording_reader)
 add_custom_command(OUTPUT ${_bin}
   COMMAND ${LUMAVEL_CLANGXX} -std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all
           -I${_rec}/include -I${PROJECT_SOURCE_DIR}/host_sim/reference/include
-          -I${PROJECT_SOURCE_DIR}/host_sim/cli/include -I${PROJECT_SOURCE_DIR}/firmware/core/include -I${PROJECT_SOURCE_DIR}/firmware/units/include -I${PROJECT_SOURCE_DIR}/hal/include
+          -I${PROJECT_SOURCE_DIR}/tools/common/cli/include -I${PROJECT_SOURCE_DIR}/firmware/core/include -I${PROJECT_SOURCE_DIR}/firmware/units/include -I${PROJECT_SOURCE_DIR}/hal/include
           ${_srcs} ${LUMAVEL_YAML_CPP_LIB} ${LUMAVEL_PNG_LIB} -o ${_bin}
   DEPENDS ${_srcs} ${_hdrs}
   COMMENT "Building libFuzzer target fuzz_recording_reader with ${LUMAVEL_CLANGXX}")

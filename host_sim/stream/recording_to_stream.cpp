@@ -14,7 +14,7 @@
 #include "lumavel/host/recording.hpp"
 #include "lumavel/host/recording_error.hpp"
 #include "lumavel/stream/format.hpp"
-#include "stream_writer.hpp"
+#include "lumavel/stream/stream_writer.hpp"
 
 int main(int argc, char** argv) {
   if (argc != 5) {

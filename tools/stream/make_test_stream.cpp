@@ -23,9 +23,9 @@
 #include "lumavel/protocol/device_config.hpp"
 #include "lumavel/protocol/reports.hpp"
 #include "lumavel/stream/format.hpp"
-#include "barrel_lens.hpp"
-#include "stream_writer.hpp"
 #include "lumavel/stream/run_stream.hpp"
+#include "lumavel/stream/stream_writer.hpp"
+#include "barrel_lens.hpp"
 
 namespace {
 
