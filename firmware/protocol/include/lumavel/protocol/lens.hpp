@@ -3,7 +3,7 @@
 // edge_offsets), small enough for one 64-byte-class transfer and one mailbox
 // chunk. The configuration (0x03) says which cameras have a table and binds
 // them with lens_crc; the device stages uploaded pieces apart from the
-// tables in force (LensTables, FeatureServer).
+// tables in force (LensTables; app::FeatureServer on a device).
 // Integer only, no heap.
 #pragma once
 #include <cstddef>
@@ -52,7 +52,7 @@ LensChunk lens_piece(uint8_t camera, const EdgeOffsetQ15* table, size_t edges, s
 
 // Lens tables of both cameras, `filled[cam]` edges from 0 on: on a device,
 // the tables in force and, apart, the staging that uploads go to
-// (FeatureServer). Uploads run in order: a piece must start at 0 (starting
+// (app::FeatureServer). Uploads run in order: a piece must start at 0 (starting
 // the table again) or where the previous one ended.
 struct LensTables {
   EdgeOffsetQ15 offsets[2][kMaxLensEdges];
