@@ -119,6 +119,7 @@ while IFS= read -r f; do
       if [[ -n $to ]] && ! allowed "$from" "$to"; then fail "$f:$n" "names target $tok ($to)" "$from"; fi
     done
     for p in $(grep -oE '\$\{(PROJECT_SOURCE_DIR|CMAKE_SOURCE_DIR|CMAKE_CURRENT_SOURCE_DIR|CMAKE_CURRENT_LIST_DIR)\}[^[:space:])"]*' <<<"$code" || true); do
+      # shellcheck disable=SC2016  # the CMake variable's name, literally
       case $p in
         '${CMAKE_CURRENT_SOURCE_DIR}'* | '${CMAKE_CURRENT_LIST_DIR}'*) rel=$dir/${p#*\}} ;;
         *) rel=.${p#*\}} ;;
