@@ -7,6 +7,7 @@
 #include <string>
 
 #include "lumavel/core/kernel_bank.hpp"
+#include "lumavel/units/si.hpp"
 
 namespace lumavel::host {
 namespace {
@@ -153,10 +154,7 @@ EstimatorConfig to_fixed_config(const EstimatorSettings& s) {
 
 RateQ24 to_fixed_rate(double rad_s) {
   if (!std::isfinite(rad_s)) throw std::invalid_argument("gyro rate is not a finite number");
-  const double q = std::round(std::ldexp(rad_s, fx::kRateFrac));
-  if (q >= static_cast<double>(fx::kInt32Max)) return fx::kInt32Max;
-  if (q <= static_cast<double>(fx::kInt32Min)) return fx::kInt32Min;
-  return static_cast<RateQ24>(q);
+  return si::Rate::from_si(rad_s);
 }
 
 std::vector<AngleQ28> to_fixed_edges(const CameraModel& c, int width) {
