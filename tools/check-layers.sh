@@ -2,13 +2,15 @@
 # The layering check (CTest `layers`): who may include and link whom.
 #   tools/check-layers.sh [SOURCE_DIR]
 # Dependencies point down, never back up:
-#   units -> core -> protocol (the codec) / hal -> app -> boards, tools, host_sim
+#   units -> core -> protocol (the codec) / hal -> app -> host -> boards, tools, host_sim
 # Rules, by the folder of the including file:
 #   firmware/units     only units
 #   firmware/core      only units, core
 #   hal                only units, hal
 #   firmware/protocol  only units, protocol, core (the codec reads the core's option bits)
 #   firmware/app       only units, core, hal, protocol, app
+#   host               only the firmware libraries and host (host-only helpers
+#                      that boards, tools and host_sim share)
 #   boards, tools      anything but host_sim
 # Checked: every #include (quoted or angled) that names a file of the tree,
 # resolved like the compiler does (the includer's folder first, then every
@@ -26,6 +28,7 @@ area_of() {
     firmware/protocol/*) area=protocol ;;
     firmware/app/*) area=app ;;
     hal/*) area=hal ;;
+    host/*) area=host ;;
     boards/*) area=boards ;;
     tools/*) area=tools ;;
     host_sim/*) area=host_sim ;;
@@ -40,6 +43,7 @@ declare -A rule=(
   [hal]="only units hal"
   [protocol]="only units protocol core"
   [app]="only units core hal protocol app"
+  [host]="only units core hal protocol app host"
   [boards]="not host_sim"
   [tools]="not host_sim"
 )
@@ -57,7 +61,7 @@ rule_text() {
   if [[ ${r%% *} == only ]]; then echo "$1 may use only ${list// /, }"; else echo "$1 may not use ${list// /, }"; fi
 }
 
-areas=(firmware hal boards tools host_sim)
+areas=(firmware hal host boards tools host_sim)
 failures=0
 fail() {  # where what from-area
   echo "$1: $2 ($(rule_text "$3"))"

@@ -12,15 +12,16 @@ endif()
 set(LUMAVEL_FUZZ_SCENARIO_SECONDS 5 CACHE STRING "libFuzzer run time of the scenario loader, seconds")
 
 set(_render ${PROJECT_SOURCE_DIR}/host_sim/render)
-set(_srcs ${_render}/src/scenario_loader.cpp ${_render}/src/lens_distortion.cpp ${_render}/src/photometric_presets.cpp
+set(_lens ${PROJECT_SOURCE_DIR}/host/lens)
+set(_srcs ${_render}/src/scenario_loader.cpp ${_lens}/src/lens_distortion.cpp ${_render}/src/photometric_presets.cpp
           ${CMAKE_CURRENT_SOURCE_DIR}/fuzz_scenario_loader.cpp ${PROJECT_SOURCE_DIR}/tools/common/cli/src/path_check.cpp)
-file(GLOB _hdrs ${_render}/include/lumavel/host/render/*.hpp)
+file(GLOB _hdrs ${_render}/include/lumavel/host/render/*.hpp ${_lens}/include/lumavel/host/*.hpp)
 find_package(Eigen3 3.3 REQUIRED NO_MODULE)
 get_target_property(_eigen_inc Eigen3::Eigen INTERFACE_INCLUDE_DIRECTORIES)
 set(_bin ${CMAKE_CURRENT_BINARY_DIR}/fuzz_scenario_loader)
 add_custom_command(OUTPUT ${_bin}
   COMMAND ${LUMAVEL_CLANGXX} -std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all
-          -I${_render}/include -I${PROJECT_SOURCE_DIR}/host_sim/recording/include
+          -I${_render}/include -I${_lens}/include -I${PROJECT_SOURCE_DIR}/host_sim/recording/include
           -I${PROJECT_SOURCE_DIR}/host_sim/reference/include -I${PROJECT_SOURCE_DIR}/tools/common/cli/include -I${PROJECT_SOURCE_DIR}/firmware/core/include -I${PROJECT_SOURCE_DIR}/firmware/units/include
           -I${PROJECT_SOURCE_DIR}/hal/include -I${_eigen_inc}
           ${_srcs} ${LUMAVEL_YAML_CPP_LIB} -o ${_bin}

@@ -3,6 +3,8 @@
 #include <array>
 #include <cmath>
 
+#include "left_rig.hpp"
+
 namespace lumavel::soak {
 
 namespace {
@@ -38,22 +40,11 @@ const std::array<double, 4096>& normal_table() {
 
 }  // namespace
 
-double PillarScene::fu() const { return width / 2.0 / std::tan(hfov / 2); }
-double PillarScene::axis(int cam) const { return kPi / 2 + (cam == 1 ? misalignment / 2 : -misalignment / 2); }
+double PillarScene::fu() const { return test::left_rig_fu(width, hfov); }
+double PillarScene::axis(int cam) const { return test::left_rig_axis(cam, misalignment); }
 
 host::EstimatorSettings PillarScene::settings() const {
-  host::EstimatorSettings s;
-  s.width = width;
-  s.height = height;
-  for (int i = 0; i < 2; ++i) {
-    s.cam[i].fu = fu();
-    s.cam[i].cu = (width - 1) / 2.0;
-    s.cam[i].axis_yaw = axis(i);
-    s.cam[i].u_sign = -1;
-  }
-  s.baseline = baseline;
-  s.kernels = host::default_kernels(hfov);
-  s.normaliser = {0, hfov / 2 / 3};
+  host::EstimatorSettings s = test::left_rig_settings(width, height, hfov, baseline, misalignment);
   s.frame_period = 1.0 / 60;
   return s;
 }

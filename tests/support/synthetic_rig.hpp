@@ -7,6 +7,7 @@
 #include <functional>
 #include <vector>
 
+#include "left_rig.hpp"
 #include "lumavel/host/settings.hpp"
 
 namespace lumavel::test {
@@ -36,25 +37,11 @@ struct SyntheticRig {
   double column_offset = 0;
   uint64_t seed = 1;
 
-  double fu() const { return width / 2.0 / std::tan(hfov / 2); }
+  double fu() const { return left_rig_fu(width, hfov); }
   double fv() const { return height / 2.0 / std::tan(vfov / 2); }
-  double axis(int cam) const { return M_PI / 2 + (cam == 1 ? misalignment / 2 : -misalignment / 2); }
+  double axis(int cam) const { return left_rig_axis(cam, misalignment); }
 
-  host::EstimatorSettings settings() const {
-    host::EstimatorSettings s;
-    s.width = width;
-    s.height = height;
-    for (int i = 0; i < 2; ++i) {
-      s.cam[i].fu = fu();
-      s.cam[i].cu = (width - 1) / 2.0;
-      s.cam[i].axis_yaw = axis(i);
-      s.cam[i].u_sign = -1;
-    }
-    s.baseline = baseline;
-    s.kernels = host::default_kernels(hfov);
-    s.normaliser = {0, hfov / 2 / 3};
-    return s;
-  }
+  host::EstimatorSettings settings() const { return left_rig_settings(width, height, hfov, baseline, misalignment); }
 
   // Renders camera `cam` of a body at `pose`.
   std::vector<uint8_t> render(int cam, const Pose2& pose) {

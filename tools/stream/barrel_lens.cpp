@@ -5,36 +5,39 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "lumavel/core/kernel_bank.hpp"
+#include "lumavel/host/lens_distortion.hpp"
+#include "lumavel/host/lens_table.hpp"
 #include "lumavel/protocol/descriptor.hpp"
 #include "lumavel/protocol/lens.hpp"
+#include "lumavel/units/si.hpp"
 
 namespace lumavel::stream {
 
 double undistort(double xd, double k1) {
-  double x = xd;
-  for (int it = 0; it < 40; ++it) x = xd / (1 + k1 * x * x);
+  host::LensDistortion lens;
+  lens.k = {k1, 0, 0, 0};  // radial-tangential with k1 only, on the principal row (y = 0)
+  double x = xd, y = 0;
+  if (!lens.undistort(xd, 0, x, y)) {  // cannot happen for the k1 above; say so if it does
+    std::fprintf(stderr, "barrel lens: k1 = %g cannot be inverted at x_d = %g\n", k1, xd);
+    std::exit(1);
+  }
   return x;
 }
 
 std::vector<EdgeOffsetQ15> barrel_edge_offsets(const CameraGeometry& g, uint16_t width, double k1) {
-  std::vector<AngleQ28> pin(size_t{width} + 1);
-  pinhole_column_edges(g, width, pin.data());
-  const double fu = std::ldexp(g.fu, -fx::kPixelFrac);
-  const double cu = std::ldexp(g.cu, -fx::kPixelFrac);
-  const double axis = std::ldexp(g.axis_yaw, -fx::kAngleFrac);
-  std::vector<EdgeOffsetQ15> out;
+  const double fu = si::Pixel::to_si(g.fu), cu = si::Pixel::to_si(g.cu), axis = si::Angle::to_si(g.axis_yaw);
+  std::vector<AngleQ28> edges;
   for (int u = 0; u <= width; ++u) {
     const double edge = axis + g.u_sign * std::atan(undistort((u - 0.5 - cu) / fu, k1));
-    const double d = edge - std::ldexp(pin[static_cast<size_t>(u)], -fx::kAngleFrac);
-    const long q = std::lround(std::ldexp(d, fx::kEdgeOffsetFrac));
-    if (q < INT16_MIN || q > INT16_MAX) {  // cannot happen for the k1 above; say so if it does
-      std::fprintf(stderr, "barrel lens: correction of edge %d (%g rad) does not fit Q15\n", u, d);
-      std::exit(1);
-    }
-    out.push_back(static_cast<EdgeOffsetQ15>(q));
+    edges.push_back(si::Angle::from_si(edge));
   }
-  return out;
+  const host::LensTable t = host::lens_table(g, width, edges);
+  if (t.bad_edge >= 0) {  // cannot happen for the k1 above; say so if it does
+    std::fprintf(stderr, "barrel lens: correction of edge %d (%g rad) does not fit Q15\n", t.bad_edge,
+                 t.bad_offset_rad);
+    std::exit(1);
+  }
+  return t.offsets;
 }
 
 std::vector<std::vector<uint8_t>> lens_upload_reports(protocol::DeviceConfig c,

@@ -16,13 +16,13 @@ namespace lumavel::stream {
 // so that the two tables differ.
 constexpr double kBarrelK1[2] = {-0.14, -0.10};
 
-// The undistorted x whose distorted image is xd (fixed-point iteration; it
-// converges for |k1| xd^2 well below 1, as in a 60 degree view).
+// The undistorted x whose distorted image is xd (host::LensDistortion with
+// k1 only; it settles for |k1| xd^2 well below 1, as in a 60 degree view).
 double undistort(double xd, double k1);
 
 // Per-edge corrections to the device's pinhole edges of camera g (its
 // quantised geometry), u = 0..width: the edge through the lens minus the
-// pinhole edge the firmware computes (pinhole_column_edges), rounded to Q15.
+// pinhole edge the firmware computes (host::lens_table), rounded to Q15.
 std::vector<EdgeOffsetQ15> barrel_edge_offsets(const CameraGeometry& g, uint16_t width, double k1);
 
 // The set-feature reports that upload both tables (0x05 pieces, camera 0

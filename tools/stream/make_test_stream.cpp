@@ -23,6 +23,7 @@
 #include "lumavel/protocol/device_config.hpp"
 #include "lumavel/protocol/reports.hpp"
 #include "lumavel/stream/format.hpp"
+#include "lumavel/units/si.hpp"
 #include "lumavel/stream/run_stream.hpp"
 #include "lumavel/stream/stream_writer.hpp"
 #include "barrel_lens.hpp"
@@ -141,7 +142,7 @@ int main(int argc, char** argv) {
     const double t = 0.1 + k * kFramePeriod;
     for (; gyro_k * kGyroPeriod <= t; ++gyro_k) {
       const double tg = gyro_k * kGyroPeriod;
-      o.gyro(static_cast<uint64_t>(std::llround(tg * 1e9)), static_cast<int32_t>(std::lround(yaw_rate(tg) * (1 << 24))));
+      o.gyro(static_cast<uint64_t>(std::llround(tg * 1e9)), lumavel::si::Rate::from_si(yaw_rate(tg)));
     }
     if (k == frames * 3 / 10) {
       get_feature(o, lumavel::protocol::kReportDeviceInfo);

@@ -31,7 +31,7 @@ ConfigError validate(const EstimatorConfig& c) {
   if (c.width < kMinColumns || c.width > kMaxColumns) return ConfigError::kWidth;
   if (c.height < 1 || c.height > kMaxRows) return ConfigError::kHeight;
   for (const CameraGeometry& g : c.cam) {
-    // 1 px .. 100000 px focal length (working resolution).
+    // 1 px .. 30000 px focal length (working resolution).
     if (g.fu < (int32_t{1} << 16) || int64_t{g.fu} > int64_t{30000} << 16) return ConfigError::kFocalLength;
     const int64_t w = int64_t{c.width} << 16;
     if (g.cu < -w || g.cu > 2 * w) return ConfigError::kPrincipalPoint;

@@ -5,6 +5,7 @@
 #include <thread>
 
 #include "lumavel/core/limits.hpp"
+#include "lumavel/units/si.hpp"
 
 namespace lumavel::host {
 
@@ -44,17 +45,14 @@ proto::Measurement quantise_measurement(uint64_t t_ns, uint32_t frame_index, dou
   m.t_ns = t_ns;
   m.frame_index = frame_index;
   m.seq = static_cast<uint16_t>(frame_index);
-  auto q32 = [](double x, int frac) {
-    const double q = std::round(std::ldexp(x, frac));
-    return static_cast<int32_t>(q > 2147483647.0 ? 2147483647.0 : q < -2147483648.0 ? -2147483648.0 : q);
-  };
-  m.v = q32(v_mps, 16);
-  m.gyro_offset = q32(gyro_offset_radps, fx::kRateFrac);
-  m.distance = static_cast<int64_t>(std::llround(std::ldexp(distance_m, 32)));
-  int64_t h = std::llround(std::ldexp(heading_rad, 28));
+  m.v = si::Speed::from_si(v_mps);
+  m.gyro_offset = si::Rate::from_si(gyro_offset_radps);
+  m.distance = si::Distance::from_si(distance_m);
+  // The report's heading is wrapped into [-pi, pi) (AngleQ28).
+  int64_t h = si::Angle::from_si(heading_rad);
   const int64_t pi_q = fx::kPiQ28;
   if (h >= pi_q || h < -pi_q) {
-    h = std::llround(std::ldexp(std::remainder(heading_rad, 2 * kPi), 28));
+    h = si::to_q64(std::remainder(heading_rad, 2 * kPi), fx::kAngleFrac);
     if (h >= pi_q) h -= 2 * pi_q;
   }
   m.heading = static_cast<int32_t>(h);

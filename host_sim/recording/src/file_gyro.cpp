@@ -1,15 +1,10 @@
 #include "lumavel/host/file_gyro.hpp"
 
-#include <cmath>
+#include "lumavel/units/si.hpp"
 
 namespace lumavel::host {
 
-RateQ24 rate_to_q24(double rad_s) {
-  const double scaled = std::round(rad_s * static_cast<double>(1 << fx::kRateFrac));  // half away from zero
-  if (!(scaled < 2147483647.0)) return fx::kInt32Max;  // also catches NaN (never in a loaded recording)
-  if (scaled < -2147483648.0) return fx::kInt32Min;
-  return static_cast<RateQ24>(scaled);
-}
+RateQ24 rate_to_q24(double rad_s) { return si::Rate::from_si(rad_s); }  // NaN: never in a loaded recording
 
 bool FileGyro::read(hal::GyroSample& out) {
   if (next_ >= rec_.imu_samples.size()) return false;

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <string>
 
+#include "lumavel/host/lens_distortion.hpp"
 #include "lumavel/host/recording_layout.hpp"
 
 namespace lumavel::host {
@@ -54,35 +55,18 @@ CameraModel derive_camera(const CameraSensor& c, int work_width, const std::stri
 
 namespace {
 
-struct RadTan {
-  double k1 = 0, k2 = 0, p1 = 0, p2 = 0;
-  // The model applies: radial-tangential with a coefficient that is not 0.
-  static bool applies(const CameraSensor& c) {
-    const std::vector<double>& d = c.distortion;
-    return c.distortion_model == "radial-tangential" && std::any_of(d.begin(), d.end(), [](double k) { return k != 0; });
-  }
-  explicit RadTan(const std::vector<double>& d)
-      : k1(d.size() > 0 ? d[0] : 0), k2(d.size() > 1 ? d[1] : 0), p1(d.size() > 2 ? d[2] : 0),
-        p2(d.size() > 3 ? d[3] : 0) {}
-  void distort(double x, double y, double& xd, double& yd) const {
-    const double r2 = x * x + y * y;
-    const double radial = 1 + k1 * r2 + k2 * r2 * r2;
-    xd = x * radial + 2 * p1 * x * y + p2 * (r2 + 2 * x * x);
-    yd = y * radial + p1 * (r2 + 2 * y * y) + 2 * p2 * x * y;
-  }
-  // Fixed-point inverse (normalised image coordinates).
-  void undistort(double xd, double yd, double& x, double& y) const {
-    x = xd, y = yd;
-    for (int it = 0; it < 20; ++it) {
-      const double r2 = x * x + y * y;
-      const double radial = 1 + k1 * r2 + k2 * r2 * r2;
-      const double dx = 2 * p1 * x * y + p2 * (r2 + 2 * x * x);
-      const double dy = p1 * (r2 + 2 * y * y) + 2 * p2 * x * y;
-      x = (xd - dx) / radial;
-      y = (yd - dy) / radial;
-    }
-  }
-};
+// The sensor's radial-tangential distortion applies: a coefficient is not 0.
+bool lens_applies(const CameraSensor& c) {
+  const std::vector<double>& d = c.distortion;
+  return c.distortion_model == "radial-tangential" && std::any_of(d.begin(), d.end(), [](double k) { return k != 0; });
+}
+
+// k1, k2, p1, p2 of the sensor (missing ones 0).
+LensDistortion lens_of(const CameraSensor& c) {
+  LensDistortion lens;
+  for (size_t i = 0; i < lens.k.size() && i < c.distortion.size(); ++i) lens.k[i] = c.distortion[i];
+  return lens;
+}
 
 // How far (px) an undistorted point may miss its pixel when distorted again.
 constexpr double kLensInverseTolerancePx = 0.01;
@@ -96,10 +80,10 @@ std::string g(double v) {
 }  // namespace
 
 void check_lens_invertible(const CameraSensor& c, const std::string& yaml_path) {
-  if (!RadTan::applies(c)) return;
-  const RadTan lens(c.distortion);
-  const std::string coeffs = "distortion_coefficients [" + g(lens.k1) + ", " + g(lens.k2) + ", " + g(lens.p1) +
-                             ", " + g(lens.p2) + "]: ";
+  if (!lens_applies(c)) return;
+  const LensDistortion lens = lens_of(c);
+  const std::string coeffs = "distortion_coefficients [" + g(lens.k[0]) + ", " + g(lens.k[1]) + ", " +
+                             g(lens.k[2]) + ", " + g(lens.k[3]) + "]: ";
   // Every pixel edge of the principal row (the columns' angles come from
   // there), then the top and bottom rows' edges (the whole image).
   double prev_x = -HUGE_VAL;
@@ -108,7 +92,7 @@ void check_lens_invertible(const CameraSensor& c, const std::string& yaml_path) 
       const double u = i - 0.5;
       const double xd = (u - c.cu) / c.fu, yd = (v - c.cv) / c.fv;
       double x = 0, y = 0, ru = 0, rv = 0;
-      lens.undistort(xd, yd, x, y);
+      lens.undistort(xd, yd, x, y);  // whether it settled: judged below, in pixels
       lens.distort(x, y, ru, rv);
       const double miss = std::hypot((ru - xd) * c.fu, (rv - yd) * c.fv);
       // Below 1e-12 in normalised coordinates the inverse is exact to
@@ -132,15 +116,15 @@ void check_lens_invertible(const CameraSensor& c, const std::string& yaml_path) 
 }
 
 std::vector<double> undistorted_column_edges(const CameraSensor& c, int work_width, double axis_yaw, int u_sign) {
-  if (!RadTan::applies(c)) return {};
-  const RadTan lens(c.distortion);
+  if (!lens_applies(c)) return {};
+  const LensDistortion lens = lens_of(c);
   std::vector<double> edges(static_cast<size_t>(work_width) + 1);
   const double scale = static_cast<double>(c.width) / static_cast<double>(work_width);
   for (int u = 0; u <= work_width; ++u) {
     // Working edge u on the sensor: native pixel i spans [i - 0.5, i + 0.5].
     const double xd = (u * scale - 0.5 - c.cu) / c.fu, yd = 0;  // on the principal row
     double x = 0, y = 0;
-    lens.undistort(xd, yd, x, y);
+    lens.undistort(xd, yd, x, y);  // load_recording judged the inverse (check_lens_invertible)
     edges[static_cast<size_t>(u)] = axis_yaw + u_sign * std::atan(x);
   }
   return edges;

@@ -5,6 +5,7 @@
 
 #include "lumavel/core/estimator.hpp"
 #include "lumavel/host/float_estimator.hpp"
+#include "lumavel/units/si.hpp"
 
 namespace lumavel::host {
 namespace {
@@ -28,16 +29,16 @@ class FixedEngine final : public Engine {
     const Estimate e = est_->step(f);
     EngineEstimate o;
     o.t_ns = e.t_ns;
-    o.v = std::ldexp(e.v, -fx::kSpeedFrac);
-    o.distance = std::ldexp(static_cast<double>(e.distance), -fx::kDistFrac);
-    o.heading = std::ldexp(e.heading, -fx::kAngleFrac);
+    o.v = si::Speed::to_si(e.v);
+    o.distance = si::Distance::to_si(e.distance);
+    o.heading = si::Angle::to_si(e.heading);
     o.status = e.status;
-    o.v_direct = std::ldexp(e.v_direct, -fx::kSpeedFrac);
-    o.texture = std::ldexp(e.texture, -fx::kValueFrac);
-    o.gyro_offset = std::ldexp(e.gyro_offset, -fx::kRateFrac);
-    o.v_differential = std::ldexp(e.v_differential, -fx::kSpeedFrac);
+    o.v_direct = si::Speed::to_si(e.v_direct);
+    o.texture = si::Value::to_si(e.texture);
+    o.gyro_offset = si::Rate::to_si(e.gyro_offset);
+    o.v_differential = si::Speed::to_si(e.v_differential);
     o.tof_s = static_cast<double>(e.tof_ns) * 1e-9;
-    o.scale = std::ldexp(e.scale, -fx::kScaleFrac);
+    o.scale = si::Scale::to_si(e.scale);
     return o;
   }
 

@@ -7,6 +7,8 @@
 #include <string>
 
 #include "lumavel/core/kernel_bank.hpp"
+#include "lumavel/host/lens_table.hpp"
+#include "lumavel/units/si.hpp"
 
 namespace lumavel::host {
 namespace {
@@ -153,10 +155,7 @@ EstimatorConfig to_fixed_config(const EstimatorSettings& s) {
 
 RateQ24 to_fixed_rate(double rad_s) {
   if (!std::isfinite(rad_s)) throw std::invalid_argument("gyro rate is not a finite number");
-  const double q = std::round(std::ldexp(rad_s, fx::kRateFrac));
-  if (q >= static_cast<double>(fx::kInt32Max)) return fx::kInt32Max;
-  if (q <= static_cast<double>(fx::kInt32Min)) return fx::kInt32Min;
-  return static_cast<RateQ24>(q);
+  return si::Rate::from_si(rad_s);
 }
 
 std::vector<AngleQ28> to_fixed_edges(const CameraModel& c, int width) {
@@ -171,18 +170,13 @@ std::vector<AngleQ28> to_fixed_edges(const CameraModel& c, int width) {
 
 std::vector<EdgeOffsetQ15> to_fixed_edge_offsets(const CameraModel& c, const CameraGeometry& fixed, int width) {
   const std::vector<AngleQ28> exact = to_fixed_edges(c, width);
-  std::vector<EdgeOffsetQ15> out;
-  if (exact.empty()) return out;
-  // The firmware's own pinhole edges (bit-identical integer atan), so the
-  // device reconstructs edge = pinhole + offset to within half a Q15 step.
-  std::vector<AngleQ28> pin(static_cast<size_t>(width) + 1);
-  pinhole_column_edges(fixed, static_cast<uint16_t>(width), pin.data());
-  for (size_t u = 0; u < exact.size(); ++u) {
-    const double d = std::ldexp(static_cast<double>(int64_t{exact[u]} - pin[u]), -fx::kAngleFrac);
-    const std::string field = "lens correction of column edge " + std::to_string(u);
-    out.push_back(static_cast<EdgeOffsetQ15>(quantise(d, fx::kEdgeOffsetFrac, {field.c_str(), "cam[].edges", "rad"}, INT16_MIN, INT16_MAX)));
+  if (exact.empty()) return {};
+  LensTable t = lens_table(fixed, static_cast<uint16_t>(width), exact);
+  if (t.bad_edge >= 0) {  // quantise() names the edge and the Q15 range: it throws here
+    const std::string field = "lens correction of column edge " + std::to_string(t.bad_edge);
+    quantise(t.bad_offset_rad, fx::kEdgeOffsetFrac, {field.c_str(), "cam[].edges", "rad"}, INT16_MIN, INT16_MAX);
   }
-  return out;
+  return std::move(t.offsets);
 }
 
 }  // namespace lumavel::host

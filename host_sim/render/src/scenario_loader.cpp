@@ -2,7 +2,7 @@
 // typo is an error naming file and line, never a silently ignored setting.
 #include "lumavel/host/render/scenario_loader.hpp"
 
-#include "lumavel/host/render/lens_distortion.hpp"
+#include "lumavel/host/lens_distortion.hpp"
 #include "lumavel/host/render/photometric_presets.hpp"
 #include "lumavel/host/render/view_renderer.hpp"
 #include "lumavel/host/path_check.hpp"

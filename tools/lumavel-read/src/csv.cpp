@@ -5,17 +5,15 @@
 #include <initializer_list>
 #include <cstdio>
 
-#include "lumavel/core/fixed.hpp"
 #include "lumavel/core/status.hpp"
+#include "lumavel/units/si.hpp"
 
 namespace lumavel::read {
 
-double v_mps(const protocol::Measurement& m) { return m.v / 65536.0; }
-double distance_m(const protocol::Measurement& m) {
-  return static_cast<double>(m.distance) / 4294967296.0;
-}
-double heading_rad(const protocol::Measurement& m) { return m.heading / 268435456.0; }
-double gyro_offset_radps(const protocol::Measurement& m) { return std::ldexp(m.gyro_offset, -fx::kRateFrac); }
+double v_mps(const protocol::Measurement& m) { return si::Speed::to_si(m.v); }
+double distance_m(const protocol::Measurement& m) { return si::Distance::to_si(m.distance); }
+double heading_rad(const protocol::Measurement& m) { return si::Angle::to_si(m.heading); }
+double gyro_offset_radps(const protocol::Measurement& m) { return si::Rate::to_si(m.gyro_offset); }
 
 std::string csv_header() {
   return "timestamp_ns,v_xb_mps,distance_m,heading_rad,status,gyro_offset_radps,frame_index,seq,overruns";

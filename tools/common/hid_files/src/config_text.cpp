@@ -1,6 +1,7 @@
 #include "lumavel/host/config_text.hpp"
 
 #include "lumavel/host/path_check.hpp"
+#include "lumavel/units/si.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -56,17 +57,15 @@ long long parse_int(const std::string& v, long long lo, long long hi) {
 
 // Physical value to a signed 32-bit fixed-point number with `frac` bits.
 int32_t to_q(const std::string& v, int frac) {
-  const double q = std::round(parse_double(v) * std::ldexp(1.0, frac));
+  const double q = std::round(std::ldexp(parse_double(v), frac));
   if (q < -2147483648.0 || q > 2147483647.0) throw BadValue("beyond its fixed-point field", true);
   return static_cast<int32_t>(q);
 }
 
-double from_q(int32_t q, int frac) { return std::ldexp(static_cast<double>(q), -frac); }
-
 // The shortest decimal that reads back to the same fixed-point value, so that
 // `config get` prints 0.07, not 0.0700000003, and get -> set is lossless.
 std::string num_q(int32_t q, int frac) {
-  const double v = from_q(q, frac);
+  const double v = si::from_q(q, frac);
   for (int digits = 1; digits < 17; ++digits) {
     char b[64];
     std::snprintf(b, sizeof b, "%.*g", digits, v);
@@ -78,7 +77,7 @@ std::string num_q(int32_t q, int frac) {
 std::string format_kernels(const proto::DeviceConfig& c) {
   std::string s;
   for (int i = 0; i < c.kernel_count && i < proto::kWireKernels; ++i) {
-    s += (i ? "," : "") + std::to_string(c.kernels[i].order) + ":" + num_q(c.kernels[i].sigma, 28);
+    s += (i ? "," : "") + std::to_string(c.kernels[i].order) + ":" + num_q(c.kernels[i].sigma, fx::kAngleFrac);
   }
   return s;
 }
@@ -98,7 +97,7 @@ void parse_kernels(proto::DeviceConfig& c, const std::string& v) {
     }
     proto::KernelSetting& k = n.kernels[n.kernel_count++];
     k.order = static_cast<uint8_t>(parse_int(item.substr(0, colon), 0, 255));
-    k.sigma = to_q(item.substr(colon + 1), 28);
+    k.sigma = to_q(item.substr(colon + 1), fx::kAngleFrac);
     if (comma == std::string::npos) break;
     start = comma + 1;
   }
@@ -171,22 +170,22 @@ std::string format_setup(const DeviceSetup& d) {
   auto line = [&s](const char* k, const std::string& v) { s += std::string(k) + "=" + v + "\n"; };
   line("width", std::to_string(c.width));
   line("height", std::to_string(c.height));
-  line("baseline_m", num_q(c.baseline, 24));
-  line("misalignment_rad", num_q(c.misalignment, 28));
-  line("fu0_px", num_q(c.fu[0], 16));
-  line("cu0_px", num_q(c.cu[0], 16));
-  line("fu1_px", num_q(c.fu[1], 16));
-  line("cu1_px", num_q(c.cu[1], 16));
+  line("baseline_m", num_q(c.baseline, fx::kLengthFrac));
+  line("misalignment_rad", num_q(c.misalignment, fx::kAngleFrac));
+  line("fu0_px", num_q(c.fu[0], fx::kPixelFrac));
+  line("cu0_px", num_q(c.cu[0], fx::kPixelFrac));
+  line("fu1_px", num_q(c.fu[1], fx::kPixelFrac));
+  line("cu1_px", num_q(c.cu[1], fx::kPixelFrac));
   line("look", (c.orientation & proto::kLooksRight) ? "right" : "left");
   line("cam0_upside_down", (c.orientation & proto::kCam0UpsideDown) ? "1" : "0");
   line("cam1_upside_down", (c.orientation & proto::kCam1UpsideDown) ? "1" : "0");
-  line("normaliser_sigma_rad", num_q(c.normaliser_sigma, 28));
+  line("normaliser_sigma_rad", num_q(c.normaliser_sigma, fx::kAngleFrac));
   line("kernels", format_kernels(c));
   line("tau_us", std::to_string(c.tau_us));
   line("frame_period_us", std::to_string(c.frame_period_us));
   line("max_gap_us", std::to_string(c.max_gap_us));
   line("gyro_gap_us", std::to_string(c.gyro_gap_us));
-  line("low_texture", num_q(c.low_texture, 28));
+  line("low_texture", num_q(c.low_texture, fx::kValueFrac));
   line("saturated_permille", std::to_string(c.saturated_permille));
   line("baseline_correction", (c.options & kOptionBaselineCorrection) ? "1" : "0");
   line("gyro_offset_learning", (c.options & kOptionGyroOffsetLearning) ? "1" : "0");
@@ -254,25 +253,25 @@ void apply_value(DeviceSetup& d, const std::string& k, const std::string& v) {
   };
   if (k == "width") c.width = static_cast<uint16_t>(parse_int(v, 0, 65535));
   else if (k == "height") c.height = static_cast<uint16_t>(parse_int(v, 0, 65535));
-  else if (k == "baseline_m") c.baseline = to_q(v, 24);
-  else if (k == "misalignment_rad") c.misalignment = to_q(v, 28);
-  else if (k == "fu0_px") c.fu[0] = to_q(v, 16);
-  else if (k == "cu0_px") c.cu[0] = to_q(v, 16);
-  else if (k == "fu1_px") c.fu[1] = to_q(v, 16);
-  else if (k == "cu1_px") c.cu[1] = to_q(v, 16);
+  else if (k == "baseline_m") c.baseline = to_q(v, fx::kLengthFrac);
+  else if (k == "misalignment_rad") c.misalignment = to_q(v, fx::kAngleFrac);
+  else if (k == "fu0_px") c.fu[0] = to_q(v, fx::kPixelFrac);
+  else if (k == "cu0_px") c.cu[0] = to_q(v, fx::kPixelFrac);
+  else if (k == "fu1_px") c.fu[1] = to_q(v, fx::kPixelFrac);
+  else if (k == "cu1_px") c.cu[1] = to_q(v, fx::kPixelFrac);
   else if (k == "look") {
     if (v != "left" && v != "right") throw std::runtime_error("look: use left or right, not \"" + v + "\"");
     c.orientation = static_cast<uint8_t>(v == "right" ? (c.orientation | proto::kLooksRight)
                                                       : (c.orientation & ~proto::kLooksRight));
   } else if (k == "cam0_upside_down") bit(proto::kCam0UpsideDown);
   else if (k == "cam1_upside_down") bit(proto::kCam1UpsideDown);
-  else if (k == "normaliser_sigma_rad") c.normaliser_sigma = to_q(v, 28);
+  else if (k == "normaliser_sigma_rad") c.normaliser_sigma = to_q(v, fx::kAngleFrac);
   else if (k == "kernels") parse_kernels(c, v);
   else if (k == "tau_us") c.tau_us = static_cast<uint32_t>(parse_int(v, 0, u32));
   else if (k == "frame_period_us") c.frame_period_us = static_cast<uint32_t>(parse_int(v, 0, u32));
   else if (k == "max_gap_us") c.max_gap_us = static_cast<uint32_t>(parse_int(v, 0, u32));
   else if (k == "gyro_gap_us") c.gyro_gap_us = static_cast<uint32_t>(parse_int(v, 0, u32));
-  else if (k == "low_texture") c.low_texture = to_q(v, 28);
+  else if (k == "low_texture") c.low_texture = to_q(v, fx::kValueFrac);
   else if (k == "saturated_permille") c.saturated_permille = static_cast<uint16_t>(parse_int(v, 0, 65535));
   else if (k == "baseline_correction") option(kOptionBaselineCorrection);
   else if (k == "gyro_offset_learning") option(kOptionGyroOffsetLearning);
@@ -467,7 +466,7 @@ void check_settings_offline(const GivenSettings& given) {
   DeviceSetup base;
   base.config = proto::default_device_config();
   base.config.width = static_cast<uint16_t>(kMaxColumns);
-  base.config.fu[0] = base.config.fu[1] = 1 << 16;
+  base.config.fu[0] = base.config.fu[1] = int32_t{1} << fx::kPixelFrac;  // 1 px
   base.config.cu[0] = base.config.cu[1] = 0;
   base.config.frame_period_us = 1000;
   base.config.max_gap_us = 10000000;

@@ -14,7 +14,9 @@ struct ImageView {
 };
 
 // dst is out_w * out_h bytes. Requires out_w <= in.width, out_h <= in.height,
-// out_w <= 2048. False (dst untouched) if the sizes do not allow binning.
+// out_w <= kMaxColumns (limits.hpp), in.stride >= in.width and
+// in.width * in.height <= 2^24. False (dst untouched) if the sizes do not
+// allow binning.
 bool bin_area(const ImageView& in, uint8_t* dst, uint16_t out_w, uint16_t out_h);
 
 }  // namespace lumavel

@@ -8,7 +8,7 @@
 // body yaw, and its sum over rows moves rigidly with the image when the camera
 // yaws (exactly so for vertically uniform texture). Each table integrates phi
 // over the true yaw interval of each column (pinhole edges, atan), so that
-// wide edge columns weigh more than narrow central ones:
+// edge columns, which span less yaw than central ones (atan), weigh less:
 //     K[u] =  Int_{column u} phi(psi - c) dpsi
 //     D[u] = -Int_{column u} phi'(psi - c) dpsi     = phi(start) - phi(end)
 //     T[u] = -Int_{column u} phi'''(psi - c) dpsi

@@ -1,6 +1,6 @@
 // The USB full-speed HID device of the board, independent of the USB
 // peripheral: descriptors (built around the protocol's report descriptor)
-// and the control-endpoint request logic. The STM32 driver (usb_stm32f1.cpp)
+// and the control-endpoint request logic. The STM32 driver (usb_hid.cpp)
 // moves packets; everything decided here is tested on the host by replaying
 // the setup packets a Linux host sends.
 //

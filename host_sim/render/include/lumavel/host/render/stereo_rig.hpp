@@ -6,7 +6,7 @@
 #include <memory>
 #include <vector>
 
-#include "lumavel/host/render/lens_distortion.hpp"
+#include "lumavel/host/lens_distortion.hpp"
 #include "lumavel/host/render/scenario.hpp"
 #include "lumavel/host/render/trajectory.hpp"
 

@@ -1,8 +1,8 @@
-#include "lumavel/host/render/lens_distortion.hpp"
+#include "lumavel/host/lens_distortion.hpp"
 
 #include <cmath>
 
-namespace lumavel::host::render {
+namespace lumavel::host {
 namespace {
 constexpr int kMaxIterations = 20;      // ~10 suffice for a DAVIS-like barrel lens
 constexpr double kSettled = 1e-14;      // normalised units
@@ -37,4 +37,4 @@ bool LensDistortion::undistort(double xd, double yd, double& x, double& y) const
   return std::fabs(cx - xd) + std::fabs(cy - yd) < 1e-9;
 }
 
-}  // namespace lumavel::host::render
+}  // namespace lumavel::host
