@@ -32,6 +32,8 @@ constexpr int64_t kAccelMaxQ16 = fx::q_of(kFusionAccelMax, fx::kAccelFrac);
 constexpr int64_t kInflationGainQ16 = fx::q_of(kFusionTofInflationGain, 16);
 constexpr int64_t kInflationMaxQ16 = fx::q_of(kFusionTofInflationMax, 16);
 constexpr int64_t kOneQ16 = int64_t{1} << 16;
+constexpr int64_t kScaleTermMaxSpeedQ16 = fx::q_of(kFusionScaleTermMaxSpeed, fx::kSpeedFrac);
+static_assert(kFusionScaleTermMaxSpeed <= 64, "held speed^2 in Q16 below 2^28");
 constexpr int kGainFrac = 24;  // the scale filter's gain, Q24
 constexpr int64_t kSoftCutQ16 = fx::q_of(kFusionScaleSoftCut, 16);
 
@@ -90,7 +92,12 @@ FusionOutput VelocityFusion::update(const FusionInput& in) {
   // Uncertainties (m/s, Q16).
   const int64_t root_res = fx::isqrt32(static_cast<uint32_t>(residual_ < 0 ? 0 : residual_) << 16);  // Q16
   const int64_t speed = abs64(vd) > abs64(v_) ? abs64(vd) : abs64(v_);
+  // The differential's variance (Q32): its own, and that of the scale it is
+  // divided by (var Q40 x speed^2 Q16 >> 24, the speed held to
+  // kFusionScaleTermMaxSpeed: speed^2 < 2^28, var < 2^31).
   const int64_t sd = (((kDiffFloorQ16 + ((kDiffPerResidualQ16 * root_res) >> 16)) * speed) >> 16) + kSpeedFloorQ16;
+  const int64_t held = speed < kScaleTermMaxSpeedQ16 ? speed : kScaleTermMaxSpeedQ16;
+  const int64_t sd2 = sd * sd + fx::shr_round(((held * held) >> 16) * scale_var_, 24);
   int64_t target = vd;
   if (use_tof) {
     // z + A tau / 2: A tau_us < 2^40, times 2^40 / 2e6 (< 2^20) < 2^60
@@ -98,7 +105,7 @@ FusionOutput VelocityFusion::update(const FusionInput& in) {
     const int64_t inflated = (int64_t{tof.sig} * fx::isqrt32(static_cast<uint32_t>(tof_inflation_))) >> 8;  // sig sqrt(n), Q16
     const int64_t rel = inflated > kTofFloorQ16 ? inflated : kTofFloorQ16;
     const int64_t st = ((rel * abs64(tof.v)) >> 16) + kSpeedFloorQ16;
-    const int64_t sd2 = sd * sd, st2 = st * st;  // Q32
+    const int64_t st2 = st * st;  // Q32
     const int64_t w = fx::fraction_q16(sd2, sd2 + st2);
     target = vd + ((w * (zc - vd)) >> 16);
     // How far the time of flight really scatters, seen against a clean differential.

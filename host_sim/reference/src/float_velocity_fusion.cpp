@@ -58,15 +58,18 @@ FloatFusionOutput FloatVelocityFusion::update(const FloatFusionInput& in) {
   const double speed = std::max(std::fabs(vd), std::fabs(v_));
   const double sd = (kFusionDiffFloor + kFusionDiffPerResidual * std::sqrt(std::max(residual_, 0.0))) * speed +
                     kFusionSpeedFloor;
+  // The differential's variance: its own and that of the scale it is divided by.
+  const double held = std::min(speed, kFusionScaleTermMaxSpeed);
+  const double sd2 = sd * sd + scale_var_ * held * held;
   double target = vd;
   if (use_tof) {
     const double zc = tof.v + accel_ * tof.tau_ns * 1e-9 / 2;
     const double rel = std::max(tof.sig * std::sqrt(tof_inflation_), kFusionTofFloor);
     const double st = rel * std::fabs(tof.v) + kFusionSpeedFloor;
-    const double w = sd * sd / (sd * sd + st * st);
+    const double w = sd2 / (sd2 + st * st);
     target = vd + w * (zc - vd);
     if (residual_ < kFusionScaleMaxResidual) {
-      const double g = (tof.v - vd) * (tof.v - vd) / (st * st + sd * sd);
+      const double g = (tof.v - vd) * (tof.v - vd) / (st * st + sd2);
       tof_inflation_ = std::clamp(tof_inflation_ + kFusionTofInflationGain * (g - tof_inflation_), 1.0,
                                   kFusionTofInflationMax);
     }

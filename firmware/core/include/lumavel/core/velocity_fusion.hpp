@@ -7,6 +7,8 @@
 //   residual of its kernels (velocity_observer.hpp). Where near texture makes
 //   the stereo difference alias, the kernels disagree and the residual rises;
 //   on a clean scene it is near zero and the output is the differential's.
+//   The uncertainty of the learned scale it is divided by adds to it (in
+//   quadrature): an unsettled scale leaves more weight to the time of flight.
 // - The time of flight's uncertainty is its match's timing uncertainty over
 //   tau (time_of_flight.hpp), never below kFusionTofFloor. Its window mean
 //   lags a changing V by tau / 2, which is added back from the fused V's own
