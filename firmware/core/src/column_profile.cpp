@@ -2,6 +2,8 @@
 
 #include <cstdint>
 #include <cstring>
+
+#include "lumavel/core/estimator_params.hpp"
 #if defined(__ARM_FEATURE_SIMD32)
 #include <arm_acle.h>
 #endif
@@ -10,7 +12,7 @@ namespace lumavel {
 namespace {
 
 // Rows whose clipped pixels are counted: one in eight (cost 1/8 of a pass).
-constexpr uint16_t kClipRowStep = 8;
+constexpr uint16_t kClipRowStep = params::kClipRowStep;
 
 uint32_t load_word(const uint8_t* p) {
   uint32_t w;

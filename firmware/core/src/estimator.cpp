@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "lumavel/core/column_profile.hpp"
+#include "lumavel/core/estimator_params.hpp"
 #include "lumavel/core/fusion_params.hpp"
 #include "lumavel/core/imath.hpp"
 #include "lumavel/core/status.hpp"
@@ -26,6 +27,12 @@ DistQ32 advance(DistQ32 s, SpeedQ16 v, int64_t dt_ns, int64_t* rem) {
   *rem = r;
   return s + ip * 65536 + q;
 }
+
+// The frame gap's threshold in frame periods, Q4 (exact for 1.5).
+constexpr int kFrameGapFrac = 4;
+constexpr int64_t kFrameGapPeriodsQ4 = fx::q_of(params::kFrameGapPeriods, kFrameGapFrac);
+static_assert(fx::q_of(params::kFrameGapPeriods, 30) == kFrameGapPeriodsQ4 << (30 - kFrameGapFrac),
+              "the gap factor must be exact in Q4");
 
 }  // namespace
 
@@ -119,7 +126,8 @@ Estimate Estimator::step(const FramePair& frames) {
       tof_.reset();
       fusion_.restart();
     } else {
-      if (dt_ns * 2 > int64_t{cfg_.frame_period_us} * 3000) status |= kStatusFrameGap;
+      if (dt_ns * (1 << kFrameGapFrac) > int64_t{cfg_.frame_period_us} * 1000 * kFrameGapPeriodsQ4)
+        status |= kStatusFrameGap;
       ObserverInput in{};
       in.prev = &meas_[cur_];
       in.cur = &m;

@@ -1,10 +1,14 @@
 #include "lumavel/core/gyro_integrator.hpp"
 
+#include "lumavel/core/estimator_params.hpp"
+
 namespace lumavel {
 namespace {
 
-// Longest interval integrated in one piece: keeps |rate sum| * dt inside uint64.
-constexpr uint64_t kMaxStepNs = 4000000000ull;
+// Longest interval integrated in one piece (params::kGyroMaxStep), in ns:
+// also keeps |rate sum| * dt (|sum| <= 2^32) inside uint64.
+constexpr uint64_t kMaxStepNs = static_cast<uint64_t>(fx::q_of(params::kGyroMaxStep * 1e9, 0));
+static_assert(kMaxStepNs <= UINT64_MAX >> 32, "|rate sum| * dt must stay inside uint64");
 
 // A rate sum (two Q7.24 rates, |sum| <= 2^32) times dt nanoseconds, over 2,
 // is an angle in Q32 rad: sum * dt * 2^8 / 2e9 = sum * dt / kDivisor.

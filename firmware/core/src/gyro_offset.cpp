@@ -1,8 +1,11 @@
 #include "lumavel/core/gyro_offset.hpp"
 
+#include "lumavel/core/estimator_params.hpp"
+
 namespace lumavel {
 namespace {
-constexpr uint64_t kRenewNs = 20000000000ull;  // 20 s
+// A still period this long renews the reference (params::kGyroOffsetRenewal), ns.
+constexpr uint64_t kRenewNs = static_cast<uint64_t>(fx::q_of(params::kGyroOffsetRenewal * 1e9, 0));
 }  // namespace
 
 void GyroOffset::anchor(const StillnessInput& in) {

@@ -1,21 +1,30 @@
 #include "lumavel/core/kernel_bank.hpp"
 
+#include "lumavel/core/estimator_params.hpp"
 #include "lumavel/core/imath.hpp"
 
 namespace lumavel {
 namespace {
 
-constexpr int kSimpsonIntervals = 8;  // per column; error ~1e-7 for sigma >= 1 column
-constexpr int kSimpsonWeight[kSimpsonIntervals + 1] = {1, 4, 2, 4, 2, 4, 2, 4, 1};
+constexpr int kSimpsonIntervals = params::kKernelSimpsonIntervals;
+static_assert(kSimpsonIntervals >= 2 && kSimpsonIntervals % 2 == 0, "Simpson's rule needs an even count");
 constexpr int64_t kSimpsonWeightSum = 3 * kSimpsonIntervals;
 constexpr int kPoints = kSimpsonIntervals + 1;
+
+// Simpson's weights 1, 4, 2, 4, ..., 2, 4, 1 (their sum is kSimpsonWeightSum).
+constexpr int simpson_weight(int j) { return j == 0 || j == kSimpsonIntervals ? 1 : (j % 2 == 1 ? 4 : 2); }
+
+// The kernels' cut-off in Q24 sigmas; the Hermite recursion below keeps
+// s * He_k inside int64 for |s| up to 7.
+constexpr int64_t kCutoffQ24 = fx::q_of(params::kKernelCutoffSigma, 24);
+static_assert(kCutoffQ24 <= (int64_t{7} << 24), "gaussian_triple is sized for |s| <= 7");
 
 // phi_n, phi_(n+1) and phi_(n+3) at s (Q7.24), Q1.30 (phi_(n+3): Q4.27,
 // |phi_6| peaks at 15). Each product He * e is the value itself times 2^54
 // (< 2^58), so it cannot overflow however large He grows.
 void gaussian_triple(int order, int64_t s, int32_t* phi_n, int32_t* phi_n1, int32_t* phi_n3) {
   const int64_t one = int64_t{1} << 24;
-  if (s > 7 * one || s < -7 * one) {
+  if (s > kCutoffQ24 || s < -kCutoffQ24) {
     *phi_n = 0;
     *phi_n1 = 0;
     *phi_n3 = 0;
@@ -66,9 +75,10 @@ void integrate(const CameraGeometry& g, const EdgeOffsetQ15* lens, uint16_t widt
       const int64_t s = fx::div_q(psi - centre, k.sigma, 24);
       int32_t pn = 0, pn1 = 0, pn3 = 0;
       gaussian_triple(k.order, s, &pn, &pn1, &pn3);
-      acc_k += kSimpsonWeight[j] * int64_t{pn};
-      acc_d += kSimpsonWeight[j] * int64_t{pn1};
-      acc_t += kSimpsonWeight[j] * int64_t{pn3};  // Q27
+      const int64_t wj = simpson_weight(j);
+      acc_k += wj * pn;
+      acc_d += wj * pn1;
+      acc_t += wj * pn3;  // Q27
     }
     const int64_t ds = fx::div_q(hi > lo ? hi - lo : lo - hi, k.sigma, 24);  // Q24
     if (kk) kk->w[u] = fx::sat32(fx::shr_round(acc_k * ds, 26) / kSimpsonWeightSum);

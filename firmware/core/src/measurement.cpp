@@ -1,5 +1,6 @@
 #include "lumavel/core/measurement.hpp"
 
+#include "lumavel/core/estimator_params.hpp"
 #include "lumavel/core/imath.hpp"
 
 namespace lumavel {
@@ -98,23 +99,27 @@ int32_t clamp30(int64_t v) {
   return static_cast<int32_t>(v > lim ? lim : (v < -lim ? -lim : v));
 }
 
+// The band of (sigma w)^2 a Gaussian-derivative kernel passes, Q24.
+constexpr int64_t kSigmaW2MinQ24 = fx::q_of(params::kSigmaW2Min, 24);
+constexpr int64_t kSigmaW2MaxQ24 = fx::q_of(params::kSigmaW2Max, 24);
+static_assert(kSigmaW2MinQ24 > 0 && kSigmaW2MaxQ24 < (int64_t{1} << 30), "the root below needs u in (0, 2^30)");
+
 // Half the phase difference between the cameras of kernel k (see measurement.hpp).
-// (sigma w)^2 is clamped to [0.09, 16], the band a Gaussian-derivative kernel
-// passes: continuous, so that noise near w^2 = 0 cannot switch the correction.
+// (sigma w)^2 is clamped to [kSigmaW2Min, kSigmaW2Max] (estimator_params.hpp):
+// continuous, so that noise near w^2 = 0 cannot switch the correction.
 AngleQ28 half_phase(const CameraOutputs& c0, const CameraOutputs& c1, ValueQ28 dc0, ValueQ28 dc1,
                     AngleQ28 sigma, uint8_t k) {
   const int64_t r0 = c0.r[k], r1 = c1.r[k];  // Q20
   const int64_t rr = fx::shr_round(r0 * r0 + r1 * r1, 8);                                  // Q32
   if (rr == 0) return 0;
   const int64_t cr = -(int64_t{c0.c[k]} * r0 + int64_t{c1.c[k]} * r1);                    // Q32
-  constexpr int64_t kUMin = 1509949, kUMax = int64_t{16} << 24;                          // Q24
-  int64_t u = kUMin;  // (sigma w)^2
+  int64_t u = kSigmaW2MinQ24;  // (sigma w)^2, Q24
   if (cr > 0) {
     bool sat = false;
     const int64_t w2 = fx::div_q(cr, rr, 8, &sat);                                          // Q8 rad^-2
     const int64_t s2 = fx::shr_round(int64_t{sigma} * sigma, 28);                            // Q28 rad^2
-    u = sat ? kUMax : fx::shr_round(w2 * s2, 12);
-    u = u < kUMin ? kUMin : (u > kUMax ? kUMax : u);
+    u = sat ? kSigmaW2MaxQ24 : fx::shr_round(w2 * s2, 12);
+    u = u < kSigmaW2MinQ24 ? kSigmaW2MinQ24 : (u > kSigmaW2MaxQ24 ? kSigmaW2MaxQ24 : u);
   }
   // 1/w = sigma / sqrt(u): u brought into [2^28, 2^30) by even shifts for a
   // 15-bit root, then one division (32-bit work except that division).

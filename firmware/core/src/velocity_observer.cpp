@@ -1,5 +1,6 @@
 #include "lumavel/core/velocity_observer.hpp"
 
+#include "lumavel/core/estimator_params.hpp"
 #include "lumavel/core/imath.hpp"
 
 namespace lumavel {
@@ -19,10 +20,13 @@ int32_t clamp4(int64_t v, bool* sat) {
   return static_cast<int32_t>(v);
 }
 
-// x / tan(x) for |x| <= 1.2 rad (clamped), Q1.30, by its series
+// The clamp of x (estimator_params.hpp), Q28 rad.
+constexpr int64_t kMaxHalfPhaseQ28 = fx::q_of(params::kMaxHalfPhase, 28);
+
+// x / tan(x) for |x| <= kMaxHalfPhase (clamped, 1.2 rad), Q1.30, by its series
 // 1 - x^2/3 - x^4/45 - 2x^6/945 - x^8/4725 - 2x^10/93555 (error < 3e-5 at 1.2).
 int64_t x_over_tan_q30(int64_t x_q28) {
-  const int64_t lim = (int64_t{12} << 28) / 10;
+  const int64_t lim = kMaxHalfPhaseQ28;
   if (x_q28 > lim) x_q28 = lim;
   if (x_q28 < -lim) x_q28 = -lim;
   const int64_t x2 = fx::shr_round(x_q28 * x_q28, 26);  // Q30

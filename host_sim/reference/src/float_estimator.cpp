@@ -4,18 +4,22 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "lumavel/core/estimator_params.hpp"
 #include "lumavel/core/fusion_params.hpp"
 #include "lumavel/core/status.hpp"
 
 namespace lumavel::host {
 namespace {
 
-constexpr int kSimpsonIntervals = 8;
-constexpr double kSimpsonWeight[kSimpsonIntervals + 1] = {1, 4, 2, 4, 2, 4, 2, 4, 1};
+constexpr int kSimpsonIntervals = params::kKernelSimpsonIntervals;
 
-// phi_n(s) = (-1)^n He_n(s) exp(-s^2/2), probabilists' Hermite polynomials.
+// Simpson's weights 1, 4, 2, 4, ..., 2, 4, 1, as kernel_bank.cpp has them.
+constexpr double simpson_weight(int j) { return j == 0 || j == kSimpsonIntervals ? 1 : (j % 2 == 1 ? 4 : 2); }
+
+// phi_n(s) = (-1)^n He_n(s) exp(-s^2/2), probabilists' Hermite polynomials,
+// zero beyond the kernels' cut-off.
 double gaussian_derivative(int n, double s) {
-  if (std::fabs(s) > 7) return 0;
+  if (std::fabs(s) > params::kKernelCutoffSigma) return 0;
   const double s2 = s * s;
   const double he[7] = {1, s, s2 - 1, s2 * s - 3 * s, s2 * s2 - 6 * s2 + 3,
                         s2 * s2 * s - 10 * s2 * s + 15 * s, s2 * s2 * s2 - 15 * s2 * s2 + 45 * s2 - 15};
@@ -45,9 +49,10 @@ void integrate(const Eigen::VectorXd& edges, double centre, const KernelModel& k
     for (int j = 0; j <= kSimpsonIntervals; ++j) {
       const double psi = lo + (hi - lo) * j / kSimpsonIntervals;
       const double s = (psi - centre) / k.sigma;
-      ak += kSimpsonWeight[j] * gaussian_derivative(k.order, s);
-      ad += kSimpsonWeight[j] * gaussian_derivative(k.order + 1, s);
-      at += kSimpsonWeight[j] * gaussian_derivative(k.order + 3, s);
+      const double wj = simpson_weight(j);
+      ak += wj * gaussian_derivative(k.order, s);
+      ad += wj * gaussian_derivative(k.order + 1, s);
+      at += wj * gaussian_derivative(k.order + 3, s);
     }
     const double ds = std::fabs(hi - lo) / k.sigma;
     kk[u] = ak * ds / (3 * kSimpsonIntervals);
@@ -106,7 +111,7 @@ FloatEstimator::FloatEstimator(const EstimatorSettings& s) : s_(s) {
   gyro_gap_ns_ = uint64_t{c.gyro_gap_us} * 1000;
   frame_period_ns_ = uint64_t{c.frame_period_us} * 1000;
   max_gap_ns_ = uint64_t{c.max_gap_us} * 1000;
-  converging_ns_ = 3 * uint64_t{c.tau_us} * 1000;
+  converging_ns_ = static_cast<uint64_t>(params::kConvergingTaus * static_cast<double>(uint64_t{c.tau_us} * 1000));
   still_min_ns_ = uint64_t{c.still_min_us} * 1000;
   double narrowest = s.kernels.empty() ? 0 : s.kernels[0].sigma;
   for (const KernelModel& k : s.kernels) narrowest = std::min(narrowest, k.sigma);
@@ -120,57 +125,62 @@ void FloatEstimator::push_gyro(uint64_t t_ns, double rate) {
   const RateQ24 q = to_fixed_rate(rate);  // throws if not finite
   const bool rail = fx::rate_at_rail(q);
   if (rail) rate = std::ldexp(static_cast<double>(q), -fx::kRateFrac);
-  if (gcount_ == 0) {
-    gt_[1] = t_ns;
-    gr_[1] = rate;
-    grail_[1] = rail;
-    ga_[1] = 0;
-    gfirst_ = t_ns;
-    gcount_ = 1;
+  Gyro& g = gyro_;
+  if (g.count == 0) {
+    g.t[1] = t_ns;
+    g.r[1] = rate;
+    g.at_rail[1] = rail;
+    g.angle[1] = 0;
+    g.t_first = t_ns;
+    g.count = 1;
     return;
   }
-  if (t_ns <= gt_[1]) return;
-  const double dt = static_cast<double>(t_ns - gt_[1]) * 1e-9;
-  gmax_spacing_ = std::max(gmax_spacing_, t_ns - gt_[1]);
-  gt_[0] = gt_[1];
-  gr_[0] = gr_[1];
-  ga_[0] = ga_[1];
-  grail_[0] = grail_[1];
-  gt_[1] = t_ns;
-  gr_[1] = rate;
-  grail_[1] = rail;
-  ga_[1] = ga_[0] + (gr_[0] + gr_[1]) / 2 * std::min(dt, 4.0);  // one piece at most 4 s, as the core
-  if (grail_[0] || grail_[1]) {
-    grailed_ = true;
-    grailed_end_ = t_ns;
+  if (t_ns <= g.t[1]) return;
+  const double dt = static_cast<double>(t_ns - g.t[1]) * 1e-9;
+  g.max_spacing = std::max(g.max_spacing, t_ns - g.t[1]);
+  g.t[0] = g.t[1];
+  g.r[0] = g.r[1];
+  g.angle[0] = g.angle[1];
+  g.at_rail[0] = g.at_rail[1];
+  g.t[1] = t_ns;
+  g.r[1] = rate;
+  g.at_rail[1] = rail;
+  g.angle[1] = g.angle[0] + (g.r[0] + g.r[1]) / 2 * std::min(dt, params::kGyroMaxStep);  // one piece at most, as the core
+  if (g.at_rail[0] || g.at_rail[1]) {
+    g.railed = true;
+    g.railed_end = t_ns;
   }
-  ++gcount_;
+  ++g.count;
 }
 
 double FloatEstimator::angle_at(uint64_t t) const {
-  if (gcount_ == 0) return 0;
+  const Gyro& g = gyro_;
+  if (g.count == 0) return 0;
   auto secs = [](uint64_t a, uint64_t b) { return (static_cast<double>(a) - static_cast<double>(b)) * 1e-9; };
-  if (t >= gt_[1]) return ga_[1] + gr_[1] * std::min(secs(t, gt_[1]), 4.0);
-  if (gcount_ < 2) return ga_[1] - gr_[1] * std::min(secs(gt_[1], t), 4.0);
-  if (t <= gt_[0]) return ga_[0] - gr_[0] * std::min(secs(gt_[0], t), 4.0);
-  const double span = secs(gt_[1], gt_[0]), dt = secs(t, gt_[0]);
-  const double rate_t = gr_[0] + (gr_[1] - gr_[0]) * dt / span;
-  return ga_[0] + (gr_[0] + rate_t) / 2 * dt;
+  constexpr double kMax = params::kGyroMaxStep;  // held rates extrapolate this far at most
+  if (t >= g.t[1]) return g.angle[1] + g.r[1] * std::min(secs(t, g.t[1]), kMax);
+  if (g.count < 2) return g.angle[1] - g.r[1] * std::min(secs(g.t[1], t), kMax);
+  if (t <= g.t[0]) return g.angle[0] - g.r[0] * std::min(secs(g.t[0], t), kMax);
+  const double span = secs(g.t[1], g.t[0]), dt = secs(t, g.t[0]);
+  const double rate_t = g.r[0] + (g.r[1] - g.r[0]) * dt / span;
+  return g.angle[0] + (g.r[0] + rate_t) / 2 * dt;
 }
 
 bool FloatEstimator::gyro_covers(uint64_t from, uint64_t to) const {
-  if (gcount_ == 0) return false;
+  const Gyro& g = gyro_;
+  if (g.count == 0) return false;
   if (from > to) std::swap(from, to);
   const uint64_t gap = gyro_gap_ns_;
-  if (gfirst_ > from + gap || to > gt_[1] + gap) return false;
-  const uint64_t oldest = gcount_ < 2 ? gt_[1] : gt_[0];
+  if (g.t_first > from + gap || to > g.t[1] + gap) return false;
+  const uint64_t oldest = g.count < 2 ? g.t[1] : g.t[0];
   if (to + gap < oldest) return false;
-  const bool hole = gcount_ >= 2 && gt_[1] - gt_[0] > gap;
-  return !(hole && gt_[0] < to && gt_[1] > from);
+  const bool hole = g.count >= 2 && g.t[1] - g.t[0] > gap;
+  return !(hole && g.t[0] < to && g.t[1] > from);
 }
 
 bool FloatEstimator::gyro_saturated_since(uint64_t from) const {
-  return gcount_ > 0 && (grail_[1] || (grailed_ && grailed_end_ > from));
+  const Gyro& g = gyro_;
+  return g.count > 0 && (g.at_rail[1] || (g.railed && g.railed_end > from));
 }
 
 FloatMeasurement measure_float(const FloatBank& bank, const EstimatorSettings& s,
@@ -187,7 +197,7 @@ FloatMeasurement measure_float(const FloatBank& bank, const EstimatorSettings& s
     col = Eigen::VectorXd::Zero(w);
     for (int y = 0; y < h; ++y)
       for (int u = 0; u < w; ++u) col[u] += img[i][y * w + u];
-    for (int y = 0; y < h; y += 8)
+    for (int y = 0; y < h; y += params::kClipRowStep)
       for (int u = 0; u < w; ++u) {
         const uint8_t p = img[i][y * w + u];
         m.clipped += (p == 0 || p == 255);
@@ -234,7 +244,8 @@ FloatMeasurement measure_float(const FloatBank& bank, const EstimatorSettings& s
     if (rr <= 0) continue;
     const double sigma = s.kernels[j].sigma;
     const double w2 = -(c[0][jj] * r[0][jj] + c[1][jj] * r[1][jj]) / rr;
-    const double omega = std::sqrt(std::clamp(w2 * sigma * sigma, 0.09, 16.0)) / sigma;
+    const double u = std::clamp(w2 * sigma * sigma, params::kSigmaW2Min, params::kSigmaW2Max);  // (sigma w)^2
+    const double omega = std::sqrt(u) / sigma;
     const double a0 = f[0][jj] - bank.cam[0].dc[jj], b0 = -r[0][jj] / omega;
     const double a1 = f[1][jj] - bank.cam[1].dc[jj], b1 = -r[1][jj] / omega;
     m.half_phase[jj] = std::atan2(b1 * a0 - a1 * b0, a1 * a0 + b1 * b0) / 2;
@@ -251,14 +262,14 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
   const double angle = angle_at(t_ns);
   const bool first = !have_prev_frame_;
   have_prev_frame_ = true;
-  const double since_prev = first ? 0 : (static_cast<double>(t_ns) - static_cast<double>(prev_t_)) * 1e-9;
-  const double dtheta = first ? 0 : angle - prev_angle_ - offset_ * since_prev;
+  const double since_prev = first ? 0 : (static_cast<double>(t_ns) - static_cast<double>(prev_t_ns_)) * 1e-9;
+  const double dtheta = first ? 0 : angle - prev_gyro_angle_ - offset_ * since_prev;
   heading_ = first ? angle : heading_ + dtheta;
   est.heading = std::remainder(heading_, 2 * M_PI);
   if (est.heading >= M_PI) est.heading -= 2 * M_PI;
-  if (gmax_spacing_ > gyro_gap_ns_ || !gyro_covers(first ? t_ns : prev_t_, t_ns)) status |= kStatusGyroGap;
-  gmax_spacing_ = 0;
-  const bool gyro_saturated = gyro_saturated_since(first ? t_ns : prev_t_);  // V held over the interval
+  if (gyro_.max_spacing > gyro_gap_ns_ || !gyro_covers(first ? t_ns : prev_t_ns_, t_ns)) status |= kStatusGyroGap;
+  gyro_.max_spacing = 0;
+  const bool gyro_saturated = gyro_saturated_since(first ? t_ns : prev_t_ns_);  // V held over the interval
   if (gyro_saturated) status |= kStatusSaturated;
   auto converging = [&] { return !started_ || since_start_ns_ < converging_ns_; };
   if (m.no_light || m.no_stereo) {
@@ -272,8 +283,8 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
     have_prev_ = true;
     prev_ = m;
   } else {
-    const double dt = (static_cast<double>(t_ns) - static_cast<double>(prev_t_)) * 1e-9;
-    if (t_ns <= prev_t_ || t_ns - prev_t_ > max_gap_ns_) {
+    const double dt = (static_cast<double>(t_ns) - static_cast<double>(prev_t_ns_)) * 1e-9;
+    if (t_ns <= prev_t_ns_ || t_ns - prev_t_ns_ > max_gap_ns_) {
       status |= kStatusFrameGap | kStatusRestarted | kStatusNoTof;
       started_ = false;  // V held; the next interval re-initialises it
       since_start_ns_ = 0;
@@ -281,7 +292,9 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
       tof_.reset();
       fusion_.restart();
     } else {
-      if ((t_ns - prev_t_) * 2 > frame_period_ns_ * 3) status |= kStatusFrameGap;
+      // (both sides exact in double: the same test as the core's integers)
+      if (static_cast<double>(t_ns - prev_t_ns_) > params::kFrameGapPeriods * static_cast<double>(frame_period_ns_))
+        status |= kStatusFrameGap;
       const Eigen::VectorXd s_bar = (m.diff + prev_.diff) / 2;
       const Eigen::VectorXd r_bar = (m.rot + prev_.rot) / 2;
       const Eigen::VectorXd e = (m.mid - prev_.mid) - dtheta * r_bar;
@@ -289,7 +302,8 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
       if (s_.baseline_correction) {
         // dM = (d/h) S x / tan(x), x = k h / 2 (velocity_observer.hpp).
         for (Eigen::Index j = 0; j < a.size(); ++j) {
-          const double x = std::clamp((m.half_phase[j] + prev_.half_phase[j]) / 2, -1.2, 1.2);
+          const double x = std::clamp((m.half_phase[j] + prev_.half_phase[j]) / 2, -params::kMaxHalfPhase,
+                                      params::kMaxHalfPhase);
           a[j] *= std::fabs(x) > 1e-12 ? x / std::tan(x) : 1.0;
         }
       }
@@ -315,7 +329,7 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
           since_start_ns_ = 0;
         } else {
           v_ += (est.v_direct - v_) * dt / (s_.tau + dt);
-          since_start_ns_ += t_ns - prev_t_;
+          since_start_ns_ += t_ns - prev_t_ns_;
         }
       }
       // The time of flight and the fusion (Estimator::step).
@@ -358,8 +372,8 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
     prev_ = m;
   }
   if (converging()) status |= kStatusConverging;
-  prev_t_ = t_ns;
-  prev_angle_ = angle;
+  prev_t_ns_ = t_ns;
+  prev_gyro_angle_ = angle;
   est.v_differential = v_;
   est.v = fusion_.v();
   est.scale = fusion_.scale();
@@ -393,7 +407,9 @@ void FloatEstimator::learn_offset(const FloatMeasurement& m, uint64_t t_ns, doub
   still_ = span_ns >= still_min_ns_;
   if (still_) {
     offset_ = (angle - angle_ref_) / (static_cast<double>(span_ns) * 1e-9);
-    if (span_ns > 20000000000ull) anchor();  // renewed as the core: not still again until still_min has passed
+    // Renewed as the core: not still again until still_min has passed.
+    constexpr uint64_t kRenewNs = static_cast<uint64_t>(fx::q_of(params::kGyroOffsetRenewal * 1e9, 0));
+    if (span_ns > kRenewNs) anchor();
   }
 }
 

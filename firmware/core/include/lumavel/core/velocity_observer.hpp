@@ -23,6 +23,7 @@
 #pragma once
 #include <cstdint>
 
+#include "lumavel/core/estimator_params.hpp"
 #include "lumavel/core/fixed.hpp"
 #include "lumavel/core/measurement.hpp"
 
@@ -70,10 +71,15 @@ class VelocityObserver {
     return o;
   }
   SpeedQ16 v() const { return v_; }
-  // Not started, or started less than three time constants ago.
-  bool converging_now() const { return !started_ || since_start_ns_ < 3 * tau_ns_; }
+  // Not started, or started less than kConvergingTaus (3) time constants ago.
+  bool converging_now() const {
+    return !started_ || since_start_ns_ < ((kConvergingTausQ4 * tau_ns_) >> 4);
+  }
 
  private:
+  // The converging time in time constants, Q4 (exact for whole and half values).
+  static constexpr int64_t kConvergingTausQ4 = fx::q_of(params::kConvergingTaus, 4);
+  static_assert(fx::q_of(params::kConvergingTaus, 30) == kConvergingTausQ4 << 26, "exact in Q4");
   SpeedQ16 v_ = 0;
   bool started_ = false;
   int64_t since_start_ns_ = 0;

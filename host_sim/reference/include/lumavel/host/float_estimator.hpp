@@ -58,25 +58,31 @@ class FloatEstimator {
   bool gyro_saturated_since(uint64_t from_ns) const;          // GyroIntegrator::saturated_since
   void learn_offset(const FloatMeasurement& m, uint64_t t_ns, double angle, bool textured);
 
+  // The gyro as GyroIntegrator keeps it: the last two samples ([1] the newer)
+  // and the integrated angle at each, with the core's member names.
+  struct Gyro {
+    uint64_t t[2]{};              // sample times, ns
+    double r[2]{};                // rates, rad/s (clipped to the core's RateQ24 range)
+    double angle[2]{};            // integrated angle at each sample, rad
+    bool at_rail[2]{};            // the sample was clipped to that range
+    int count = 0;                // samples since the start
+    uint64_t t_first = 0;         // first sample since the start
+    bool railed = false;          // a trapezoid has had a clipped end ...
+    uint64_t railed_end = 0;      // ... ending here
+    uint64_t max_spacing = 0;     // longest sample spacing since the last frame, ns
+  };
+
   EstimatorSettings s_;
   FloatBank bank_;
-  // gyro: the last two samples and the integrated angle at each
-  uint64_t gt_[2]{};
-  double gr_[2]{}, ga_[2]{};
-  int gcount_ = 0;
-  uint64_t gfirst_ = 0;         // first sample since the start
-  bool grail_[2]{};             // the sample was clipped to the firmware's RateQ24 range
-  bool grailed_ = false;        // a trapezoid has had a clipped end ...
-  uint64_t grailed_end_ = 0;    // ... ending here
-  uint64_t gmax_spacing_ = 0;   // ns, since the last frame
+  Gyro gyro_;
   uint64_t gyro_gap_ns_ = 0;    // the configuration's timing, whole microseconds as the core has it
   uint64_t frame_period_ns_ = 0, max_gap_ns_ = 0, converging_ns_ = 0, still_min_ns_ = 0;
   // observer
   FloatMeasurement prev_;
   bool have_prev_ = false, started_ = false;
-  double v_ = 0, distance_ = 0, prev_angle_ = 0;
+  double v_ = 0, distance_ = 0, prev_gyro_angle_ = 0;
   uint64_t since_start_ns_ = 0;
-  uint64_t prev_t_ = 0;
+  uint64_t prev_t_ns_ = 0;
   // gyro offset learning and the corrected heading
   double offset_ = 0, heading_ = 0, angle_ref_ = 0;
   bool have_prev_frame_ = false;
