@@ -13,7 +13,9 @@
 #include <vector>
 
 #include "lumavel/core/status.hpp"
+#include "lumavel/core/velocity_fusion.hpp"
 #include "lumavel/host/engine.hpp"
+#include "lumavel/host/float_velocity_fusion.hpp"
 #include "synthetic_rig.hpp"
 
 using namespace lumavel;
@@ -259,6 +261,74 @@ TEST(TimeOfFlight, AHoldDoesNotTeachTheScale) {
     CHECK(s.worst_abs < 0.01);
     CHECK(s.e_fused < 0.02);
   }
+}
+
+TEST_GROUP(VelocityFusion){};
+
+// Near texture can turn the differential over while its kernels still agree
+// (near clutter: -1.3 m/s for 1.2 s of a 0.7 m/s pass, residual near zero).
+// Where it points against the tracked time of flight's direction by more
+// than kFusionAgainstSigmas of its own sigmas, the fusion takes the time of
+// flight alone: plain data into both fusions, 2 s agreeing, then 1 s with
+// the differential at -1.3 m/s and a clean residual; V must stay with the
+// time of flight (0.7 m/s) in both, and return to the differential after.
+TEST(VelocityFusion, ADifferentialAgainstTheTimeOfFlightIsOutvoted) {
+  constexpr double kH = 0.08, kV = 0.7, kDt = 1.0 / 60;
+  VelocityFusion fixed;
+  host::FloatVelocityFusion dbl;
+  double y = 0, worst_fixed = 0, worst_double = 0;
+  for (int i = 0; i < 240; ++i) {
+    const double t = i * kDt;
+    const bool turned = t >= 2.0 && t < 3.0;
+    const double vd = turned ? -1.3 : kV;
+    y += vd * kDt;
+    const double tau = kH / kV;
+    TofResult tf{};
+    tf.ok = true;
+    tf.direction = 1;
+    tf.tau_ns = std::llround(tau * 1e9);
+    tf.v = static_cast<SpeedQ16>(std::lround(kV * 65536));
+    tf.sig = static_cast<FracQ16>(std::lround(0.005 * 65536));
+    tf.y_then = static_cast<TravelQ16Ns>(std::llround((y - kV * tau) * 65536 * 1e9));
+    FusionInput in{};
+    in.dt_ns = std::llround(kDt * 1e9);
+    in.v_differential = in.v_direct = static_cast<SpeedQ16>(std::lround(vd * 65536));
+    in.direct = true;
+    in.residual = static_cast<FracQ16>(std::lround(0.001 * 65536));
+    in.tof = &tf;
+    in.y = static_cast<TravelQ16Ns>(std::llround(y * 65536 * 1e9));
+    in.baseline = static_cast<LengthQ24>(std::lround(kH * (1 << 24)));
+    const double vf = fixed.update(in).v / 65536.0;
+    host::FloatTofResult tfd;
+    tfd.ok = true;
+    tfd.direction = 1;
+    tfd.tau_ns = tau * 1e9;
+    tfd.v = kV;
+    tfd.sig = 0.005;
+    tfd.y_then = y - kV * tau;
+    host::FloatFusionInput ind;
+    ind.dt = kDt;
+    ind.v_differential = ind.v_direct = vd;
+    ind.direct = true;
+    ind.residual = 0.001;
+    ind.tof = &tfd;
+    ind.y = y;
+    ind.baseline = kH;
+    const double vdbl = dbl.update(ind).v;
+    if (turned && t > 2.1) {
+      worst_fixed = std::max(worst_fixed, std::fabs(vf - kV));
+      worst_double = std::max(worst_double, std::fabs(vdbl - kV));
+    }
+    if (t > 3.5) {
+      DOUBLES_EQUAL(kV, vf, 0.01);
+      DOUBLES_EQUAL(kV, vdbl, 0.01);
+    }
+  }
+  std::printf("\n  differential turned over to -1.3 m/s against a time of flight of 0.7 m/s: worst |V - 0.7| %.4f m/s "
+              "fixed, %.4f double",
+              worst_fixed, worst_double);
+  CHECK(worst_fixed < 0.05);
+  CHECK(worst_double < 0.05);
 }
 
 TEST_GROUP(PhotometricBalance){};

@@ -32,6 +32,7 @@ constexpr int64_t kAccelMaxQ16 = fx::q_of(kFusionAccelMax, fx::kAccelFrac);
 constexpr int64_t kInflationGainQ16 = fx::q_of(kFusionTofInflationGain, 16);
 constexpr int64_t kInflationMaxQ16 = fx::q_of(kFusionTofInflationMax, 16);
 constexpr int64_t kOneQ16 = int64_t{1} << 16;
+constexpr int64_t kAgainstSigmasQ16 = fx::q_of(kFusionAgainstSigmas, 16);
 constexpr int64_t kScaleTermMaxSpeedQ16 = fx::q_of(kFusionScaleTermMaxSpeed, fx::kSpeedFrac);
 static_assert(kFusionScaleTermMaxSpeed <= 64, "held speed^2 in Q16 below 2^28");
 constexpr int kGainFrac = 24;  // the scale filter's gain, Q24
@@ -106,10 +107,11 @@ FusionOutput VelocityFusion::update(const FusionInput& in) {
     const int64_t rel = inflated > kTofFloorQ16 ? inflated : kTofFloorQ16;
     const int64_t st = ((rel * abs64(tof.v)) >> 16) + kSpeedFloorQ16;
     const int64_t st2 = st * st;  // Q32
-    const int64_t w = fx::fraction_q16(sd2, sd2 + st2);
+    const bool against = (vd > 0) != (tof.v > 0) && abs64(vd) > ((kAgainstSigmasQ16 * sd) >> 16);
+    const int64_t w = against ? kOneQ16 : fx::fraction_q16(sd2, sd2 + st2);
     target = vd + ((w * (zc - vd)) >> 16);
     // How far the time of flight really scatters, seen against a clean differential.
-    if (residual_ < kScaleMaxResidualQ16) {
+    if (residual_ < kScaleMaxResidualQ16 && !against) {
       const int64_t nu = int64_t{tof.v} - vd;
       const int64_t g = fx::div_q(nu * nu, st2 + sd2, 16);  // Q16
       tof_inflation_ = static_cast<int32_t>(

@@ -66,9 +66,10 @@ FloatFusionOutput FloatVelocityFusion::update(const FloatFusionInput& in) {
     const double zc = tof.v + accel_ * tof.tau_ns * 1e-9 / 2;
     const double rel = std::max(tof.sig * std::sqrt(tof_inflation_), kFusionTofFloor);
     const double st = rel * std::fabs(tof.v) + kFusionSpeedFloor;
-    const double w = sd2 / (sd2 + st * st);
+    const bool against = (vd > 0) != (tof.v > 0) && std::fabs(vd) > kFusionAgainstSigmas * sd;
+    const double w = against ? 1.0 : sd2 / (sd2 + st * st);
     target = vd + w * (zc - vd);
-    if (residual_ < kFusionScaleMaxResidual) {
+    if (residual_ < kFusionScaleMaxResidual && !against) {
       const double g = (tof.v - vd) * (tof.v - vd) / (st * st + sd2);
       tof_inflation_ = std::clamp(tof_inflation_ + kFusionTofInflationGain * (g - tof_inflation_), 1.0,
                                   kFusionTofInflationMax);
