@@ -3,6 +3,8 @@
 // device and the host, and defaults_for is the one default geometry.
 #include <CppUTest/TestHarness.h>
 
+#include <string>
+
 #include "lumavel/app/estimator_config.hpp"
 #include "lumavel/host/settings.hpp"
 #include "lumavel/protocol/device_config.hpp"
@@ -113,4 +115,20 @@ TEST(ConfigAuthority, HostDefaultsAreTheDevices) {
   // The kernel banks differ on purpose (config_fields.hpp): four on the host, two on the device.
   LONGS_EQUAL(config::kHostKernelCount, e.kernel_count);
   LONGS_EQUAL(config::kDeviceKernelCount, d.kernel_count);
+}
+
+// The rules in words (rule_of) are written by hand next to the table: the
+// integer bounds they name must be the table's.
+TEST(ConfigAuthority, WireRulesNameTheTablesBounds) {
+  using F = protocol::ConfigField;
+  auto names = [](F f, int64_t v) {
+    return std::string(protocol::rule_of(f)).find(std::to_string(v)) != std::string::npos;
+  };
+  CHECK(names(F::kTau, range<Quantity::kTau>.lo) && names(F::kTau, range<Quantity::kTau>.hi));
+  CHECK(names(F::kFramePeriod, range<Quantity::kFramePeriod>.lo) && names(F::kFramePeriod, range<Quantity::kFramePeriod>.hi));
+  CHECK(names(F::kMaxGap, range<Quantity::kMaxGap>.hi));
+  CHECK(names(F::kGyroGap, range<Quantity::kGyroGap>.lo) && names(F::kGyroGap, range<Quantity::kGyroGap>.hi));
+  CHECK(names(F::kStillDuration, range<Quantity::kStillDuration>.lo) &&
+        names(F::kStillDuration, range<Quantity::kStillDuration>.hi));
+  CHECK(names(F::kSaturatedPermille, range<Quantity::kSaturatedPermille>.hi));
 }
