@@ -29,6 +29,7 @@ enum Orientation : uint8_t {
   kCam1UpsideDown = 1u << 2,
 };
 constexpr uint8_t kKnownOrientationBits = 0x07u;
+static_assert(kKnownOrientationBits == (kLooksRight | kCam0UpsideDown | kCam1UpsideDown), "every Orientation bit");
 
 // Lens bits: which cameras have a lens table (uploaded with report 0x05).
 enum LensBits : uint8_t {
@@ -36,6 +37,7 @@ enum LensBits : uint8_t {
   kLensCam1 = 1u << 1,
 };
 constexpr uint8_t kKnownLensBits = 0x03u;
+static_assert(kKnownLensBits == (kLensCam0 | kLensCam1), "every LensBits bit");
 // Estimator option bits the configuration may carry (lumavel/core/config.hpp).
 constexpr uint8_t kKnownOptionBits = kKnownOptions;
 

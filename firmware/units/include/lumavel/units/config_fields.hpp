@@ -65,14 +65,17 @@ constexpr FieldSpec kFields[] = {
     // +-2.5 sigma core already spans more than a half turn. The default is
     // the normaliser's.
     {Quantity::kKernelSigma, "sigma", "rad", 0.5 * kDeg, 45 * kDeg, 0.20, kQ28},
-    // Observer time constant: from a frame or so up to 10 s; a slower
-    // observer does not follow a vehicle, and tau + dt stays well inside the
-    // observer's 32-bit microsecond arithmetic.
+    // Observer time constant: from a frame or so up to 10 s (the core's
+    // limit, which the wire's 60 s used to exceed); a slower observer does
+    // not follow a vehicle.
     {Quantity::kTau, "tau", "s", 0.001, 10.0, 0.1, 1e6},
-    // Nominal frame interval: 1 kHz to 1 Hz, the cameras this is made for.
+    // Nominal frame interval: 1 kHz to 1 Hz, the cameras this is made for
+    // (the app counts gaps with a period in ns in 32 bits).
     {Quantity::kFramePeriod, "frame_period", "s", 0.001, 1.0, 1.0 / 60, 1e6},
     // Longest frame interval bridged (and at least one frame period): past
-    // 4 s the observer's state says nothing about the motion any more.
+    // 4 s the observer's state says nothing about the motion any more, and
+    // 4 s is the longest gyro interval integrated in one piece
+    // (gyro_integrator.cpp: |rate sum| * dt stays inside 64 bits).
     {Quantity::kMaxGap, "max_gap", "s", 0.0, 4.0, 0.5, 1e6},
     // Gyro sample spacing that raises the gyro-gap status: up to 1 s; a gyro
     // slower than that cannot follow a turn.
