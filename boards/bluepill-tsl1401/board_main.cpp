@@ -19,13 +19,8 @@ namespace {
 
 // 128 x 1 line scan behind a 60 degree lens, 100 lines per second.
 lumavel::protocol::DeviceConfig board_defaults() {
-  lumavel::protocol::DeviceConfig c = lumavel::protocol::default_device_config();
-  c.width = lumavel::bluepill::kTslPixels;
-  c.height = 1;
-  for (int i = 0; i < 2; ++i) {
-    c.fu[i] = 7264748;  // 110.85 px = 64 / tan(30 deg), Q16
-    c.cu[i] = 4161536;  // 63.5 px, Q16
-  }
+  // fu 110.85 px = 64 / tan(30 deg), cu 63.5 px.
+  lumavel::protocol::DeviceConfig c = lumavel::protocol::defaults_for(lumavel::bluepill::kTslPixels, 1);
   c.frame_period_us = bluepill::TslCamera::kExposureNs / 1000;
   return c;
 }

@@ -54,7 +54,7 @@ printf 'width=40\n# a comment\ntau_us=fast\n' > bad.cfg
 "$READ" config set --file bad.cfg 2> badcfg.err
 rc=$?
 [ $rc -eq 1 ] || fail "bad config file: exit $rc, expected 1"
-grep -q "bad.cfg:3: tau_us = fast: not a whole number; tau_us must be 1000..60000000 us" badcfg.err || fail "config file error not named: $(cat badcfg.err)"
+grep -q "bad.cfg:3: tau_us = fast: not a whole number; tau_us must be 1000..10000000 us" badcfg.err || fail "config file error not named: $(cat badcfg.err)"
 printf 'width=40\nlens_cam0=0.1,0.2\n' > short.cfg
 "$READ" config set --file short.cfg 2> short.err
 grep -q "short.cfg:2: lens_cam0 = 0.1,0.2: 2 values, but width 40 needs 41" short.err || fail "short lens table not named: $(cat short.err)"

@@ -68,6 +68,7 @@ bool App::start() {
 void App::count_gap(uint64_t t_ns) {
   if (have_frame_ && t_ns > last_frame_ns_) {
     const uint64_t dt = t_ns - last_frame_ns_;
+    static_assert(config::range<config::Quantity::kFramePeriod>.hi * 1000 <= 0xFFFFFFFFll, "a period in ns fits 32 bits");
     const uint32_t period = frame_period_us_ * 1000u;  // <= 1 s, fits 32 bits
     if (dt > uint64_t{period} + period / 2) {
       // Frames that should have arrived in between (32-bit division: no __aeabi_uldivmod).

@@ -1,5 +1,6 @@
 #include "lumavel/protocol/device_config.hpp"
 
+#include "lumavel/units/config_fields.hpp"
 #include "lumavel/units/limits.hpp"
 #include "frame.hpp"
 #include "wire.hpp"
@@ -10,17 +11,20 @@ using namespace wire;
 
 namespace {
 
+// The ranges: lumavel/units/config_fields.hpp, the core's too (a value
+// accepted here is one Estimator::configure() takes range-wise).
+using config::Quantity;
+using config::range;
 constexpr int64_t kOneQ16 = int64_t{1} << fx::kPixelFrac;
-constexpr LengthQ24 kMinBaseline = 16777;      // 1 mm
-constexpr LengthQ24 kMaxBaseline = 16777216;   // 1 m
-constexpr AngleQ28 kMaxMisalignment = 93952410;  // 0.35 rad
-constexpr AngleQ28 kMinSigma = 268435;         // 0.001 rad
-constexpr AngleQ28 kMaxSigma = 536870912;      // 2 rad
-constexpr ValueQ28 kMaxLowTexture = ValueQ28{1} << fx::kValueFrac;
 constexpr size_t kKernelOffset = 36;
 constexpr size_t kKernelStride = 5;
-constexpr LengthQ24 kMinStillDistance = 1678;     // 0.1 mm (the estimator's own limits)
-constexpr LengthQ24 kMaxStillDistance = 1677722;  // 10 cm
+// The device's default kernel bank, folded to Q28 here (a constexpr, never a double at run time).
+static_assert(config::kDeviceKernelCount == 2 && config::kDeviceKernelCount <= kWireKernels, "two kernels below");
+constexpr KernelSetting device_kernel(int i) {
+  return KernelSetting{config::kDeviceKernels[i].order,
+                       static_cast<AngleQ28>(config::to_counts(config::kDeviceKernels[i].sigma, config::kQ28))};
+}
+constexpr KernelSetting kDeviceKernel0 = device_kernel(0), kDeviceKernel1 = device_kernel(1);
 
 bool in(int64_t v, int64_t lo, int64_t hi) { return v >= lo && v <= hi; }
 
@@ -61,7 +65,7 @@ const char* to_string(ConfigField f) {
 #define LUMAVEL_TEXT2(x) #x
 #define LUMAVEL_TEXT(x) LUMAVEL_TEXT2(x)
 
-// Next to the constants validate() uses: change one, change the other.
+// The ranges of config_fields.hpp in words (the text is checked by tests): change one, change the other.
 const char* rule_of(ConfigField f) {
   switch (f) {
     case ConfigField::kOk: return "ok";
@@ -72,13 +76,13 @@ const char* rule_of(ConfigField f) {
     case ConfigField::kFocalLength: return "fu must be 1..8 * width px";
     case ConfigField::kPrincipalPoint: return "cu must be 0..width - 1 px";
     case ConfigField::kOrientation: return "unknown orientation bits";
-    case ConfigField::kNormaliserSigma: return "normaliser sigma must be 0.001..2 rad";
+    case ConfigField::kNormaliserSigma: return "normaliser sigma must be 0.0087..0.785 rad (0.5..45 deg)";
     case ConfigField::kKernelCount: return "kernels must list 1..min(6, LUMAVEL_MAX_KERNELS) kernels";
     case ConfigField::kKernelOrder: return "kernel orders must be 0..3";
-    case ConfigField::kKernelSigma: return "kernel sigmas must be 0.001..2 rad";
-    case ConfigField::kTau: return "tau_us must be 1000..60000000 us";
+    case ConfigField::kKernelSigma: return "kernel sigmas must be 0.0087..0.785 rad (0.5..45 deg)";
+    case ConfigField::kTau: return "tau_us must be 1000..10000000 us";
     case ConfigField::kFramePeriod: return "frame_period_us must be 1000..1000000 us";
-    case ConfigField::kMaxGap: return "max_gap_us must be frame_period_us..10000000 us";
+    case ConfigField::kMaxGap: return "max_gap_us must be frame_period_us..4000000 us";
     case ConfigField::kGyroGap: return "gyro_gap_us must be 100..1000000 us";
     case ConfigField::kLowTexture: return "low_texture must be 0..1";
     case ConfigField::kSaturatedPermille: return "saturated_permille must be 0..1000";
@@ -101,14 +105,15 @@ ConfigField validate(const DeviceConfig& c) {
   if (!in(c.width, kMinColumns, kMaxColumns)) return ConfigField::kWidth;
   if (!in(c.height, 1, kMaxRows)) return ConfigField::kHeight;
   const int64_t h = c.baseline < 0 ? -int64_t{c.baseline} : int64_t{c.baseline};
-  if (!in(h, kMinBaseline, kMaxBaseline)) return ConfigField::kBaseline;
-  if (!in(c.misalignment, -kMaxMisalignment, kMaxMisalignment)) return ConfigField::kMisalignment;
+  if (!range<Quantity::kBaseline>.holds(h)) return ConfigField::kBaseline;
+  if (!range<Quantity::kMisalignment>.holds(c.misalignment)) return ConfigField::kMisalignment;
   for (int i = 0; i < 2; ++i) {
-    if (!in(c.fu[i], kOneQ16, 8 * kOneQ16 * c.width)) return ConfigField::kFocalLength;
+    // 8 x width (a field of view >= 7 degrees) is inside the core's range (config_fields.hpp).
+    if (!in(c.fu[i], range<Quantity::kFocalLength>.lo, 8 * kOneQ16 * c.width)) return ConfigField::kFocalLength;
     if (!in(c.cu[i], 0, kOneQ16 * (c.width - 1))) return ConfigField::kPrincipalPoint;
   }
   if ((c.orientation & ~kKnownOrientationBits) != 0) return ConfigField::kOrientation;
-  if (!in(c.normaliser_sigma, kMinSigma, kMaxSigma)) return ConfigField::kNormaliserSigma;
+  if (!range<Quantity::kKernelSigma>.holds(c.normaliser_sigma)) return ConfigField::kNormaliserSigma;
   const int max_count = kMaxKernels < kWireKernels ? kMaxKernels : kWireKernels;
   if (!in(c.kernel_count, 1, max_count)) return ConfigField::kKernelCount;
   for (int i = 0; i < kWireKernels; ++i) {
@@ -120,17 +125,17 @@ ConfigField validate(const DeviceConfig& c) {
       continue;
     }
     if (k.order > kMaxKernelOrder) return ConfigField::kKernelOrder;
-    if (!in(k.sigma, kMinSigma, kMaxSigma)) return ConfigField::kKernelSigma;
+    if (!range<Quantity::kKernelSigma>.holds(k.sigma)) return ConfigField::kKernelSigma;
   }
-  if (!in(c.tau_us, 1000, 60000000)) return ConfigField::kTau;
-  if (!in(c.frame_period_us, 1000, 1000000)) return ConfigField::kFramePeriod;
-  if (!in(c.max_gap_us, c.frame_period_us, 10000000)) return ConfigField::kMaxGap;
-  if (!in(c.gyro_gap_us, 100, 1000000)) return ConfigField::kGyroGap;
-  if (!in(c.low_texture, 0, kMaxLowTexture)) return ConfigField::kLowTexture;
-  if (c.saturated_permille > 1000) return ConfigField::kSaturatedPermille;
+  if (!range<Quantity::kTau>.holds(c.tau_us)) return ConfigField::kTau;
+  if (!range<Quantity::kFramePeriod>.holds(c.frame_period_us)) return ConfigField::kFramePeriod;
+  if (!in(c.max_gap_us, c.frame_period_us, range<Quantity::kMaxGap>.hi)) return ConfigField::kMaxGap;
+  if (!range<Quantity::kGyroGap>.holds(c.gyro_gap_us)) return ConfigField::kGyroGap;
+  if (!range<Quantity::kLowTexture>.holds(c.low_texture)) return ConfigField::kLowTexture;
+  if (!range<Quantity::kSaturatedPermille>.holds(c.saturated_permille)) return ConfigField::kSaturatedPermille;
   if ((c.options & ~kKnownOptionBits) != 0) return ConfigField::kOptions;
-  if (!in(c.still_distance, kMinStillDistance, kMaxStillDistance)) return ConfigField::kStillDistance;
-  if (!in(c.still_min_us, 100000, 60000000)) return ConfigField::kStillDuration;
+  if (!range<Quantity::kStillDistance>.holds(c.still_distance)) return ConfigField::kStillDistance;
+  if (!range<Quantity::kStillDuration>.holds(c.still_min_us)) return ConfigField::kStillDuration;
   if ((c.lens & ~kKnownLensBits) != 0 || (c.lens == 0 && c.lens_crc != 0)) return ConfigField::kLens;
   return ConfigField::kOk;
 }
@@ -228,35 +233,40 @@ ConfigField parse_config(const uint8_t* buf, size_t len, DeviceConfig& out) {
   return f;
 }
 
-DeviceConfig default_device_config() {
+DeviceConfig defaults_for(uint16_t width, uint16_t height, config::FieldOfView fov) {
   DeviceConfig c{};
-  c.width = kDefaultColumns;  // the default working size (limits.hpp)
-  c.height = kDefaultRows;
-  c.baseline = 1342177;  // 0.08 m
-  c.misalignment = 0;
+  c.width = width;
+  c.height = height;
+  c.baseline = static_cast<LengthQ24>(config::default_of<Quantity::kBaseline>);
+  c.misalignment = static_cast<AngleQ28>(config::default_of<Quantity::kMisalignment>);
   for (int i = 0; i < 2; ++i) {
-    c.fu[i] = 2270234;  // 34.64 px: 60 degrees over 40 columns
-    c.cu[i] = 1277952;  // 19.5 px: the centre of 40 columns
+    // The same field of view at this width (rounded down, as the boards have always had it).
+    c.fu[i] = static_cast<PixelQ16>(int64_t{fov.fu_at_default_width} * width / kDefaultColumns);
+    c.cu[i] = static_cast<PixelQ16>((int32_t{width} - 1) * (kOneQ16 / 2));  // the centre column
   }
-  c.orientation = 0;             // looking left, upright
-  c.normaliser_sigma = 53687091;  // 0.20 rad
-  c.kernel_count = 2;
-  c.kernels[0] = KernelSetting{1, 18790482};  // first derivative, 0.07 rad
-  c.kernels[1] = KernelSetting{1, 37580964};  // first derivative, 0.14 rad
-  c.tau_us = 100000;
-  c.frame_period_us = 16667;
-  c.max_gap_us = 500000;
-  c.gyro_gap_us = 50000;
-  c.low_texture = 536871;  // 2e-3
-  c.saturated_permille = 50;
+  c.orientation = 0;  // looking left, upright
+  c.normaliser_sigma = static_cast<AngleQ28>(config::default_of<Quantity::kKernelSigma>);
+  c.kernel_count = static_cast<uint8_t>(config::kDeviceKernelCount);
+  c.kernels[0] = kDeviceKernel0;  // first derivative, 0.07 rad
+  c.kernels[1] = kDeviceKernel1;  // first derivative, 0.14 rad
+  c.tau_us = static_cast<uint32_t>(config::default_of<Quantity::kTau>);
+  c.frame_period_us = static_cast<uint32_t>(config::default_of<Quantity::kFramePeriod>);
+  c.max_gap_us = static_cast<uint32_t>(config::default_of<Quantity::kMaxGap>);
+  c.gyro_gap_us = static_cast<uint32_t>(config::default_of<Quantity::kGyroGap>);
+  c.low_texture = static_cast<ValueQ28>(config::default_of<Quantity::kLowTexture>);
+  c.saturated_permille = static_cast<uint16_t>(config::default_of<Quantity::kSaturatedPermille>);
   // The estimator's defaults: finite-baseline correction and gyro-offset
   // learning on, stillness judged over 2 mm and 0.5 s (gyro_offset.hpp).
   c.options = kOptionBaselineCorrection | kOptionGyroOffsetLearning;  // photometric balance: off (settings.hpp)
-  c.still_distance = 33554;  // 2 mm in Q7.24
-  c.still_min_us = 500000;
+  c.still_distance = static_cast<LengthQ24>(config::default_of<Quantity::kStillDistance>);
+  c.still_min_us = static_cast<uint32_t>(config::default_of<Quantity::kStillDuration>);
   c.lens = 0;  // pinhole
   c.lens_crc = 0;
   return c;
+}
+
+DeviceConfig default_device_config() {
+  return defaults_for(static_cast<uint16_t>(kDefaultColumns), static_cast<uint16_t>(kDefaultRows));
 }
 
 size_t stored_config_size(const DeviceConfig& c) {

@@ -72,11 +72,7 @@ HidSender::HidSender(std::unique_ptr<hal::ReportLink> link, const HidSenderOptio
 }
 
 void HidSender::set_resolution(uint16_t width, uint16_t height) {
-  proto::DeviceConfig c = proto::default_device_config();
-  c.width = width;
-  c.height = height;
-  c.cu[0] = c.cu[1] = (int32_t{width} - 1) * 32768;  // centre column
-  c.fu[0] = c.fu[1] = int32_t{width} * 56756;        // 60 degrees
+  proto::DeviceConfig c = proto::defaults_for(width, height);  // 60 degrees, centre column
   accept_ = true;
   features_.boot(c);  // the stored configuration first; keeps the previous one if c is out of range
   accept_ = store_ != nullptr;

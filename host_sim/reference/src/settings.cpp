@@ -55,7 +55,8 @@ std::pair<std::string, std::string> offending(const EstimatorSettings& s, Config
     case ConfigError::kWidth: return {"width", "working width = " + std::to_string(s.width)};
     case ConfigError::kHeight: return {"height", "working height = " + std::to_string(s.height)};
     case ConfigError::kFocalLength: {
-      const int i = s.cam[0].fu < 1 || s.cam[0].fu > 30000 ? 0 : 1;
+      const config::FieldSpec& fu = config::spec(config::Quantity::kFocalLength);
+      const int i = s.cam[0].fu < fu.lo || s.cam[0].fu > fu.hi ? 0 : 1;
       return {cam_setting(i, "fu"), "cam" + std::to_string(i) + " fu = " + g(s.cam[i].fu) + " px"};
     }
     case ConfigError::kPrincipalPoint: {
@@ -90,12 +91,10 @@ std::pair<std::string, std::string> offending(const EstimatorSettings& s, Config
 }  // namespace
 
 std::vector<KernelModel> default_kernels(double hfov) {
-  // Two scales, orders 1 and 2, sized so that each kernel is below 1 % of its
-  // peak on the outer ~12 % of each side of the view (the side strips of
-  // paper eq. 19, with room for a couple of degrees of misalignment).
   const double half = hfov / 2;
-  const double wide = half / 4.0, narrow = half / 6.0;
-  return {{1, wide}, {2, wide}, {1, narrow}, {2, narrow}};
+  std::vector<KernelModel> out;
+  for (const config::HostKernel& k : config::kHostKernels) out.push_back({k.order, half / k.half_view_divisor});
+  return out;
 }
 
 EstimatorConfig to_fixed_config(const EstimatorSettings& s) {

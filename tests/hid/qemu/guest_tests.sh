@@ -59,7 +59,7 @@ config_check() {  # BACKEND
 }
 refuse_check() {  # BACKEND: out-of-range values never leave the host
   lumavel-read --backend "$1" config set tau_us=5 2> /tmp/refuse.err  # refused before the device is opened
-  [ $? -eq 1 ] && grep -q "command line: tau_us = 5: tau_us must be 1000..60000000 us" /tmp/refuse.err || return 1
+  [ $? -eq 1 ] && grep -q "command line: tau_us = 5: tau_us must be 1000..10000000 us" /tmp/refuse.err || return 1
   lumavel-read --backend "$1" config set cu0_px=100 2> /tmp/refuse.err  # refused against the device's width 80
   [ $? -eq 5 ] && grep -q "cu0_px = 100: cu must be 0..width - 1 px (with the device's configuration" /tmp/refuse.err
 }

@@ -4,17 +4,7 @@
 
 namespace lumavel::stream {
 
-protocol::DeviceConfig defaults_for(uint16_t width, uint16_t height) {
-  protocol::DeviceConfig c = protocol::default_device_config();
-  const int64_t w0 = c.width;
-  for (int i = 0; i < 2; ++i) {
-    c.fu[i] = static_cast<PixelQ16>(int64_t{c.fu[i]} * width / w0);  // same field of view
-    c.cu[i] = static_cast<PixelQ16>((int32_t{width} - 1) * 32768);   // centre column, Q16
-  }
-  c.width = width;
-  c.height = height;
-  return c;
-}
+protocol::DeviceConfig defaults_for(uint16_t width, uint16_t height) { return protocol::defaults_for(width, height); }
 
 RunSummary run_stream(ByteSource& in, ByteSink& out, const char* board_name) {
   RunSummary s{};

@@ -393,7 +393,7 @@ std::string rule_of_key(const std::string& key) {
   using F = proto::ConfigField;
   if (key == "kernels")
     return "kernels are ORDER:SIGMA_RAD[,...], 1.." + std::to_string(proto::kWireKernels) +
-           " of them, orders 0..3, sigmas 0.001..2 rad";
+           " of them, orders 0..3, sigmas 0.0087..0.785 rad (0.5..45 deg)";
   if (key == "cam0_upside_down" || key == "cam1_upside_down" || key == "baseline_correction" ||
       key == "gyro_offset_learning" || key == "photometric_balance")
     return key + " must be 0 or 1";
@@ -468,8 +468,8 @@ void check_settings_offline(const GivenSettings& given) {
   base.config.width = static_cast<uint16_t>(kMaxColumns);
   base.config.fu[0] = base.config.fu[1] = int32_t{1} << fx::kPixelFrac;  // 1 px
   base.config.cu[0] = base.config.cu[1] = 0;
-  base.config.frame_period_us = 1000;
-  base.config.max_gap_us = 10000000;
+  base.config.frame_period_us = static_cast<uint32_t>(config::range<config::Quantity::kFramePeriod>.lo);
+  base.config.max_gap_us = static_cast<uint32_t>(config::range<config::Quantity::kMaxGap>.hi);
   if (!given.has("width")) {  // a table's length cannot be checked without the width
     GivenSettings known;
     for (const GivenSetting& g : given.items)

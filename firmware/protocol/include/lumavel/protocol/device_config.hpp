@@ -10,6 +10,7 @@
 #include <cstdint>
 
 #include "lumavel/core/config.hpp"  // the estimator's option bits only (header, no link)
+#include "lumavel/units/config_fields.hpp"
 #include "lumavel/units/fixed.hpp"
 #include "lumavel/protocol/lens.hpp"
 #include "lumavel/protocol/reports.hpp"
@@ -28,6 +29,7 @@ enum Orientation : uint8_t {
   kCam1UpsideDown = 1u << 2,
 };
 constexpr uint8_t kKnownOrientationBits = 0x07u;
+static_assert(kKnownOrientationBits == (kLooksRight | kCam0UpsideDown | kCam1UpsideDown), "every Orientation bit");
 
 // Lens bits: which cameras have a lens table (uploaded with report 0x05).
 enum LensBits : uint8_t {
@@ -35,6 +37,7 @@ enum LensBits : uint8_t {
   kLensCam1 = 1u << 1,
 };
 constexpr uint8_t kKnownLensBits = 0x03u;
+static_assert(kKnownLensBits == (kLensCam0 | kLensCam1), "every LensBits bit");
 // Estimator option bits the configuration may carry (lumavel/core/config.hpp).
 constexpr uint8_t kKnownOptionBits = kKnownOptions;
 
@@ -46,17 +49,18 @@ struct KernelSetting {
 struct DeviceConfig {
   uint16_t width;           // working columns, kMinColumns..kMaxColumns
   uint16_t height;          // working rows, 1..kMaxRows
+  // Ranges: lumavel/units/config_fields.hpp (the core's too); width-relative ones here.
   LengthQ24 baseline;       // h, m: x of cam1's optical centre minus cam0's, |h| in [1 mm, 1 m]
   AngleQ28 misalignment;    // yaw from cam0 to cam1, rad, |dtheta| <= 0.35
   PixelQ16 fu[2];           // focal length per camera, working pixels, [1, 8 * width]
   PixelQ16 cu[2];           // principal point column, working pixels, [0, width - 1]
   uint8_t orientation;      // Orientation bits
-  AngleQ28 normaliser_sigma;  // order-0 window, rad, [0.001, 2]
+  AngleQ28 normaliser_sigma;  // order-0 window, rad, [0.5, 45] deg
   uint8_t kernel_count;     // 1..min(kWireKernels, kMaxKernels)
   KernelSetting kernels[kWireKernels];  // slots >= kernel_count must be zero
-  uint32_t tau_us;          // observer time constant (gain 1/tau), [1 ms, 60 s]
+  uint32_t tau_us;          // observer time constant (gain 1/tau), [1 ms, 10 s]
   uint32_t frame_period_us; // nominal frame interval, [1 ms, 1 s]
-  uint32_t max_gap_us;      // [frame_period_us, 10 s]
+  uint32_t max_gap_us;      // [frame_period_us, 4 s]
   uint32_t gyro_gap_us;     // [100 us, 1 s]
   ValueQ28 low_texture;     // [0, 1]
   uint16_t saturated_permille;  // 0..1000
@@ -96,6 +100,8 @@ enum class ConfigField : uint8_t {
   kEstimator,  // passed these ranges but the estimator refused it (e.g. kernel outside the view)
   kStore,      // accepted but could not be persisted
 };
+// DeviceInfo carries a ConfigField in config_status; its decoder's bound must follow the list.
+static_assert(kMaxConfigStatus == static_cast<uint8_t>(ConfigField::kStore), "kMaxConfigStatus is the last ConfigField");
 const char* to_string(ConfigField f);
 // The range validate() holds the field to, in the units of the configuration
 // text (m, rad, px, us), e.g. "baseline |h| must be 0.001..1 m".
@@ -142,8 +148,12 @@ size_t encode_stored_config(const DeviceConfig& c, const LensTables& lens, uint8
 // for the others, and for both after a failure past the header.
 ConfigField decode_stored_config(const uint8_t* buf, size_t len, DeviceConfig& c, LensTables& lens);
 
-// A working configuration for a 40 x 30, 60 degree, 8 cm rig looking left:
-// what a device runs when its store is empty or invalid.
+// The one default geometry for a resolution: the defaults of
+// config_fields.hpp (8 cm rig looking left, the device's kernel bank) at
+// width x height, fu for the field of view `fov` at that width, cu the
+// centre column. Firmware passes a constexpr FieldOfView only.
+DeviceConfig defaults_for(uint16_t width, uint16_t height, config::FieldOfView fov = config::kDefaultFov);
+// defaults_for(40, 30): what a device runs when its store is empty or invalid.
 DeviceConfig default_device_config();
 
 }  // namespace lumavel::protocol

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "lumavel/core/config.hpp"
+#include "lumavel/units/config_fields.hpp"
 
 namespace lumavel::host {
 
@@ -25,30 +26,33 @@ struct KernelModel {
   double sigma = 0.07;  // rad
 };
 
+// Defaults: the configuration authority (lumavel/units/config_fields.hpp),
+// the device's too.
 struct EstimatorSettings {
-  int width = 40, height = 30;   // working resolution
+  using Q = config::Quantity;
+  int width = kDefaultColumns, height = kDefaultRows;  // working resolution
   CameraModel cam[2];
-  double baseline = 0.08;        // m, x of cam1 minus x of cam0
-  KernelModel normaliser{0, 0.20};
+  double baseline = config::spec(Q::kBaseline).def;   // m, x of cam1 minus x of cam0
+  KernelModel normaliser{0, config::spec(Q::kKernelSigma).def};
   std::vector<KernelModel> kernels;
-  double tau = 0.1;              // s
-  double frame_period = 1.0 / 60;  // s
-  double max_gap = 0.5;          // s
-  double gyro_gap = 0.05;        // s
-  double low_texture = 2e-3;     // rms of F1 - F0
-  int saturated_permille = 50;
+  double tau = config::spec(Q::kTau).def;                    // s
+  double frame_period = config::spec(Q::kFramePeriod).def;   // s
+  double max_gap = config::spec(Q::kMaxGap).def;             // s
+  double gyro_gap = config::spec(Q::kGyroGap).def;           // s
+  double low_texture = config::spec(Q::kLowTexture).def;     // rms of F1 - F0
+  int saturated_permille = static_cast<int>(config::default_of<Q::kSaturatedPermille>);
   bool baseline_correction = true;  // finite-baseline correction (x / tan x per kernel)
   bool gyro_offset_learning = true;  // learn the gyro offset at standstill
   // Learn cam1's offset against cam0's (photometric_balance.hpp). Off by
   // default: on, the day soak's twin splits the time of flight on 88 frames
   // (it allows 52) and leaves the V allowance on 42 (docs/design.md).
   bool photometric_balance = false;
-  double still_distance = 0.002;    // m: image change since a reference below this is standstill
-  double still_min = 0.5;           // s of stillness before the offset is taken
+  double still_distance = config::spec(Q::kStillDistance).def;  // m: image change below this is standstill
+  double still_min = config::spec(Q::kStillDuration).def;       // s of stillness before the offset is taken
 };
 
 // A setting the firmware configuration cannot take: what() names it, its
-// value and the rule ("frame period = 2 s: frame period must be 0.1 ms..1 s");
+// value and the rule ("frame period = 2 s: frame period must be 1 ms..1 s");
 // setting() is the EstimatorSettings member ("frame_period", "cam[1].fu",
 // "baseline", "kernels", ...), for callers that know where it came from.
 class SettingsError : public std::invalid_argument {
@@ -61,7 +65,8 @@ class SettingsError : public std::invalid_argument {
   std::string setting_;
 };
 
-// Default kernel bank for a field of view (radians, horizontal).
+// Default kernel bank for a field of view (radians, horizontal):
+// config::kHostKernels (the device runs config::kDeviceKernels).
 std::vector<KernelModel> default_kernels(double hfov);
 
 // Quantises to the firmware configuration. Throws SettingsError naming the

@@ -27,8 +27,8 @@ struct RunSummary {
 // device, and their report streams must be bit-identical.
 constexpr const char* kStreamBoardName = "lumavel-stream";
 
-// The protocol's default configuration (60 degrees, 8 cm) rescaled to the
-// stream's working resolution.
+// The protocol's default configuration (60 degrees, 8 cm) at the stream's
+// working resolution: protocol::defaults_for with the default field of view.
 protocol::DeviceConfig defaults_for(uint16_t width, uint16_t height);
 
 // Not reentrant: the app (frame buffers, estimator) lives in static storage.
