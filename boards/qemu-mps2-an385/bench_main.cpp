@@ -38,8 +38,9 @@ lumavel::StereoMeasurement measurement;
 uint8_t report[lumavel::protocol::kMeasurementSize];
 
 __attribute__((noipa)) void do_columns(uint16_t w, uint16_t h) {
-  lumavel::column_profile(frame[0], w, h, w, profile[0]);
-  lumavel::column_profile(frame[1], w, h, w, profile[1]);
+  const lumavel::KernelBank& bank = estimator.bank();
+  for (int i = 0; i < 2; ++i)
+    lumavel::column_profile(frame[i], w, h, w, bank.column_band(), profile[i]);
 }
 __attribute__((noipa)) void do_kernels() {
   lumavel::stereo_measurement(profile[0], profile[1], estimator.bank(), nullptr, measurement);

@@ -48,7 +48,7 @@ void BM_ColumnProfile(benchmark::State& st) {
   const auto f = frames(w, h, 1);
   ColumnProfile p;
   for (auto _ : st) {
-    column_profile(f[0].data(), static_cast<uint16_t>(w), static_cast<uint16_t>(h), static_cast<uint16_t>(w), p);
+    column_profile(f[0].data(), static_cast<uint16_t>(w), static_cast<uint16_t>(h), static_cast<uint16_t>(w), nullptr, p);
     benchmark::DoNotOptimize(p);
   }
   st.counters["ns/pixel"] = benchmark::Counter(static_cast<double>(w * h), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);

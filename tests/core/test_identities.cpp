@@ -26,8 +26,8 @@ StereoMeasurement measure_rotated(test::SyntheticRig& rig, const KernelBank& ban
     img[i] = rig.render(i, p);
   }
   ColumnProfile p0, p1;
-  column_profile(img[0].data(), bank.width, static_cast<uint16_t>(rig.height), bank.width, p0);
-  column_profile(img[1].data(), bank.width, static_cast<uint16_t>(rig.height), bank.width, p1);
+  column_profile(img[0].data(), bank.width, static_cast<uint16_t>(rig.height), bank.width, bank.column_band(), p0);
+  column_profile(img[1].data(), bank.width, static_cast<uint16_t>(rig.height), bank.width, bank.column_band(), p1);
   StereoMeasurement m;
   stereo_measurement(p0, p1, bank, nullptr, m);
   return m;
@@ -38,30 +38,36 @@ StereoMeasurement measure_rotated(test::SyntheticRig& rig, const KernelBank& ban
 TEST_GROUP(Identities){};
 
 TEST(Identities, DerivativeKernelIsTheRotationDerivative) {
-  for (int w : {40, 160}) {
-    test::SyntheticRig rig;
-    rig.width = w;
-    rig.height = w * 3 / 4;
-    rig.supersample = w == 40 ? 4 : 2;
-    rig.misalignment = 1.6 * M_PI / 180;
-    auto bank = std::make_unique<KernelBank>();
-    build_kernel_bank(host::to_fixed_config(rig.settings()), *bank);
-    const double delta = 0.5 * M_PI / 180;
-    double worst = 0;
-    for (double x : {0.0, 0.11, 0.37}) {
-      const StereoMeasurement m0 = measure_rotated(rig, *bank, x, 0);
-      const StereoMeasurement mp = measure_rotated(rig, *bank, x, delta);
-      const StereoMeasurement mm = measure_rotated(rig, *bank, x, -delta);
-      double rms = 0;
-      for (int k = 0; k < bank->count; ++k) rms += std::pow(std::ldexp(m0.rot[k], -20), 2);
-      rms = std::sqrt(rms / bank->count);
-      for (int k = 0; k < bank->count; ++k) {
-        const double fd = std::ldexp(mp.mid[k] - mm.mid[k], -28) / (2 * delta);
-        worst = std::fmax(worst, std::fabs(fd - std::ldexp(m0.rot[k], -20)) / rms);
+  for (const bool band : {false, true}) {  // plain column sums, and the elevation band (kernel_bank.hpp)
+    for (int w : {40, 160}) {
+      test::SyntheticRig rig;
+      rig.width = w;
+      rig.height = w * 3 / 4;
+      rig.supersample = w == 40 ? 4 : 2;
+      rig.misalignment = 1.6 * M_PI / 180;
+      host::EstimatorSettings s = rig.settings();
+      s.elevation_band = band;
+      auto bank = std::make_unique<KernelBank>();
+      build_kernel_bank(host::to_fixed_config(s), *bank);
+      CHECK_EQUAL(band, bank->banded);
+      const double delta = 0.5 * M_PI / 180;
+      double worst = 0;
+      for (double x : {0.0, 0.11, 0.37}) {
+        const StereoMeasurement m0 = measure_rotated(rig, *bank, x, 0);
+        const StereoMeasurement mp = measure_rotated(rig, *bank, x, delta);
+        const StereoMeasurement mm = measure_rotated(rig, *bank, x, -delta);
+        double rms = 0;
+        for (int k = 0; k < bank->count; ++k) rms += std::pow(std::ldexp(m0.rot[k], -20), 2);
+        rms = std::sqrt(rms / bank->count);
+        for (int k = 0; k < bank->count; ++k) {
+          const double fd = std::ldexp(mp.mid[k] - mm.mid[k], -28) / (2 * delta);
+          worst = std::fmax(worst, std::fabs(fd - std::ldexp(m0.rot[k], -20)) / rms);
+        }
       }
+      std::printf("\n  %dpx%s: worst |dF/dtheta (kernel) - finite difference| = %.2f %% of rms\n", w,
+                  band ? ", band" : "", 100 * worst);
+      CHECK(worst < 0.03);
     }
-    std::printf("\n  %dpx: worst |dF/dtheta (kernel) - finite difference| = %.2f %% of rms\n", w, 100 * worst);
-    CHECK(worst < 0.03);
   }
 }
 
@@ -70,25 +76,34 @@ TEST(Identities, BaselineDifferenceTendsToTheTranslationDerivative) {
   rig.width = 160;
   rig.height = 120;
   rig.supersample = 2;
-  const double dx = 0.002, x = 0.21;
+  const double dx = 0.01, x = 0.21;
   // Reference dF/dx at the body origin: both cameras at the origin (h -> 0),
-  // translated by +-dx.
+  // translated by +-dx and +-2 dx, fourth-order central difference (its
+  // truncation ~dx^4; a 2 mm two-point difference read the pixels' rounding
+  // to 8 bits as a floor of 1 % on the banded profile).
+  bool band = false;
   auto measure = [&](double baseline, double at) {
     rig.baseline = baseline;
-    const host::EstimatorSettings s = rig.settings();
+    host::EstimatorSettings s = rig.settings();
+    s.elevation_band = band;
     const host::FloatBank bank = host::build_float_bank(s);
     test::Pose2 p{at, 0, 0};
     const auto a = rig.render(0, p), b = rig.render(1, p);
     return host::measure_float(bank, s, a.data(), b.data());
   };
-  const Eigen::VectorXd ref = (measure(1e-9, x + dx).mid - measure(1e-9, x - dx).mid) / (2 * dx);
-  double prev_err = 1e9;
-  for (double h : {0.16, 0.08, 0.04}) {
-    const Eigen::VectorXd est = measure(h, x).diff / h;
-    const double err = (est - ref).norm() / ref.norm();
-    std::printf("\n  h = %.2f m: |(F1-F0)/h - dF/dx| = %.3f %%", h, 100 * err);
-    CHECK(err < prev_err * 0.6);  // shrinks like h^2 (0.25) plus rendering noise
-    prev_err = err;
+  for (const bool b : {false, true}) {  // plain column sums, and the elevation band
+    band = b;
+    const Eigen::VectorXd ref = (8 * (measure(1e-9, x + dx).mid - measure(1e-9, x - dx).mid) -
+                                 (measure(1e-9, x + 2 * dx).mid - measure(1e-9, x - 2 * dx).mid)) /
+                                (12 * dx);
+    double prev_err = 1e9;
+    for (double h : {0.16, 0.08, 0.04, 0.02}) {
+      const Eigen::VectorXd est = measure(h, x).diff / h;
+      const double err = (est - ref).norm() / ref.norm();
+      std::printf("\n  h = %.2f m%s: |(F1-F0)/h - dF/dx| = %.3f %%", h, band ? ", band" : "", 100 * err);
+      CHECK(err < prev_err * 0.6);  // shrinks like h^2 (0.25) plus rendering noise
+      prev_err = err;
+    }
+    CHECK(prev_err < 0.01);
   }
-  CHECK(prev_err < 0.01);
 }

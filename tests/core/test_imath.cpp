@@ -94,3 +94,14 @@ TEST(IMath, Isqrt32) {
     CHECK((r + 1) * (r + 1) > v);
   }
 }
+
+TEST(IMath, CosWithin3e9OverAFullTurn) {
+  double worst = 0;
+  for (double a = -M_PI + 1e-9; a < M_PI; a += 0.00731) {
+    const AngleQ28 q = static_cast<AngleQ28>(std::lround(std::ldexp(a, 28)));
+    const double err = std::fabs(std::ldexp(fx::cos_q30(q), -30) - std::cos(rad(q)));
+    if (err > worst) worst = err;
+  }
+  std::printf("\n  cos worst error %.2e\n", worst);
+  CHECK(worst < 3e-9);
+}

@@ -2,6 +2,7 @@
 // misalignment are read from the files, never assumed.
 #include <cmath>
 
+#include "lumavel/host/lens_distortion.hpp"
 #include "lumavel/host/rig.hpp"
 #include "recording_fixture.hpp"
 // CppUTest last: its leak-detector macros redefine new.
@@ -169,7 +170,44 @@ TEST(Rig, BarrelDistortionWidensTheOuterColumns) {
   CHECK(e[0] > pinhole(0) + 1e-3);    // left edge further left (yaw up: u_sign -1)
   CHECK(e[40] < pinhole(40) - 1e-3);
   for (int u = 0; u < 40; ++u) CHECK(e[static_cast<size_t>(u + 1)] < e[static_cast<size_t>(u)]);  // monotonic
-  // Forward check: distorting the undistorted edge gives back the pixel.
-  const double x = std::tan(M_PI / 2 - e[5]), r2 = x * x;
-  DOUBLES_EQUAL((5 * 16.0 - 0.5 - c.cu) / fu, x * (1 - 0.14 * r2 + 0.09 * r2 * r2), 1e-9);
+  // An edge's yaw is the mean over its rows in the common band: beyond the
+  // principal row's (rows off it lie further out under a barrel lens), short
+  // of the yaw of its top pixel.
+  const double xd = (5 * 16.0 - 0.5 - c.cu) / fu;
+  auto yaw_at = [&](double yd) {
+    LensDistortion lens;
+    lens.k = {-0.14, 0.09, 0, 0};
+    double x = 0, y = 0;
+    CHECK(lens.undistort(xd, yd, x, y));
+    return M_PI / 2 - std::atan(x);
+  };
+  const double principal = yaw_at(0), top = yaw_at((-0.5 - c.cv) / c.fv);
+  CHECK(e[5] > principal + 1e-4);
+  CHECK(e[5] < top - 1e-4);
+}
+
+TEST(Rig, ElevationScalesOfANearPinholeAreTheColumnsCos) {
+  // A lens too weak to matter: each column's elevation scale is the
+  // pinhole's cos(a_u) (kernel_bank.hpp), a_u the yaw of its centre.
+  CameraSensor c = fixture::left_camera(640, 480, 0.0);
+  c.distortion = {1e-9, 0, 0, 0};
+  const std::vector<double> s = lens_elevation_scales(c, 40);
+  LONGS_EQUAL(40, static_cast<long>(s.size()));
+  for (int u = 0; u < 40; ++u) {
+    const double a = std::atan(((u + 0.5) * 16.0 - 0.5 - c.cu) / c.fu);
+    DOUBLES_EQUAL(std::cos(a), s[static_cast<size_t>(u)], 1e-6);
+  }
+}
+
+TEST(Rig, ElevationScalesOfABarrelLensSetTheBandWhereTheColumnsReachLeast) {
+  // Barrel: the edge columns' rows are pulled in hardest, so their band needs
+  // the most rows and their scale is the least; the scale of the column that
+  // reaches least is 2T f / H exactly, and no column's is below it.
+  CameraSensor c = fixture::left_camera(640, 480, 0.0);
+  c.distortion = {-0.22, 0.05, 0, 0};
+  const std::vector<double> s = lens_elevation_scales(c, 40);
+  for (double v : s) CHECK(v > 0 && v < 2);
+  CHECK(s[0] < s[20]);
+  CHECK(s[39] < s[20]);
+  for (size_t u = 0; u + 1 < 20; ++u) CHECK(s[u] <= s[u + 1] + 1e-12);  // rising towards the centre
 }

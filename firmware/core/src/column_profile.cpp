@@ -28,58 +28,84 @@ uint32_t clipped_in_word(uint32_t w) {
   return 4u - (((nonzero >> 7) * 0x01010101u) >> 24);
 }
 
+// Sums of rows [from, to) of the four columns at p: two 16-bit lanes per
+// register (255 * 128 < 2^16), so each pixel costs about one load share and
+// one add. Word-aligned rows take the aligned path (one LDR per four pixels).
+void four_column_sums(const uint8_t* p, uint16_t from, uint16_t to, uint16_t stride, bool aligned,
+                      uint32_t out[4]) {
+  uint32_t even = 0, odd = 0;
+  const uint8_t* q = p + uint32_t{from} * stride;
+  const uint8_t* const end = p + uint32_t{to} * stride;
+  if (aligned) {
+#if defined(__ARM_FEATURE_SIMD32)
+    // Cortex-M4/M7: UXTAB16 adds bytes 0 and 2 (or 1 and 3, rotated) to two 16-bit lanes.
+    for (; q < end; q += stride) {
+      const uint32_t w = load_word(static_cast<const uint8_t*>(__builtin_assume_aligned(q, 4)));
+      even = __uxtab16(even, w);
+      odd = __uxtab16(odd, (w >> 8) | (w << 24));  // UXTAB16 with ROR #8
+    }
+#else
+    for (; q < end; q += stride) {
+      const uint32_t w = load_word(static_cast<const uint8_t*>(__builtin_assume_aligned(q, 4)));
+      even += w & 0x00FF00FFu;
+      odd += (w >> 8) & 0x00FF00FFu;
+    }
+#endif
+  } else {
+    for (; q < end; q += stride) {
+      const uint32_t w = load_word(q);
+      even += w & 0x00FF00FFu;
+      odd += (w >> 8) & 0x00FF00FFu;
+    }
+  }
+  uint8_t probe[4] = {1, 0, 0, 0};
+  const bool little = load_word(probe) == 1u;
+  const uint32_t lo_e = even & 0xFFFFu, hi_e = even >> 16, lo_o = odd & 0xFFFFu, hi_o = odd >> 16;
+  if (little) {
+    out[0] = lo_e; out[1] = lo_o; out[2] = hi_e; out[3] = hi_o;
+  } else {
+    out[0] = hi_o; out[1] = hi_e; out[2] = lo_o; out[3] = lo_e;
+  }
+}
+
+// Column c's sum of rows [from, height - from) narrowed to its band, in Q8.
+uint32_t to_band_q8(const uint8_t* col, uint32_t s, uint16_t from, uint16_t height, uint16_t stride,
+                    uint16_t first, uint8_t edge_q8) {
+  for (uint16_t r = from; r < first; ++r) s -= col[uint32_t{r} * stride] + col[uint32_t(height - 1 - r) * stride];
+  s <<= 8;
+  if (first > 0) s += uint32_t{edge_q8} * (col[uint32_t(first - 1) * stride] + col[uint32_t(height - first) * stride]);
+  return s;
+}
+
 }  // namespace
 
 void column_profile(const uint8_t* pixels, uint16_t width, uint16_t height, uint16_t stride,
-                    ColumnProfile& out) {
+                    const ColumnBand* band_in, ColumnProfile& out) {
+  // A line-scan build keeps no band (kBandColumns == 1).
+  const ColumnBand* const band = kBandColumns > 1 ? band_in : nullptr;
   out.width = width;
-  // Four columns at a time, down all rows: two 16-bit lanes per register
-  // (255 * 128 < 2^16), so each pixel costs about one load share and one add.
-  // Word-aligned rows take the aligned path (one LDR per four pixels).
   const bool aligned = ((reinterpret_cast<uintptr_t>(pixels) | stride) & 3u) == 0;
   uint16_t u = 0;
-  const uint32_t rows_bytes = uint32_t{height} * stride;
   for (; u + 4 <= width; u += 4) {
-    uint32_t even = 0, odd = 0;
-    const uint8_t* p = pixels + u;
-    const uint8_t* const end = p + rows_bytes;
-    if (aligned) {
-#if defined(__ARM_FEATURE_SIMD32)
-      // Cortex-M4/M7: UXTAB16 adds bytes 0 and 2 (or 1 and 3, rotated) to two 16-bit lanes.
-      for (; p != end; p += stride) {
-        const uint32_t w = load_word(static_cast<const uint8_t*>(__builtin_assume_aligned(p, 4)));
-        even = __uxtab16(even, w);
-        odd = __uxtab16(odd, (w >> 8) | (w << 24));  // UXTAB16 with ROR #8
-      }
-#else
-      for (; p != end; p += stride) {
-        const uint32_t w = load_word(static_cast<const uint8_t*>(__builtin_assume_aligned(p, 4)));
-        even += w & 0x00FF00FFu;
-        odd += (w >> 8) & 0x00FF00FFu;
-      }
-#endif
-    } else {
-      for (; p != end; p += stride) {
-        const uint32_t w = load_word(p);
-        even += w & 0x00FF00FFu;
-        odd += (w >> 8) & 0x00FF00FFu;
-      }
+    // The rows all four columns need, then each narrowed to its own band.
+    uint16_t from = 0;
+    if (band) {
+      from = band->first[u];
+      for (int c = 1; c < 4; ++c) from = band->first[u + c] < from ? band->first[u + c] : from;
     }
-    uint8_t probe[4] = {1, 0, 0, 0};
-    const bool little = load_word(probe) == 1u;
-    const uint16_t lo_e = static_cast<uint16_t>(even & 0xFFFFu), hi_e = static_cast<uint16_t>(even >> 16);
-    const uint16_t lo_o = static_cast<uint16_t>(odd & 0xFFFFu), hi_o = static_cast<uint16_t>(odd >> 16);
-    if (little) {
-      out.sum[u] = lo_e; out.sum[u + 1] = lo_o; out.sum[u + 2] = hi_e; out.sum[u + 3] = hi_o;
-    } else {
-      out.sum[u] = hi_o; out.sum[u + 1] = hi_e; out.sum[u + 2] = lo_o; out.sum[u + 3] = lo_e;
-    }
+    uint32_t s[4];
+    four_column_sums(pixels + u, from, static_cast<uint16_t>(height - from), stride, aligned, s);
+    for (int c = 0; c < 4; ++c)
+      out.sum[u + c] = band ? to_band_q8(pixels + u + c, s[c], from, height, stride, band->first[u + c],
+                                         band->edge_q8[u + c])
+                            : s[c] << 8;
   }
   for (; u < width; ++u) {
+    const uint16_t first = band ? band->first[u] : 0;
     uint32_t s = 0;
     const uint8_t* p = pixels + u;
-    for (uint16_t r = 0; r < height; ++r, p += stride) s += *p;
-    out.sum[u] = static_cast<uint16_t>(s);
+    for (uint16_t r = first; r < height - first; ++r) s += p[uint32_t{r} * stride];
+    out.sum[u] = band ? to_band_q8(p, s, first, height, stride, first, band->edge_q8[u]) : s << 8;
   }
   uint32_t clipped = 0;
   for (uint16_t r = 0; r < height; r = static_cast<uint16_t>(r + kClipRowStep)) {
@@ -97,12 +123,20 @@ void column_profile(const uint8_t* pixels, uint16_t width, uint16_t height, uint
   out.clip_sampled = static_cast<uint32_t>((height + kClipRowStep - 1) / kClipRowStep) * width;
 }
 
-bool same_textured_profile(const ColumnProfile& a, const ColumnProfile& b) {
+uint32_t band_rows_q8(const ColumnBand* band, uint16_t height, uint16_t u) {
+  if (band == nullptr || kBandColumns == 1) return uint32_t{height} * 256;
+  const uint32_t first = band->first[u];
+  return (uint32_t{height} - 2 * first) * 256 + (first > 0 ? 2 * uint32_t{band->edge_q8[u]} : 0);
+}
+
+bool same_textured_profile(const ColumnProfile& a, const ColumnProfile& b, const ColumnBand* band, uint16_t height) {
   if (a.width != b.width || a.width == 0) return false;
   bool flat = true;
+  const uint64_t rows0 = band_rows_q8(band, height, 0);
   for (uint16_t u = 0; u < a.width; ++u) {
     if (a.sum[u] != b.sum[u]) return false;
-    flat = flat && a.sum[u] == a.sum[0];
+    // sum < 2^23, rows < 2^16 in Q8: products < 2^39.
+    flat = flat && uint64_t{a.sum[u]} * rows0 == uint64_t{a.sum[0]} * band_rows_q8(band, height, u);
   }
   return !flat;
 }

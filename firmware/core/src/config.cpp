@@ -58,6 +58,10 @@ ConfigError validate(const EstimatorConfig& c) {
     AngleQ28 edges[kMaxColumns + 1];
     column_edge_yaws(c.cam[cam], c.edge_offsets[cam], c.width, edges);
     if (c.edge_offsets[cam] && !edges_ok(edges, c.width, c.cam[cam].u_sign)) return ConfigError::kColumnEdges;
+    if (c.elevation_scale[cam])
+      for (uint16_t u = 0; u < c.width; ++u)
+        if (c.elevation_scale[cam][u] == 0 || c.elevation_scale[cam][u] >= 2u << fx::kElevationScaleFrac)
+          return ConfigError::kColumnEdges;
     const int64_t lo = edges[0] < edges[c.width] ? edges[0] : edges[c.width];
     const int64_t hi = edges[0] < edges[c.width] ? edges[c.width] : edges[0];
     for (int i = 1; i < n; ++i) {
@@ -98,7 +102,7 @@ const char* to_string(ConfigError e) {
     case ConfigError::kLowTexture: return "low-texture threshold must be 0..1";
     case ConfigError::kSaturatedPermille: return "saturated permille must be 0..1000";
     case ConfigError::kOptions: return "unknown option bits";
-    case ConfigError::kColumnEdges: return "lens table: column edges must be monotonic in u and within [-pi, pi]";
+    case ConfigError::kColumnEdges: return "lens table: column edges must be monotonic in u and within [-pi, pi], elevation scales in (0, 2)";
     case ConfigError::kStill: return "stillness distance must be 0.1 mm..10 cm and its duration 0.1..60 s";
   }
   return "unknown configuration error";

@@ -79,8 +79,8 @@ Estimate Estimator::step(const FramePair& frames) {
   if (!configured_) return est;
 
   ColumnProfile p[2];
-  column_profile(frames.cam[0], cfg_.width, cfg_.height, frames.stride, p[0]);
-  column_profile(frames.cam[1], cfg_.width, cfg_.height, frames.stride, p[1]);
+  for (int i = 0; i < 2; ++i)
+    column_profile(frames.cam[i], cfg_.width, cfg_.height, frames.stride, bank_.column_band(), p[i]);
   const int next = have_prev_ ? 1 - cur_ : cur_;
   StereoMeasurement& m = meas_[next];
   stereo_measurement(p[0], p[1], bank_, (cfg_.options & kOptionPhotometricBalance) ? &balance_ : nullptr, m);
@@ -105,7 +105,7 @@ Estimate Estimator::step(const FramePair& frames) {
   const bool gyro_saturated = gyro_.saturated_since(interval_start);
   if (gyro_saturated) status |= kStatusSaturated;
 
-  const bool no_stereo = same_textured_profile(p[0], p[1]);
+  const bool no_stereo = same_textured_profile(p[0], p[1], bank_.column_band(), cfg_.height);
   if (m.no_light || no_stereo) {
     // Unusable frame: hold V, and pair the next good frame with nothing.
     status |= (m.no_light ? kStatusNoLight : kStatusNoStereo) | kStatusLowTexture | kStatusNoTof;

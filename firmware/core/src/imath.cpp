@@ -41,7 +41,40 @@ AngleQ28 cordic_vector(int64_t x, int64_t y) {
   return static_cast<AngleQ28>(shr_round(z, 4));
 }
 
+// 1 / prod sqrt(1 + 2^-2i) over the 32 steps, Q2.60: rotation CORDIC
+// starts from this x so that its gain leaves a unit vector.
+constexpr int64_t kCordicInvGainQ60 = 700114967507363456;
+
 }  // namespace
+
+int32_t cos_q30(AngleQ28 a) {
+  // Fold into [-pi/2, pi/2]: cos(a) = -cos(a -+ pi) outside it.
+  int64_t z = a;
+  int sign = 1;
+  if (z > kPiQ28 / 2) {
+    z -= kPiQ28;
+    sign = -1;
+  } else if (z < -(kPiQ28 / 2)) {
+    z += kPiQ28;
+    sign = -1;
+  }
+  z *= 16;  // Q3.32, the table's format
+  int64_t x = kCordicInvGainQ60 / 4, y = 0;  // Q2.58: |x|, |y| stay below 2^59 under the steps
+  for (int i = 0; i < kCordicSteps; ++i) {
+    const int64_t xs = x / (int64_t{1} << i);
+    const int64_t ys = y / (int64_t{1} << i);
+    if (z >= 0) {
+      x -= ys;
+      y += xs;
+      z -= kAtanTable[i];
+    } else {
+      x += ys;
+      y -= xs;
+      z += kAtanTable[i];
+    }
+  }
+  return static_cast<int32_t>(sign * shr_round(x, 28));
+}
 
 AngleQ28 atan2_i32(int32_t y, int32_t x) {
   if (x == 0 && y == 0) return 0;

@@ -1,5 +1,7 @@
 #include "lumavel/core/kernel_bank.hpp"
 
+#include <algorithm>
+
 #include "lumavel/core/estimator_params.hpp"
 #include "lumavel/core/imath.hpp"
 
@@ -59,16 +61,71 @@ AngleQ28 edge_yaw(const CameraGeometry& g, const EdgeOffsetQ15* lens, uint16_t u
   return lens == nullptr ? pin : static_cast<AngleQ28>(pin + lens[u] * (int32_t{1} << kShift));
 }
 
+// Column u's elevation scale, Q1.30: the lens table's where there is one,
+// else the pinhole's cos(a_u), a_u the yaw of the column's centre (the mean
+// of its edges) from the camera's axis; 0 where a column is turned to or past
+// 90 deg from the axis (the bank then does not band).
+int32_t column_cos_q30(const EstimatorConfig& cfg, int cam, uint16_t u) {
+  if (cfg.elevation_scale[cam])
+    return static_cast<int32_t>(int64_t{cfg.elevation_scale[cam][u]} << (30 - fx::kElevationScaleFrac));
+  const CameraGeometry& g = cfg.cam[cam];
+  const EdgeOffsetQ15* lens = cfg.edge_offsets[cam];
+  const int64_t mid = (int64_t{edge_yaw(g, lens, u)} + edge_yaw(g, lens, static_cast<uint16_t>(u + 1))) / 2;
+  const int64_t a = mid - g.axis_yaw;
+  if (a >= fx::kPiQ28 / 2 || a <= -(fx::kPiQ28 / 2)) return 0;
+  const int32_t c = fx::cos_q30(static_cast<AngleQ28>(a));
+  return c > 0 ? c : 0;
+}
+
+// Both cameras' mean, Q1.30; 0 where either turns a column to 90 deg.
+int32_t mean_column_cos_q30(const EstimatorConfig& cfg, uint16_t u) {
+  const int32_t c0 = column_cos_q30(cfg, 0, u);
+  const int32_t c1 = column_cos_q30(cfg, 1, u);
+  return c0 > 0 && c1 > 0 ? static_cast<int32_t>((int64_t{c0} + c1) / 2) : 0;
+}
+
+// The common elevation band (kernel_bank.hpp), one for both cameras (their
+// column cos(a_u) averaged: equal for twin cameras, whatever their
+// misalignment, since a_u is from each camera's own axis), with square
+// pixels: the column that sees the narrowest band, (H/2) cos(a_min) / f in
+// tan E, sets it. Column u then sums b_u = (H/2) cos(a_min) / cos(a_u) rows
+// either side of the centre row (Q8 rows). False when a band would be under
+// two rows (a line scan, or a lens so wide that the centre column keeps
+// almost nothing): every column then sums all rows, unweighted.
+bool build_band(const EstimatorConfig& cfg, ColumnBand& band) {
+  if (cfg.height < 2 || kBandColumns == 1) return false;
+  int32_t cos_min = int32_t{1} << 30;
+  for (uint16_t u = 0; u < cfg.width; ++u) cos_min = std::min(cos_min, mean_column_cos_q30(cfg, u));
+  if (cos_min <= 0) return false;
+  const int64_t half_q8 = int64_t{cfg.height} * 128;
+  for (uint16_t u = 0; u < cfg.width && u < kBandColumns; ++u) {
+    const int64_t c = mean_column_cos_q30(cfg, u);
+    int64_t b_q8 = (half_q8 * cos_min + c / 2) / c;  // c >= cos_min > 0
+    if (b_q8 > half_q8) b_q8 = half_q8;
+    if (b_q8 < 256) return false;
+    const int64_t excluded_q8 = half_q8 - b_q8;
+    const int64_t first = (excluded_q8 + 255) >> 8;
+    band.first[u] = static_cast<uint8_t>(first);
+    band.edge_q8[u] = static_cast<uint8_t>(first * 256 - excluded_q8);
+  }
+  return true;
+}
+
 // Raw column integrals, in sigma units, Q3.28, written into the tables'
 // storage before quantisation (no scratch memory: the edges are computed as
-// they are needed, so no edge table is kept in RAM):
+// they are needed, so no edge table is kept in RAM), weighted by cos(a_u)
+// when banded:
 //   K = Int phi_n(s) ds,  D = -Int phi_(n+1)(s) ds,  T = -Int phi_(n+3)(s) ds
-void integrate(const CameraGeometry& g, const EdgeOffsetQ15* lens, uint16_t width, int64_t centre,
-               const KernelSpec& k, KernelTable* kk, KernelTable* dd, KernelTable* tt) {
+void integrate(const EstimatorConfig& cfg, int cam, int64_t centre, bool banded, const KernelSpec& k,
+               KernelTable* kk, KernelTable* dd, KernelTable* tt) {
+  const CameraGeometry& g = cfg.cam[cam];
+  const EdgeOffsetQ15* lens = cfg.edge_offsets[cam];
+  const uint16_t width = cfg.width;
   int64_t next = edge_yaw(g, lens, 0);
   for (uint16_t u = 0; u < width; ++u) {
     const int64_t lo = next, hi = edge_yaw(g, lens, static_cast<uint16_t>(u + 1));
     next = hi;
+    const int64_t cos_u = banded ? column_cos_q30(cfg, cam, u) : int64_t{1} << 30;
     int64_t acc_k = 0, acc_d = 0, acc_t = 0;
     for (int j = 0; j < kPoints; ++j) {
       const int64_t psi = lo + (hi - lo) * j / kSimpsonIntervals;
@@ -81,9 +138,12 @@ void integrate(const CameraGeometry& g, const EdgeOffsetQ15* lens, uint16_t widt
       acc_t += wj * pn3;  // Q27
     }
     const int64_t ds = fx::div_q(hi > lo ? hi - lo : lo - hi, k.sigma, 24);  // Q24
-    if (kk) kk->w[u] = fx::sat32(fx::shr_round(acc_k * ds, 26) / kSimpsonWeightSum);
-    if (dd) dd->w[u] = fx::sat32(-(fx::shr_round(acc_d * ds, 26) / kSimpsonWeightSum));
-    if (tt) tt->w[u] = fx::sat32(-(fx::shr_round(acc_t * ds, 24) / kSimpsonWeightSum));  // Q3.27
+    // Saturated to int32 first (as the tables are stored), so that the Q30
+    // weight's product stays below 2^61; cos_u = 2^30 leaves v as it was.
+    const auto weighted = [cos_u](int64_t v) { return fx::sat32(fx::shr_round(int64_t{fx::sat32(v)} * cos_u, 30)); };
+    if (kk) kk->w[u] = weighted(fx::shr_round(acc_k * ds, 26) / kSimpsonWeightSum);
+    if (dd) dd->w[u] = weighted(-(fx::shr_round(acc_d * ds, 26) / kSimpsonWeightSum));
+    if (tt) tt->w[u] = weighted(-(fx::shr_round(acc_t * ds, 24) / kSimpsonWeightSum));  // Q3.27
   }
   for (uint16_t u = width; u < kMaxColumns; ++u) {
     if (kk) kk->w[u] = 0;
@@ -150,12 +210,12 @@ uint64_t sum_sq_q48(const KernelTable& t, uint16_t width) {
 // that F1 - F0 compares like with like. unit_l1: the normaliser (sum K = 1);
 // otherwise sum K^2 = 1/width, which gives every kernel the same pixel-noise
 // variance, so that the least squares over kernels weighs them fairly.
-void build_kernel(const EstimatorConfig& cfg, int64_t centre,
+void build_kernel(const EstimatorConfig& cfg, int64_t centre, bool banded,
                   const KernelSpec& spec, bool unit_l1, KernelTable* k_out[2],
                   KernelTable* d_out[2], KernelTable16* t_out[2]) {
   const uint16_t w = cfg.width;
   for (int i = 0; i < 2; ++i)
-    integrate(cfg.cam[i], cfg.edge_offsets[i], w, centre, spec, k_out[i], d_out[i], nullptr);
+    integrate(cfg, i, centre, banded, spec, k_out[i], d_out[i], nullptr);
   int64_t norm = 0;  // Q28
   if (unit_l1) {
     norm = (sum(*k_out[0], w) + sum(*k_out[1], w)) / 2;
@@ -176,7 +236,7 @@ void build_kernel(const EstimatorConfig& cfg, int64_t centre,
       // T in a scratch table, then narrowed to 16 bits (a second pass over
       // the columns at configuration time saves a q31 table per kernel).
       KernelTable raw;
-      integrate(cfg.cam[i], cfg.edge_offsets[i], w, centre, spec, nullptr, nullptr, &raw);
+      integrate(cfg, i, centre, banded, spec, nullptr, nullptr, &raw);
       quantise16(norm_sigma3, w, raw, *t_out[i]);
     }
     quantise(norm, w, *k_out[i]);
@@ -203,22 +263,29 @@ void column_edge_yaws(const CameraGeometry& g, const EdgeOffsetQ15* offsets, uin
 void build_kernel_bank(const EstimatorConfig& cfg, KernelBank& bank) {
   bank.width = cfg.width;
   bank.count = cfg.kernel_count;
+  bank.banded = (cfg.options & kOptionElevationBand) != 0 && build_band(cfg, bank.band);
   const int64_t centre = (int64_t{cfg.cam[0].axis_yaw} + cfg.cam[1].axis_yaw) / 2;
   KernelTable* k_out[2] = {&bank.cam[0].norm, &bank.cam[1].norm};
   KernelTable* d_out[2] = {&bank.cam[0].norm_d, &bank.cam[1].norm_d};
   KernelTable16* none[2] = {nullptr, nullptr};
-  build_kernel(cfg, centre, cfg.normaliser, true, k_out, d_out, none);
+  build_kernel(cfg, centre, bank.banded, cfg.normaliser, true, k_out, d_out, none);
   for (int k = 0; k < cfg.kernel_count; ++k) {
     KernelTable* kk[2] = {&bank.cam[0].k[k], &bank.cam[1].k[k]};
     KernelTable* dd[2] = {&bank.cam[0].d[k], &bank.cam[1].d[k]};
     KernelTable16* tt[2] = {&bank.cam[0].t[k], &bank.cam[1].t[k]};
-    build_kernel(cfg, centre, cfg.kernels[k], false, kk, dd, tt);
+    build_kernel(cfg, centre, bank.banded, cfg.kernels[k], false, kk, dd, tt);
   }
   for (int k = 0; k < cfg.kernel_count; ++k) bank.sigma[k] = cfg.kernels[k].sigma;
+  // F of a uniform image: each column sums its band's rows of one value.
   for (int i = 0; i < 2; ++i) {
-    const int64_t n = sum(bank.cam[i].norm, cfg.width);
+    const auto uniform_dot = [&](const KernelTable& t) {
+      int64_t s = 0;  // |w| < 2^31, rows < 2^15 in Q8, 160 columns: < 2^54
+      for (uint16_t u = 0; u < cfg.width; ++u) s += int64_t{t.w[u]} * band_rows_q8(bank.column_band(), cfg.height, u);
+      return s;
+    };
+    const int64_t n = uniform_dot(bank.cam[i].norm);
     for (int k = 0; k < cfg.kernel_count; ++k)
-      bank.dc[i][k] = fx::div_q(sum(bank.cam[i].k[k], cfg.width), n > 0 ? n : 1,
+      bank.dc[i][k] = fx::div_q(uniform_dot(bank.cam[i].k[k]), n > 0 ? n : 1,
                                 fx::kValueFrac + bank.cam[i].norm.exp - bank.cam[i].k[k].exp);
   }
 }

@@ -6,8 +6,8 @@
 namespace lumavel {
 namespace {
 
-// sum_u w[u] * c[u]: q31 weights times 15-bit sums, 64-bit accumulator
-// (|sum| < 2^31 * 2^15 * 160 < 2^54).
+// sum_u w[u] * c[u]: q31 weights times 23-bit Q8 sums, 64-bit accumulator
+// (|sum| < 2^31 * 2^23 * 160 < 2^62).
 int64_t dot(const KernelTable& t, const ColumnProfile& p) {
   int64_t acc = 0;
   for (uint16_t u = 0; u < p.width; ++u) acc += int64_t{t.w[u]} * p.sum[u];
@@ -15,8 +15,8 @@ int64_t dot(const KernelTable& t, const ColumnProfile& p) {
 }
 
 int64_t dot(const KernelTable16& t, const ColumnProfile& p) {
-  int64_t acc = 0;
-  for (uint16_t u = 0; u < p.width; ++u) acc += int32_t{t.w[u]} * int32_t{p.sum[u]};
+  int64_t acc = 0;  // 16-bit weights: |sum| < 2^15 * 2^23 * 160 < 2^46
+  for (uint16_t u = 0; u < p.width; ++u) acc += int64_t{t.w[u]} * p.sum[u];
   return acc;
 }
 

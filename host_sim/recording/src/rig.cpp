@@ -50,6 +50,7 @@ CameraModel derive_camera(const CameraSensor& c, int work_width, const std::stri
   m.axis_yaw = std::atan2(ez[1], ez[0]);
   m.u_sign = cross_z > 0 ? 1 : -1;
   m.edges = undistorted_column_edges(c, work_width, m.axis_yaw, m.u_sign);
+  m.elevation_scale = lens_elevation_scales(c, work_width);
   return m;
 }
 
@@ -115,19 +116,84 @@ void check_lens_invertible(const CameraSensor& c, const std::string& yaml_path) 
   }
 }
 
+namespace {
+
+// A distorted column is not a meridian: its rows look at different yaws and
+// at elevations a pinhole's would not. Both are taken over the elevation band
+// that every column sees (the band the firmware sums, kernel_bank.hpp),
+// |tan E| <= T, on the sensor's native pixels.
+class LensColumns {
+ public:
+  LensColumns(const CameraSensor& c, int work_width)
+      : c_(c), lens_(lens_of(c)), scale_(static_cast<double>(c.width) / static_cast<double>(work_width)) {
+    // T: the least |tan E| a column reaches at the image's top or bottom edge.
+    for (int e = 0; e <= 2 * work_width; ++e) {  // every working edge and centre
+      const double u = e * scale_ / 2 - 0.5;
+      tan_band_ = std::min({tan_band_, -tan_e(u, -0.5), tan_e(u, c.height - 0.5)});
+    }
+  }
+  // Mean yaw from the axis (rad, image u positive) of native column position u's points in the band.
+  double mean_yaw(double u) const {
+    constexpr int kSamples = 64;
+    const double top = row_at(u, -tan_band_), bottom = row_at(u, tan_band_);
+    double sum = 0;
+    for (int j = 0; j < kSamples; ++j) sum += yaw(u, top + (j + 0.5) * (bottom - top) / kSamples);
+    return sum / kSamples;
+  }
+  // f d(tan E)/d(row) averaged over the band: the band's span over its rows.
+  double elevation_scale(double u) const {
+    return 2 * tan_band_ * c_.fv / (row_at(u, tan_band_) - row_at(u, -tan_band_));
+  }
+  double working_edge(int u) const { return u * scale_ - 0.5; }
+  double working_centre(int u) const { return (u + 0.5) * scale_ - 0.5; }
+
+ private:
+  void undistort(double u, double v, double& x, double& y) const {
+    lens_.undistort((u - c_.cu) / c_.fu, (v - c_.cv) / c_.fv, x, y);  // judged by check_lens_invertible
+  }
+  double tan_e(double u, double v) const {
+    double x = 0, y = 0;
+    undistort(u, v, x, y);
+    return y / std::sqrt(1 + x * x);
+  }
+  double yaw(double u, double v) const {
+    double x = 0, y = 0;
+    undistort(u, v, x, y);
+    return std::atan(x);
+  }
+  // The row (native, fractional) where column position u sees tan E = t: by
+  // bisection, tan E rising down the column (the lens does not fold it).
+  double row_at(double u, double t) const {
+    double lo = -0.5, hi = c_.height - 0.5;
+    for (int i = 0; i < 50; ++i) {
+      const double mid = (lo + hi) / 2;
+      (tan_e(u, mid) < t ? lo : hi) = mid;
+    }
+    return (lo + hi) / 2;
+  }
+
+  const CameraSensor& c_;
+  LensDistortion lens_;
+  double scale_;
+  double tan_band_ = HUGE_VAL;
+};
+
+}  // namespace
+
 std::vector<double> undistorted_column_edges(const CameraSensor& c, int work_width, double axis_yaw, int u_sign) {
   if (!lens_applies(c)) return {};
-  const LensDistortion lens = lens_of(c);
+  const LensColumns lc(c, work_width);
   std::vector<double> edges(static_cast<size_t>(work_width) + 1);
-  const double scale = static_cast<double>(c.width) / static_cast<double>(work_width);
-  for (int u = 0; u <= work_width; ++u) {
-    // Working edge u on the sensor: native pixel i spans [i - 0.5, i + 0.5].
-    const double xd = (u * scale - 0.5 - c.cu) / c.fu, yd = 0;  // on the principal row
-    double x = 0, y = 0;
-    lens.undistort(xd, yd, x, y);  // load_recording judged the inverse (check_lens_invertible)
-    edges[static_cast<size_t>(u)] = axis_yaw + u_sign * std::atan(x);
-  }
+  for (int u = 0; u <= work_width; ++u) edges[static_cast<size_t>(u)] = axis_yaw + u_sign * lc.mean_yaw(lc.working_edge(u));
   return edges;
+}
+
+std::vector<double> lens_elevation_scales(const CameraSensor& c, int work_width) {
+  if (!lens_applies(c)) return {};
+  const LensColumns lc(c, work_width);
+  std::vector<double> scales(static_cast<size_t>(work_width));
+  for (int u = 0; u < work_width; ++u) scales[static_cast<size_t>(u)] = lc.elevation_scale(lc.working_centre(u));
+  return scales;
 }
 
 double gyro_gap_s(double imu_period_s) { return std::max(EstimatorSettings{}.gyro_gap, 2.5 * imu_period_s); }

@@ -61,10 +61,15 @@ void integrate(const Eigen::VectorXd& edges, double centre, const KernelModel& k
   }
 }
 
-void build_kernel(const EstimatorSettings& s, const Eigen::VectorXd (&edges)[2], double centre,
-                  const KernelModel& k, bool unit_l1, Eigen::VectorXd* kout[2],
+void build_kernel(const EstimatorSettings& s, const Eigen::VectorXd (&edges)[2], const FloatColumnBand& band,
+                  double centre, const KernelModel& k, bool unit_l1, Eigen::VectorXd* kout[2],
                   Eigen::VectorXd* dout[2], Eigen::VectorXd* tout[2]) {
-  for (int i = 0; i < 2; ++i) integrate(edges[i], centre, k, *kout[i], *dout[i], *tout[i]);
+  for (int i = 0; i < 2; ++i) {
+    integrate(edges[i], centre, k, *kout[i], *dout[i], *tout[i]);
+    kout[i]->array() *= band.cos[i].array();
+    dout[i]->array() *= band.cos[i].array();
+    tout[i]->array() *= band.cos[i].array();
+  }
   const double norm = unit_l1 ? (kout[0]->sum() + kout[1]->sum()) / 2
                               : std::sqrt(s.width * (kout[0]->squaredNorm() + kout[1]->squaredNorm()) / 2);
   for (int i = 0; i < 2; ++i) {
@@ -79,12 +84,13 @@ void build_kernel(const EstimatorSettings& s, const Eigen::VectorXd (&edges)[2],
 FloatBank build_float_bank(const EstimatorSettings& s) {
   FloatBank b;
   for (int i = 0; i < 2; ++i) b.edge[i] = column_edges(s.cam[i], s.width);
+  b.band = build_float_column_band(s, b.edge);
   const double centre = (s.cam[0].axis_yaw + s.cam[1].axis_yaw) / 2;
   Eigen::VectorXd* kn[2] = {&b.cam[0].norm, &b.cam[1].norm};
   Eigen::VectorXd* dn[2] = {&b.cam[0].norm_d, &b.cam[1].norm_d};
   Eigen::VectorXd unused[2];
   Eigen::VectorXd* tn[2] = {&unused[0], &unused[1]};
-  build_kernel(s, b.edge, centre, s.normaliser, true, kn, dn, tn);
+  build_kernel(s, b.edge, b.band, centre, s.normaliser, true, kn, dn, tn);
   const size_t n = s.kernels.size();
   for (auto& c : b.cam) {
     c.k.resize(n);
@@ -95,11 +101,14 @@ FloatBank build_float_bank(const EstimatorSettings& s) {
     Eigen::VectorXd* kk[2] = {&b.cam[0].k[k], &b.cam[1].k[k]};
     Eigen::VectorXd* dd[2] = {&b.cam[0].d[k], &b.cam[1].d[k]};
     Eigen::VectorXd* tt[2] = {&b.cam[0].t[k], &b.cam[1].t[k]};
-    build_kernel(s, b.edge, centre, s.kernels[k], false, kk, dd, tt);
+    build_kernel(s, b.edge, b.band, centre, s.kernels[k], false, kk, dd, tt);
   }
-  for (auto& c : b.cam) {
+  // F of a uniform image: each column sums its band's rows of one value.
+  for (int i = 0; i < 2; ++i) {
+    FloatKernels& c = b.cam[i];
+    const Eigen::VectorXd& rows = b.band.rows;
     c.dc.resize(static_cast<Eigen::Index>(n));
-    for (size_t k = 0; k < n; ++k) c.dc[static_cast<Eigen::Index>(k)] = c.k[k].sum() / c.norm.sum();
+    for (size_t k = 0; k < n; ++k) c.dc[static_cast<Eigen::Index>(k)] = c.k[k].dot(rows) / c.norm.dot(rows);
   }
   return b;
 }
@@ -194,9 +203,7 @@ FloatMeasurement measure_float(const FloatBank& bank, const EstimatorSettings& s
   Eigen::VectorXd cols[2];
   for (int i = 0; i < 2; ++i) {
     Eigen::VectorXd& col = cols[i];
-    col = Eigen::VectorXd::Zero(w);
-    for (int y = 0; y < h; ++y)
-      for (int u = 0; u < w; ++u) col[u] += img[i][y * w + u];
+    col = float_column_profile(bank.band, img[i], w, h);
     for (int y = 0; y < h; y += params::kClipRowStep)
       for (int u = 0; u < w; ++u) {
         const uint8_t p = img[i][y * w + u];
@@ -226,8 +233,10 @@ FloatMeasurement measure_float(const FloatBank& bank, const EstimatorSettings& s
       m.balance[j] = balance->offset(j);
       f[1][j] -= m.balance[j];
     }
-  // Sums of integers: exact in double, so equal exactly where the core's are.
-  m.no_stereo = cols[0] == cols[1] && (cols[0].array() != cols[0][0]).any();
+  // Same images, same row weights: equal exactly where the core's sums are.
+  // Flat: every sum in proportion to its rows (exact products: 23 x 16 bits).
+  const Eigen::VectorXd& rows = bank.band.rows;
+  m.no_stereo = cols[0] == cols[1] && (cols[0].array() * rows[0] != rows.array() * cols[0][0]).any();
   m.mid = (f[0] + f[1]) / 2;
   m.diff = f[1] - f[0];
   m.rot = (r[0] + r[1]) / 2;

@@ -135,13 +135,17 @@ EstimatorConfig to_fixed_config(const EstimatorSettings& s) {
   c.saturated_permille = static_cast<uint16_t>(s.saturated_permille);
   c.options = static_cast<uint8_t>((s.baseline_correction ? kOptionBaselineCorrection : 0) |
                                    (s.gyro_offset_learning ? kOptionGyroOffsetLearning : 0) |
-                                   (s.photometric_balance ? kOptionPhotometricBalance : 0));
+                                   (s.photometric_balance ? kOptionPhotometricBalance : 0) |
+                                   (s.elevation_band ? kOptionElevationBand : 0));
   c.still_distance = static_cast<LengthQ24>(quantise(s.still_distance, fx::kLengthFrac, {"still distance", "still_distance", "m"}));
   c.still_min_us = micros(s.still_min, {"still duration", "still_min", "s"});
   std::vector<EdgeOffsetQ15> lens[2];
+  std::vector<ElevationScaleQ14> scale[2];
   for (int i = 0; i < 2; ++i) {
     lens[i] = to_fixed_edge_offsets(s.cam[i], c.cam[i], s.width);
     c.edge_offsets[i] = lens[i].empty() ? nullptr : lens[i].data();
+    scale[i] = to_fixed_elevation_scale(s.cam[i], s.width);
+    c.elevation_scale[i] = scale[i].empty() ? nullptr : scale[i].data();
   }
   const ConfigError e = validate(c);
   if (e != ConfigError::kOk) {
@@ -149,6 +153,7 @@ EstimatorConfig to_fixed_config(const EstimatorSettings& s) {
     throw SettingsError(setting, value + ": " + to_string(e));
   }
   c.edge_offsets[0] = c.edge_offsets[1] = nullptr;  // the vectors die here
+  c.elevation_scale[0] = c.elevation_scale[1] = nullptr;
   return c;
 }
 
@@ -176,6 +181,21 @@ std::vector<EdgeOffsetQ15> to_fixed_edge_offsets(const CameraModel& c, const Cam
     quantise(t.bad_offset_rad, fx::kEdgeOffsetFrac, {field.c_str(), "cam[].edges", "rad"}, INT16_MIN, INT16_MAX);
   }
   return std::move(t.offsets);
+}
+
+std::vector<ElevationScaleQ14> to_fixed_elevation_scale(const CameraModel& c, int width) {
+  std::vector<ElevationScaleQ14> out;
+  if (c.elevation_scale.empty()) return out;
+  if (c.elevation_scale.size() != static_cast<size_t>(width))
+    throw SettingsError("cam[].elevation_scale", "elevation-scale table has " + std::to_string(c.elevation_scale.size()) +
+                                                     " values for " + std::to_string(width) + " columns (want width)");
+  for (size_t u = 0; u < c.elevation_scale.size(); ++u) {
+    const std::string field = "elevation scale of column " + std::to_string(u);
+    out.push_back(static_cast<ElevationScaleQ14>(quantise(c.elevation_scale[u], fx::kElevationScaleFrac,
+                                                          {field.c_str(), "cam[].elevation_scale", ""}, 1,
+                                                          (2 << fx::kElevationScaleFrac) - 1)));
+  }
+  return out;
 }
 
 }  // namespace lumavel::host

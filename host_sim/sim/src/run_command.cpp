@@ -56,6 +56,7 @@ struct RunArgs {
   bool ignore_distortion = false;
   bool no_gyro_offset_learning = false;
   bool photometric_balance = false;
+  bool elevation_band = false;
 };
 
 // --hid-linger: seconds >= 0, or -1 for "until interrupted".
@@ -210,6 +211,7 @@ int run(const RunArgs& a) {
   options.ignore_distortion = a.ignore_distortion;
   options.gyro_offset_learning = !a.no_gyro_offset_learning;
   options.photometric_balance = a.photometric_balance;
+  options.elevation_band = a.elevation_band;
 
   std::unique_ptr<HidSender> hid;
   if (!a.hid.empty()) {
@@ -331,6 +333,10 @@ void add_run_command(cli::Tool& tool) {
               "first 4 m of travel and correct it (for cameras that are\n"
               "not photometric twins; experimental, off by default:\n"
               "docs/design.md)");
+  c->add_flag("--elevation-band", a->elevation_band,
+              "every column sums only the elevation band that all columns\n"
+              "see, so that turning wide cameras do not read as motion\n"
+              "(experimental, off by default: docs/design.md)");
   c->add_option("--plot", a->plot,
                 "plot file (default: REC_estimates.svg next to the -o file,\n"
                 "or in the current folder); written when the recording has\n"

@@ -6,16 +6,31 @@
 
 namespace lumavel {
 
+// The rows each column sums: the elevation band that every column sees
+// (built with the kernel tables, kernel_bank.hpp; one band for both cameras,
+// so that one image on both gives equal sums). Column u sums rows
+// first[u] .. height-1-first[u] whole, and rows first[u]-1 and height-first[u]
+// with weight edge_q8[u] / 256 (none when first[u] == 0). A line scan
+// (kMaxRows == 1) never bands: its arrays shrink to one entry.
+constexpr int kBandColumns = kMaxRows > 1 ? kMaxColumns : 1;
+struct ColumnBand {
+  uint8_t first[kBandColumns];
+  uint8_t edge_q8[kBandColumns];
+};
+
 struct ColumnProfile {
-  uint16_t sum[kMaxColumns];  // sum over rows, <= 255 * kMaxRows < 2^15
+  // Row-weighted sums, Q8 (256 = one pixel of value 1):
+  // <= 255 * kMaxRows * 256 < 2^23.
+  uint32_t sum[kMaxColumns];
   uint16_t width;
   uint32_t clipped;           // pixels at 0 or 255 among the sampled rows
   uint32_t clip_sampled;      // pixels inspected for clipping (every 8th row)
 };
 
-// Also counts clipped pixels (0 or 255) on every 8th row for the saturation flag.
+// band == nullptr: every column sums all rows. Also counts clipped pixels
+// (0 or 255) on every 8th row, band or not, for the saturation flag.
 void column_profile(const uint8_t* pixels, uint16_t width, uint16_t height, uint16_t stride,
-                    ColumnProfile& out);
+                    const ColumnBand* band, ColumnProfile& out);
 
 // Both cameras delivered the same textured image (one frame twice: a wiring
 // or driver fault): every column sum equal, and not all columns alike. Two
@@ -23,6 +38,12 @@ void column_profile(const uint8_t* pixels, uint16_t width, uint16_t height, uint
 // rig that is not perfectly aligned, their different views) makes some sum
 // differ, however far and weak the scene; a far scene is low texture, which
 // rms(F1 - F0) measures. A flat profile is left to low texture as well.
-bool same_textured_profile(const ColumnProfile& a, const ColumnProfile& b);
+// Flat: every column's sum in proportion to the rows it sums (band, as
+// given to column_profile; nullptr: all rows).
+bool same_textured_profile(const ColumnProfile& a, const ColumnProfile& b, const ColumnBand* band, uint16_t height);
+
+// Rows column u sums, Q8: its whole rows and its two fractional ones
+// (height * 256 when band == nullptr).
+uint32_t band_rows_q8(const ColumnBand* band, uint16_t height, uint16_t u);
 
 }  // namespace lumavel

@@ -48,14 +48,22 @@ struct EstimatorConfig {
   // kernel tables from it (neither it nor the edges are kept); nullptr =
   // pinhole from fu, cu.
   const EdgeOffsetQ15* edge_offsets[2];
+  // Optional with a lens table: width values per camera, each column's
+  // elevation scale (fixed.hpp), which sets the rows it sums and its tables'
+  // weight (kernel_bank.hpp): a distorted column's rows do not see the
+  // elevations a pinhole's would. Read by configure() only, like
+  // edge_offsets; nullptr = the pinhole's cos(a_u) from the edges.
+  const ElevationScaleQ14* elevation_scale[2];
 };
 
 enum ConfigOption : uint8_t {
   kOptionBaselineCorrection = 1u << 0,  // finite-baseline correction (x / tan x), see velocity_observer.hpp
   kOptionGyroOffsetLearning = 1u << 1,  // learn the gyro offset at standstill, see gyro_offset.hpp
   kOptionPhotometricBalance = 1u << 2,  // learn and correct cam1's response to cam0's, see photometric_balance.hpp
+  kOptionElevationBand = 1u << 3,       // every column sums one elevation band (kernel_bank.hpp); experimental, off
 };
-constexpr uint8_t kKnownOptions = kOptionBaselineCorrection | kOptionGyroOffsetLearning | kOptionPhotometricBalance;
+constexpr uint8_t kKnownOptions =
+    kOptionBaselineCorrection | kOptionGyroOffsetLearning | kOptionPhotometricBalance | kOptionElevationBand;
 
 enum class ConfigError : uint8_t {
   kOk = 0,

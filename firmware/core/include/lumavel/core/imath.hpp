@@ -15,6 +15,8 @@ int32_t exp_neg_q27(int64_t x_q27);
 // atan2 with 32-bit arithmetic only (per-frame use on small cores): |y|, |x|
 // any int32; 24 CORDIC steps, |error| <= 2e-7 rad.
 AngleQ28 atan2_fast(int32_t y, int32_t x);
+// cos(a) for any Q3.28 angle -> Q1.30. |error| <= 3e-9 (rotation CORDIC, 32 steps).
+int32_t cos_q30(AngleQ28 a);
 // floor(sqrt(v)).
 uint32_t isqrt64(uint64_t v);
 uint32_t isqrt32(uint32_t v);

@@ -5,16 +5,28 @@
 // Geometry: kernel k is phi_k(psi - c), a Gaussian derivative of order n_k
 // and scale sigma_k in body-frame yaw psi, centred on c = the mean of the two
 // optical-axis yaws. A pinhole column is a meridian: all its pixels share one
-// body yaw, and its sum over rows moves rigidly with the image when the camera
-// yaws (exactly so for vertically uniform texture). Each table integrates phi
-// over the true yaw interval of each column (pinhole edges, atan), so that
-// edge columns, which span less yaw than central ones (atan), weigh less:
-//     K[u] =  Int_{column u} phi(psi - c) dpsi
-//     D[u] = -Int_{column u} phi'(psi - c) dpsi     = phi(start) - phi(end)
-//     T[u] = -Int_{column u} phi'''(psi - c) dpsi
+// body yaw a_u (from the axis). Its row y sees elevation E with
+// tan E = y cos(a_u) / f, so a column's sum over rows |y| <= b is
+// f / cos(a_u) * Int I(psi, E) d(tan E) over |tan E| <= b cos(a_u) / f. Two
+// things in it are fixed to the camera, not to the scene, and break the
+// rotation identity on wide cameras: the factor 1 / cos(a_u) and the band
+// edge. So every column sums only the elevation band that all columns see
+// (b_u = (H/2) cos(a_min) / cos(a_u), fractional rows at its edges: the
+// ColumnBand, one for both cameras with their cos(a_u) averaged), and every
+// table is weighted by cos(a_u): then B is an integral of the scene alone,
+// for any texture, and moves rigidly with it. Through a lens, cos(a_u) is
+// the host's elevation scale of the column (EstimatorConfig::elevation_scale:
+// f d(tan E)/d(row) over the band, which a pinhole's cos(a_u) is).
+// Each table integrates phi over the true yaw interval of each column
+// (pinhole edges, atan), so that edge columns, which span less yaw than
+// central ones, weigh less:
+//     K[u] =  cos(a_u) Int_{column u} phi(psi - c) dpsi
+//     D[u] = -cos(a_u) Int_{column u} phi'(psi - c) dpsi   = cos(a_u) (phi(start) - phi(end))
+//     T[u] = -cos(a_u) Int_{column u} phi'''(psi - c) dpsi
+// (cos(a_u) = 1 when the bank is not banded).
 // D is then the exact rotation derivative of B for a piecewise-constant profile.
-// (A cos(psi - axis) "solid angle" weight was tried: it is fixed to the camera,
-// not to the scene, and broke the rotation identity by 5-13 % on odd kernels.)
+// (The cos weight alone, over full columns, was tried first: it broke the
+// identity by 5-13 % on odd kernels, because the band edge still moved.)
 // Centring both cameras on the same body yaw compensates the misalignment
 // exactly (paper eq. 8 does it to first order).
 //
@@ -24,6 +36,7 @@
 #pragma once
 #include <cstdint>
 
+#include "lumavel/core/column_profile.hpp"
 #include "lumavel/core/config.hpp"
 #include "lumavel/core/fixed.hpp"
 #include "lumavel/core/limits.hpp"
@@ -54,6 +67,9 @@ struct CameraKernels {
 struct KernelBank {
   uint16_t width;
   uint8_t count;
+  bool banded;      // false: every column sums all rows (line scans, bands under 2 rows)
+  ColumnBand band;  // both cameras', when banded
+  const ColumnBand* column_band() const { return banded ? &band : nullptr; }
   CameraKernels cam[2];
   ValueQ28 dc[2][kMaxKernels];  // F of a uniform image (sum K / sum N), per camera
   AngleQ28 sigma[kMaxKernels];

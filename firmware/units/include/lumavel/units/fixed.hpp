@@ -30,6 +30,12 @@
 //                                                                         column at 40 columns / 60 deg, 0.2 %
 //                                                                         at 128; held to the fixed-vs-float
 //                                                                         V budget by test_fixed_vs_float
+//   ElevationScaleQ14 uint16 Q1.14 (0, 2)              6.1e-5            a lens column's elevation scale,
+//                                                                         f d(tan E)/d(row) over the common
+//                                                                         band (cos(a_u) for a pinhole);
+//                                                                         sets its band and table weight
+//                                                                         (kernel_bank.hpp). Rounding 3e-5
+//                                                                         relative, below the tables' own
 //
 // Every conversion that can overflow saturates and reports it (see sat32).
 #pragma once
@@ -48,6 +54,7 @@ using SlopeQ20 = int32_t;
 using PixelQ16 = int32_t;
 using CurvQ12 = int32_t;
 using EdgeOffsetQ15 = int16_t;
+using ElevationScaleQ14 = uint16_t;
 using FracQ16 = int32_t;
 using ScaleQ24 = int32_t;
 using AccelQ16 = int32_t;
@@ -66,6 +73,7 @@ constexpr int kSlopeFrac = 20;
 constexpr int kPixelFrac = 16;
 constexpr int kCurvFrac = 12;
 constexpr int kEdgeOffsetFrac = 15;
+constexpr int kElevationScaleFrac = 14;
 constexpr int kFracFrac = 16;
 constexpr int kScaleFrac = 24;
 constexpr int kAccelFrac = 16;

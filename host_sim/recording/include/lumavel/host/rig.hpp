@@ -25,15 +25,20 @@ WorkingSize default_working_size(const Recording& rec);
 CameraModel derive_camera(const CameraSensor& c, int work_width, const std::string& yaml_path);
 
 // Body yaw of the working columns' edges through the sensor's
-// radial-tangential distortion, inverted on the principal row (empty when the
-// coefficients are all zero: the pinhole model applies).
+// radial-tangential distortion (empty when the coefficients are all zero:
+// the pinhole model applies).
 // Throws RecordingError naming the sensor.yaml when its radial-tangential
 // distortion cannot be inverted over the image (k1 = 1e10: no undistorted
 // point maps to the outer pixels) or folds the principal row's columns.
 // load_recording checks both cameras, so every command and engine refuses it.
 void check_lens_invertible(const CameraSensor& c, const std::string& yaml_path);
 
+// Each edge's yaw is the mean over the rows of the elevation band that every
+// column sees (a distorted column's rows look at different yaws).
 std::vector<double> undistorted_column_edges(const CameraSensor& c, int work_width, double axis_yaw, int u_sign);
+// Each working column's elevation scale through the lens (CameraModel::
+// elevation_scale); empty when the pinhole model applies.
+std::vector<double> lens_elevation_scales(const CameraSensor& c, int work_width);
 
 // The gyro gap for a gyro sampled every `imu_period_s`: the settings'
 // default, or 2.5 nominal periods for a slow gyro (as GapReport counts holes),

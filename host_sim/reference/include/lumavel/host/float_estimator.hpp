@@ -11,6 +11,7 @@
 #include "lumavel/host/float_photometric_balance.hpp"
 #include "lumavel/host/float_time_of_flight.hpp"
 #include "lumavel/host/float_velocity_fusion.hpp"
+#include "lumavel/host/float_column_band.hpp"
 #include "lumavel/host/settings.hpp"
 
 namespace lumavel::host {
@@ -25,6 +26,7 @@ struct FloatKernels {
 struct FloatBank {
   FloatKernels cam[2];
   Eigen::VectorXd edge[2];  // column edge yaws, width + 1
+  FloatColumnBand band;     // the rows each column sums, the tables' cos(a_u) weight
 };
 FloatBank build_float_bank(const EstimatorSettings& s);
 

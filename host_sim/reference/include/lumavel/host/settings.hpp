@@ -19,6 +19,10 @@ struct CameraModel {
   // Optional column-edge yaws (width + 1, rad) overriding the pinhole model
   // (lens distortion); empty = pinhole.
   std::vector<double> edges;
+  // Optional with edges: each column's elevation scale, f d(tan E)/d(row)
+  // over the common band (lumavel/units/fixed.hpp ElevationScaleQ14, width
+  // values); empty = the pinhole's cos of the column's yaw from the axis.
+  std::vector<double> elevation_scale;
 };
 
 struct KernelModel {
@@ -47,6 +51,9 @@ struct EstimatorSettings {
   // default: on, the day soak's twin splits the time of flight on 88 frames
   // (it allows 52) and leaves the V allowance on 42 (docs/design.md).
   bool photometric_balance = false;
+  // kOptionElevationBand: every column sums one elevation band (experimental,
+  // off: see docs/design.md, "Column profile").
+  bool elevation_band = false;
   double still_distance = config::spec(Q::kStillDistance).def;  // m: image change below this is standstill
   double still_min = config::spec(Q::kStillDuration).def;       // s of stillness before the offset is taken
 };
@@ -72,8 +79,9 @@ std::vector<KernelModel> default_kernels(double hfov);
 // Quantises to the firmware configuration. Throws SettingsError naming the
 // field, its value and the rule when a value does not fit its fixed-point
 // format or is out of the core's range (validate()). Column
-// edge tables are checked too but not attached (edge_offsets stay nullptr):
-// attach to_fixed_edge_offsets() of each camera before configure().
+// edge tables are checked too but not attached (edge_offsets and
+// elevation_scale stay nullptr): attach to_fixed_edge_offsets() and
+// to_fixed_elevation_scale() of each camera before configure().
 EstimatorConfig to_fixed_config(const EstimatorSettings& s);
 
 // A gyro rate (rad/s) as the firmware takes it: RateQ24, rounded half away
@@ -89,5 +97,9 @@ std::vector<AngleQ28> to_fixed_edges(const CameraModel& c, int width);
 // cam[i]). Empty for a pinhole camera; throws naming the edge whose
 // correction does not fit [-1, 1) rad.
 std::vector<EdgeOffsetQ15> to_fixed_edge_offsets(const CameraModel& c, const CameraGeometry& fixed, int width);
+
+// The camera's elevation scales as the firmware takes them (Q1.14; empty for
+// a pinhole camera); throws naming the column whose scale is outside (0, 2).
+std::vector<ElevationScaleQ14> to_fixed_elevation_scale(const CameraModel& c, int width);
 
 }  // namespace lumavel::host
