@@ -20,7 +20,8 @@ TEST(ColumnProfile, SumsEveryColumnWhateverTheWidth) {
     for (uint16_t x = 0; x < w; ++x) {
       unsigned s = 0;
       for (uint16_t y = 0; y < h; ++y) s += img[static_cast<size_t>(y * stride + x)];
-      LONGS_EQUAL(s * 256, p.sum[x]);  // Q8
+      LONGS_EQUAL(s, p.sum[x]);
+      CHECK_FALSE(p.q8);
     }
   }
 }
@@ -29,8 +30,13 @@ TEST(ColumnProfile, MaxSizeWhiteFrameDoesNotOverflow) {
   std::vector<uint8_t> img(static_cast<size_t>(kMaxColumns) * kMaxRows, 255);
   ColumnProfile p;
   column_profile(img.data(), kMaxColumns, kMaxRows, kMaxColumns, nullptr, p);
-  for (int x = 0; x < kMaxColumns; ++x) LONGS_EQUAL(255 * kMaxRows * 256, p.sum[x]);
+  for (int x = 0; x < kMaxColumns; ++x) LONGS_EQUAL(255 * kMaxRows, p.sum[x]);
   LONGS_EQUAL(p.clip_sampled, p.clipped);  // every sampled pixel is clipped
+  // Banded, Q8: the widest band (every row, whole) stays below 2^23.
+  ColumnBand band{};
+  column_profile(img.data(), kMaxColumns, kMaxRows, kMaxColumns, &band, p);
+  CHECK_TRUE(p.q8);
+  for (int x = 0; x < kMaxColumns; ++x) LONGS_EQUAL(255 * kMaxRows * 256, p.sum[x]);
 }
 
 TEST(ColumnProfile, CountsClippedOnSampledRows) {
@@ -49,7 +55,7 @@ TEST(ColumnProfile, LineScan) {
   for (int i = 0; i < 128; ++i) img[static_cast<size_t>(i)] = static_cast<uint8_t>(i);
   ColumnProfile p;
   column_profile(img.data(), 128, 1, 128, nullptr, p);
-  for (int i = 0; i < 128; ++i) LONGS_EQUAL(i * 256, p.sum[i]);
+  for (int i = 0; i < 128; ++i) LONGS_EQUAL(i, p.sum[i]);
 }
 
 // Each column sums its band: whole rows first..h-1-first, the two rows
@@ -74,6 +80,7 @@ TEST(ColumnProfile, SumsEachColumnsBandWithFractionalEdgeRows) {
         if (first > 0) s += band.edge_q8[x] * (unsigned{img[(first - 1) * stride + x]} + img[(h - first) * stride + x]);
         LONGS_EQUAL(s, p.sum[x]);
       }
+      CHECK_TRUE(p.q8);
     }
   }
 }

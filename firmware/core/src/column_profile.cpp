@@ -31,8 +31,9 @@ uint32_t clipped_in_word(uint32_t w) {
 // Sums of rows [from, to) of the four columns at p: two 16-bit lanes per
 // register (255 * 128 < 2^16), so each pixel costs about one load share and
 // one add. Word-aligned rows take the aligned path (one LDR per four pixels).
-void four_column_sums(const uint8_t* p, uint16_t from, uint16_t to, uint16_t stride, bool aligned,
-                      uint32_t out[4]) {
+// Inlined: a call per four columns costs more than the band's own work.
+__attribute__((always_inline)) inline void four_column_sums(const uint8_t* p, uint16_t from, uint16_t to,
+                                                             uint16_t stride, bool aligned, int32_t out[4]) {
   uint32_t even = 0, odd = 0;
   const uint8_t* q = p + uint32_t{from} * stride;
   const uint8_t* const end = p + uint32_t{to} * stride;
@@ -60,7 +61,8 @@ void four_column_sums(const uint8_t* p, uint16_t from, uint16_t to, uint16_t str
   }
   uint8_t probe[4] = {1, 0, 0, 0};
   const bool little = load_word(probe) == 1u;
-  const uint32_t lo_e = even & 0xFFFFu, hi_e = even >> 16, lo_o = odd & 0xFFFFu, hi_o = odd >> 16;
+  const int32_t lo_e = static_cast<int32_t>(even & 0xFFFFu), hi_e = static_cast<int32_t>(even >> 16);
+  const int32_t lo_o = static_cast<int32_t>(odd & 0xFFFFu), hi_o = static_cast<int32_t>(odd >> 16);
   if (little) {
     out[0] = lo_e; out[1] = lo_o; out[2] = hi_e; out[3] = hi_o;
   } else {
@@ -69,11 +71,11 @@ void four_column_sums(const uint8_t* p, uint16_t from, uint16_t to, uint16_t str
 }
 
 // Column c's sum of rows [from, height - from) narrowed to its band, in Q8.
-uint32_t to_band_q8(const uint8_t* col, uint32_t s, uint16_t from, uint16_t height, uint16_t stride,
+int32_t to_band_q8(const uint8_t* col, int32_t s, uint16_t from, uint16_t height, uint16_t stride,
                     uint16_t first, uint8_t edge_q8) {
   for (uint16_t r = from; r < first; ++r) s -= col[uint32_t{r} * stride] + col[uint32_t(height - 1 - r) * stride];
   s <<= 8;
-  if (first > 0) s += uint32_t{edge_q8} * (col[uint32_t(first - 1) * stride] + col[uint32_t(height - first) * stride]);
+  if (first > 0) s += int32_t{edge_q8} * (col[uint32_t(first - 1) * stride] + col[uint32_t(height - first) * stride]);
   return s;
 }
 
@@ -84,28 +86,28 @@ void column_profile(const uint8_t* pixels, uint16_t width, uint16_t height, uint
   // A line-scan build keeps no band (kBandColumns == 1).
   const ColumnBand* const band = kBandColumns > 1 ? band_in : nullptr;
   out.width = width;
+  out.q8 = band != nullptr;
   const bool aligned = ((reinterpret_cast<uintptr_t>(pixels) | stride) & 3u) == 0;
   uint16_t u = 0;
-  for (; u + 4 <= width; u += 4) {
-    // The rows all four columns need, then each narrowed to its own band.
-    uint16_t from = 0;
-    if (band) {
-      from = band->first[u];
+  if (band == nullptr) {
+    for (; u + 4 <= width; u += 4) four_column_sums(pixels + u, 0, height, stride, aligned, &out.sum[u]);
+  } else {
+    for (; u + 4 <= width; u += 4) {
+      // The rows all four columns need, then each narrowed to its own band.
+      uint16_t from = band->first[u];
       for (int c = 1; c < 4; ++c) from = band->first[u + c] < from ? band->first[u + c] : from;
+      four_column_sums(pixels + u, from, static_cast<uint16_t>(height - from), stride, aligned, &out.sum[u]);
+      for (int c = 0; c < 4; ++c)
+        out.sum[u + c] = to_band_q8(pixels + u + c, out.sum[u + c], from, height, stride, band->first[u + c],
+                                    band->edge_q8[u + c]);
     }
-    uint32_t s[4];
-    four_column_sums(pixels + u, from, static_cast<uint16_t>(height - from), stride, aligned, s);
-    for (int c = 0; c < 4; ++c)
-      out.sum[u + c] = band ? to_band_q8(pixels + u + c, s[c], from, height, stride, band->first[u + c],
-                                         band->edge_q8[u + c])
-                            : s[c] << 8;
   }
   for (; u < width; ++u) {
     const uint16_t first = band ? band->first[u] : 0;
-    uint32_t s = 0;
+    int32_t s = 0;
     const uint8_t* p = pixels + u;
     for (uint16_t r = first; r < height - first; ++r) s += p[uint32_t{r} * stride];
-    out.sum[u] = band ? to_band_q8(p, s, first, height, stride, first, band->edge_q8[u]) : s << 8;
+    out.sum[u] = band ? to_band_q8(p, s, first, height, stride, first, band->edge_q8[u]) : s;
   }
   uint32_t clipped = 0;
   for (uint16_t r = 0; r < height; r = static_cast<uint16_t>(r + kClipRowStep)) {
@@ -132,11 +134,11 @@ uint32_t band_rows_q8(const ColumnBand* band, uint16_t height, uint16_t u) {
 bool same_textured_profile(const ColumnProfile& a, const ColumnProfile& b, const ColumnBand* band, uint16_t height) {
   if (a.width != b.width || a.width == 0) return false;
   bool flat = true;
-  const uint64_t rows0 = band_rows_q8(band, height, 0);
+  const int64_t rows0 = band_rows_q8(band, height, 0);
   for (uint16_t u = 0; u < a.width; ++u) {
     if (a.sum[u] != b.sum[u]) return false;
     // sum < 2^23, rows < 2^16 in Q8: products < 2^39.
-    flat = flat && uint64_t{a.sum[u]} * rows0 == uint64_t{a.sum[0]} * band_rows_q8(band, height, u);
+    flat = flat && a.sum[u] * rows0 == int64_t{a.sum[0]} * band_rows_q8(band, height, u);
   }
   return !flat;
 }

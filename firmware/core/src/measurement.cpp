@@ -6,8 +6,8 @@
 namespace lumavel {
 namespace {
 
-// sum_u w[u] * c[u]: q31 weights times 23-bit Q8 sums, 64-bit accumulator
-// (|sum| < 2^31 * 2^23 * 160 < 2^62).
+// sum_u w[u] * c[u]: q31 weights times sums of at most 23 bits (Q8 with a
+// band), 32 x 32 -> 64 products (|sum| < 2^31 * 2^23 * 160 < 2^62).
 int64_t dot(const KernelTable& t, const ColumnProfile& p) {
   int64_t acc = 0;
   for (uint16_t u = 0; u < p.width; ++u) acc += int64_t{t.w[u]} * p.sum[u];
@@ -15,7 +15,15 @@ int64_t dot(const KernelTable& t, const ColumnProfile& p) {
 }
 
 int64_t dot(const KernelTable16& t, const ColumnProfile& p) {
-  int64_t acc = 0;  // 16-bit weights: |sum| < 2^15 * 2^23 * 160 < 2^46
+  int64_t acc = 0;
+#if defined(__ARM_ARCH_6M__)
+  // No 32 x 32 -> 64 multiply (M0/M0+): plain 15-bit sums keep 32-bit products.
+  if (!p.q8) {
+    for (uint16_t u = 0; u < p.width; ++u) acc += t.w[u] * p.sum[u];
+    return acc;
+  }
+#endif
+  // 16-bit weights times sums of at most 23 bits: |sum| < 2^15 * 2^23 * 160 < 2^46.
   for (uint16_t u = 0; u < p.width; ++u) acc += int64_t{t.w[u]} * p.sum[u];
   return acc;
 }

@@ -19,10 +19,13 @@ struct ColumnBand {
 };
 
 struct ColumnProfile {
-  // Row-weighted sums, Q8 (256 = one pixel of value 1):
-  // <= 255 * kMaxRows * 256 < 2^23.
-  uint32_t sum[kMaxColumns];
+  // Sums over rows: plain (<= 255 * kMaxRows < 2^15) without a band; with a
+  // band (q8), row-weighted in Q8 (256 = one pixel of value 1, < 2^23).
+  // Everything downstream is a ratio of two dot products of one profile, so
+  // the scale cancels; plain sums keep the cheaper 32-bit products.
+  int32_t sum[kMaxColumns];
   uint16_t width;
+  bool q8;
   uint32_t clipped;           // pixels at 0 or 255 among the sampled rows
   uint32_t clip_sampled;      // pixels inspected for clipping (every 8th row)
 };
@@ -43,7 +46,7 @@ void column_profile(const uint8_t* pixels, uint16_t width, uint16_t height, uint
 bool same_textured_profile(const ColumnProfile& a, const ColumnProfile& b, const ColumnBand* band, uint16_t height);
 
 // Rows column u sums, Q8: its whole rows and its two fractional ones
-// (height * 256 when band == nullptr).
+// (height * 256 when band == nullptr, for the plain sums' proportions).
 uint32_t band_rows_q8(const ColumnBand* band, uint16_t height, uint16_t u);
 
 }  // namespace lumavel
