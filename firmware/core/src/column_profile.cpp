@@ -33,7 +33,7 @@ uint32_t clipped_in_word(uint32_t w) {
 // one add. Word-aligned rows take the aligned path (one LDR per four pixels).
 // Inlined: a call per four columns costs more than the band's own work.
 __attribute__((always_inline)) inline void four_column_sums(const uint8_t* p, uint16_t from, uint16_t to,
-                                                             uint16_t stride, bool aligned, int32_t out[4]) {
+                                                             uint16_t stride, bool aligned, ColumnSum out[4]) {
   uint32_t even = 0, odd = 0;
   const uint8_t* q = p + uint32_t{from} * stride;
   const uint8_t* const end = p + uint32_t{to} * stride;
@@ -61,8 +61,8 @@ __attribute__((always_inline)) inline void four_column_sums(const uint8_t* p, ui
   }
   uint8_t probe[4] = {1, 0, 0, 0};
   const bool little = load_word(probe) == 1u;
-  const int32_t lo_e = static_cast<int32_t>(even & 0xFFFFu), hi_e = static_cast<int32_t>(even >> 16);
-  const int32_t lo_o = static_cast<int32_t>(odd & 0xFFFFu), hi_o = static_cast<int32_t>(odd >> 16);
+  const auto lo_e = static_cast<ColumnSum>(even & 0xFFFFu), hi_e = static_cast<ColumnSum>(even >> 16);
+  const auto lo_o = static_cast<ColumnSum>(odd & 0xFFFFu), hi_o = static_cast<ColumnSum>(odd >> 16);
   if (little) {
     out[0] = lo_e; out[1] = lo_o; out[2] = hi_e; out[3] = hi_o;
   } else {
@@ -98,8 +98,8 @@ void column_profile(const uint8_t* pixels, uint16_t width, uint16_t height, uint
       for (int c = 1; c < 4; ++c) from = band->first[u + c] < from ? band->first[u + c] : from;
       four_column_sums(pixels + u, from, static_cast<uint16_t>(height - from), stride, aligned, &out.sum[u]);
       for (int c = 0; c < 4; ++c)
-        out.sum[u + c] = to_band_q8(pixels + u + c, out.sum[u + c], from, height, stride, band->first[u + c],
-                                    band->edge_q8[u + c]);
+        out.sum[u + c] = static_cast<ColumnSum>(to_band_q8(pixels + u + c, out.sum[u + c], from, height, stride, band->first[u + c],
+                                    band->edge_q8[u + c]));
     }
   }
   for (; u < width; ++u) {
@@ -107,7 +107,7 @@ void column_profile(const uint8_t* pixels, uint16_t width, uint16_t height, uint
     int32_t s = 0;
     const uint8_t* p = pixels + u;
     for (uint16_t r = first; r < height - first; ++r) s += p[uint32_t{r} * stride];
-    out.sum[u] = band ? to_band_q8(p, s, first, height, stride, first, band->edge_q8[u]) : s;
+    out.sum[u] = static_cast<ColumnSum>(band ? to_band_q8(p, s, first, height, stride, first, band->edge_q8[u]) : s);
   }
   uint32_t clipped = 0;
   for (uint16_t r = 0; r < height; r = static_cast<uint16_t>(r + kClipRowStep)) {

@@ -125,7 +125,8 @@ void integrate(const EstimatorConfig& cfg, int cam, int64_t centre, bool banded,
   for (uint16_t u = 0; u < width; ++u) {
     const int64_t lo = next, hi = edge_yaw(g, lens, static_cast<uint16_t>(u + 1));
     next = hi;
-    const int64_t cos_u = banded ? column_cos_q30(cfg, cam, u) : int64_t{1} << 30;
+    // (kBandColumns: a line-scan build drops the band's code.)
+    const int64_t cos_u = kBandColumns > 1 && banded ? column_cos_q30(cfg, cam, u) : int64_t{1} << 30;
     int64_t acc_k = 0, acc_d = 0, acc_t = 0;
     for (int j = 0; j < kPoints; ++j) {
       const int64_t psi = lo + (hi - lo) * j / kSimpsonIntervals;

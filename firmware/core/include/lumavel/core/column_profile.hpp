@@ -1,6 +1,7 @@
 // Column sums of one working-resolution frame: the only per-pixel work.
 #pragma once
 #include <cstdint>
+#include <type_traits>
 
 #include "lumavel/core/limits.hpp"
 
@@ -18,12 +19,16 @@ struct ColumnBand {
   uint8_t edge_q8[kBandColumns];
 };
 
+// A line-scan build (no band) keeps 16-bit sums (255 * kMaxRows < 2^15):
+// the blue pill's stack stays what it was.
+using ColumnSum = std::conditional_t<(kBandColumns > 1), int32_t, int16_t>;
+
 struct ColumnProfile {
   // Sums over rows: plain (<= 255 * kMaxRows < 2^15) without a band; with a
   // band (q8), row-weighted in Q8 (256 = one pixel of value 1, < 2^23).
   // Everything downstream is a ratio of two dot products of one profile, so
   // the scale cancels; plain sums keep the cheaper 32-bit products.
-  int32_t sum[kMaxColumns];
+  ColumnSum sum[kMaxColumns];
   uint16_t width;
   bool q8;
   uint32_t clipped;           // pixels at 0 or 255 among the sampled rows
