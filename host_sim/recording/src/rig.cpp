@@ -85,8 +85,9 @@ void check_lens_invertible(const CameraSensor& c, const std::string& yaml_path) 
   const LensDistortion lens = lens_of(c);
   const std::string coeffs = "distortion_coefficients [" + g(lens.k[0]) + ", " + g(lens.k[1]) + ", " +
                              g(lens.k[2]) + ", " + g(lens.k[3]) + "]: ";
-  // Every pixel edge of the principal row (the columns' angles come from
-  // there), then the top and bottom rows' edges (the whole image).
+  // Every pixel edge of the principal row (its order is checked), then the
+  // top and bottom rows' edges (the whole image, over which the columns'
+  // angles and elevation scales are taken).
   double prev_x = -HUGE_VAL;
   for (const double v : {c.cv, -0.5, c.height - 0.5}) {
     for (int i = 0; i <= c.width; ++i) {

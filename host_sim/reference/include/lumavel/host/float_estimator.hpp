@@ -8,10 +8,10 @@
 #include <vector>
 
 #include "lumavel/host/engine.hpp"
+#include "lumavel/host/float_column_band.hpp"
 #include "lumavel/host/float_photometric_balance.hpp"
 #include "lumavel/host/float_time_of_flight.hpp"
 #include "lumavel/host/float_velocity_fusion.hpp"
-#include "lumavel/host/float_column_band.hpp"
 #include "lumavel/host/settings.hpp"
 
 namespace lumavel::host {
