@@ -13,12 +13,14 @@
 namespace lumavel::host::lens_test {
 namespace {
 
-Variant run_variant(const std::string& rec_dir, EngineKind engine, int w, int h, bool ignore_distortion) {
+Variant run_variant(const std::string& rec_dir, EngineKind engine, int w, int h, bool ignore_distortion,
+                    bool elevation_band) {
   const Recording rec = load_recording(rec_dir);
   RunOptions o;
   o.engine = engine;
   o.size = {w, h};
   o.ignore_distortion = ignore_distortion;
+  o.elevation_band = elevation_band;
   Variant v;
   v.track = run_recording(rec, o, nullptr).track;
   v.metrics = compute_metrics(v.track);
@@ -72,11 +74,11 @@ RenderedPair render_pair(const Render& r, const std::string& dir) {
   return p;
 }
 
-Comparison compare(const RenderedPair& p, EngineKind engine, int work_width, int work_height) {
+Comparison compare(const RenderedPair& p, EngineKind engine, int work_width, int work_height, bool elevation_band) {
   Comparison c;
-  c.undistorted = run_variant(p.undistorted, engine, work_width, work_height, false);
-  c.corrected = run_variant(p.distorted, engine, work_width, work_height, false);
-  c.ignored = run_variant(p.distorted, engine, work_width, work_height, true);
+  c.undistorted = run_variant(p.undistorted, engine, work_width, work_height, false, elevation_band);
+  c.corrected = run_variant(p.distorted, engine, work_width, work_height, false, elevation_band);
+  c.ignored = run_variant(p.distorted, engine, work_width, work_height, true, elevation_band);
   fit(c.undistorted, c.corrected, p.scenario, c.corrected_slope, c.corrected_rms);
   fit(c.undistorted, c.ignored, p.scenario, c.ignored_slope, c.ignored_rms);
   return c;

@@ -37,7 +37,9 @@ struct Comparison {
   double corrected_slope = 0, ignored_slope = 0;
   double corrected_rms = 0, ignored_rms = 0;
 };
-Comparison compare(const RenderedPair& p, EngineKind engine, int work_width, int work_height);
+// elevation_band: run with kOptionElevationBand (off by default).
+Comparison compare(const RenderedPair& p, EngineKind engine, int work_width, int work_height,
+                   bool elevation_band = false);
 
 // One line of figures for the test log.
 std::string describe(const Comparison& c);
