@@ -50,7 +50,7 @@ TEST(ConfigAuthority, WireBoundsAreCoreBounds) {
   }, "misalignment");
   wire_and_core_agree([](C& c) {
     c.fu[0] = c.fu[1] = 8 * 65536 * c.width;  // a 7 degree view: kernels at their narrowest fit it
-    c.kernels[0].sigma = c.kernels[1].sigma = static_cast<AngleQ28>(range<Quantity::kKernelSigma>.lo);
+    for (int k = 0; k < c.kernel_count; ++k) c.kernels[k].sigma = static_cast<AngleQ28>(range<Quantity::kKernelSigma>.lo);
   }, "fu 8 x width");
   wire_and_core_agree([](C& c) { c.fu[0] = c.fu[1] = static_cast<PixelQ16>(range<Quantity::kFocalLength>.lo); }, "fu lo");
   wire_and_core_agree([](C& c) { c.still_min_us = static_cast<uint32_t>(range<Quantity::kStillDuration>.hi); }, "still hi");
@@ -87,6 +87,8 @@ TEST(ConfigAuthority, DefaultGeometryForAResolution) {
   }
   const protocol::DeviceConfig n = protocol::defaults_for(40, 30, config::field_of_view(50 * config::kDeg));
   LONGS_EQUAL(2810848, n.fu[0]);  // 20 / tan(25 deg) = 42.89 px
+  LONGS_EQUAL(29281766, n.kernels[0].sigma);  // 25 deg / 4 = 0.10908 rad
+  LONGS_EQUAL(2, n.kernels[3].order);
 }
 
 TEST(ConfigAuthority, HostDefaultsAreTheDevices) {
@@ -112,9 +114,13 @@ TEST(ConfigAuthority, HostDefaultsAreTheDevices) {
   LONGS_EQUAL(d.options, e.options);
   LONGS_EQUAL(d.still_distance, e.still_distance);
   LONGS_EQUAL(d.still_min_us, e.still_min_us);
-  // The kernel banks differ on purpose (config_fields.hpp): four on the host, two on the device.
-  LONGS_EQUAL(config::kHostKernelCount, e.kernel_count);
-  LONGS_EQUAL(config::kDeviceKernelCount, d.kernel_count);
+  // One default kernel bank (config_fields.hpp), sized to the same view on both sides.
+  LONGS_EQUAL(config::kDefaultKernelCount, e.kernel_count);
+  LONGS_EQUAL(d.kernel_count, e.kernel_count);
+  for (int k = 0; k < d.kernel_count; ++k) {
+    LONGS_EQUAL(d.kernels[k].order, e.kernels[k].order);
+    LONGS_EQUAL(d.kernels[k].sigma, e.kernels[k].sigma);
+  }
 }
 
 // The rules in words (rule_of) are written by hand next to the table: the

@@ -23,6 +23,7 @@ DeviceConfig sample() {
   c.orientation = kLooksRight | kCam1UpsideDown;
   c.kernel_count = 3;
   c.kernels[2] = KernelSetting{3, 30000000};
+  c.kernels[3] = KernelSetting{};  // slots past the count are zero
   c.tau_us = 250000;
   c.saturated_permille = 1000;
   c.options = lumavel::kOptionGyroOffsetLearning;

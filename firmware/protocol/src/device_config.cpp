@@ -18,13 +18,7 @@ using config::range;
 constexpr int64_t kOneQ16 = int64_t{1} << fx::kPixelFrac;
 constexpr size_t kKernelOffset = 36;
 constexpr size_t kKernelStride = 5;
-// The device's default kernel bank, folded to Q28 here (a constexpr, never a double at run time).
-static_assert(config::kDeviceKernelCount == 2 && config::kDeviceKernelCount <= kWireKernels, "two kernels below");
-constexpr KernelSetting device_kernel(int i) {
-  return KernelSetting{config::kDeviceKernels[i].order,
-                       static_cast<AngleQ28>(config::to_counts(config::kDeviceKernels[i].sigma, config::kQ28))};
-}
-constexpr KernelSetting kDeviceKernel0 = device_kernel(0), kDeviceKernel1 = device_kernel(1);
+static_assert(config::kDefaultKernelCount <= kWireKernels, "the default bank travels on the wire");
 
 bool in(int64_t v, int64_t lo, int64_t hi) { return v >= lo && v <= hi; }
 
@@ -246,9 +240,9 @@ DeviceConfig defaults_for(uint16_t width, uint16_t height, config::FieldOfView f
   }
   c.orientation = 0;  // looking left, upright
   c.normaliser_sigma = static_cast<AngleQ28>(config::default_of<Quantity::kKernelSigma>);
-  c.kernel_count = static_cast<uint8_t>(config::kDeviceKernelCount);
-  c.kernels[0] = kDeviceKernel0;  // first derivative, 0.07 rad
-  c.kernels[1] = kDeviceKernel1;  // first derivative, 0.14 rad
+  c.kernel_count = static_cast<uint8_t>(config::kDefaultKernelCount);
+  for (int k = 0; k < config::kDefaultKernelCount; ++k)
+    c.kernels[k] = KernelSetting{static_cast<uint8_t>(config::kDefaultKernels[k].order), fov.kernel_sigma[k]};
   c.tau_us = static_cast<uint32_t>(config::default_of<Quantity::kTau>);
   c.frame_period_us = static_cast<uint32_t>(config::default_of<Quantity::kFramePeriod>);
   c.max_gap_us = static_cast<uint32_t>(config::default_of<Quantity::kMaxGap>);

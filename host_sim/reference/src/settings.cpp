@@ -93,7 +93,7 @@ std::pair<std::string, std::string> offending(const EstimatorSettings& s, Config
 std::vector<KernelModel> default_kernels(double hfov) {
   const double half = hfov / 2;
   std::vector<KernelModel> out;
-  for (const config::HostKernel& k : config::kHostKernels) out.push_back({k.order, half / k.half_view_divisor});
+  for (const config::DefaultKernel& k : config::kDefaultKernels) out.push_back({k.order, half / k.half_view_divisor});
   return out;
 }
 

@@ -149,7 +149,7 @@ size_t encode_stored_config(const DeviceConfig& c, const LensTables& lens, uint8
 ConfigField decode_stored_config(const uint8_t* buf, size_t len, DeviceConfig& c, LensTables& lens);
 
 // The one default geometry for a resolution: the defaults of
-// config_fields.hpp (8 cm rig looking left, the device's kernel bank) at
+// config_fields.hpp (8 cm rig looking left, the default kernel bank sized to fov) at
 // width x height, fu for the field of view `fov` at that width, cu the
 // centre column. Firmware passes a constexpr FieldOfView only.
 DeviceConfig defaults_for(uint16_t width, uint16_t height, config::FieldOfView fov = config::kDefaultFov);

@@ -147,39 +147,40 @@ constexpr double tan_of(double x) {  // |x| < pi/2; Taylor series of sin and cos
   }
   return s / c;
 }
+// ---- the default kernel bank ----
+// One bank for the device and the host, sized to the view: each kernel is
+// below 1 % of its peak on the outer ~12 % of each side of the view (the side
+// strips of paper eq. 19, with room for a couple of degrees of misalignment):
+// sigma = half view / 4 and / 6, orders 1 and 2. Two first-order kernels alone
+// (what the device ran until 2026-12) cost half the kernel phase but read every
+// study of docs/results.md worse, most of all the paper's simulated rig (worst
+// error after 1 s 0.005 -> 0.35 m/s at 160x120) and near clutter (3.4 -> 7.4 %):
+// docs/design.md, "Kernel bank".
+struct DefaultKernel {
+  int order;
+  double half_view_divisor;  // sigma = (hfov / 2) / this
+};
+constexpr DefaultKernel kDefaultKernels[] = {{1, 4.0}, {2, 4.0}, {1, 6.0}, {2, 6.0}};
+constexpr int kDefaultKernelCount = 4;
+static_assert(sizeof kDefaultKernels / sizeof kDefaultKernels[0] == kDefaultKernelCount, "count");
+
+// A horizontal field of view as the defaults use it: the focal length at the
+// default working width (kDefaultColumns), Q16 px, and the default kernels'
+// sigmas for it, Q28 rad. Other widths scale the focal length (defaults_for
+// in protocol/device_config.hpp); the kernels keep their angles.
+// Firmware: constexpr only.
 struct FieldOfView {
-  int32_t fu_at_default_width;  // PixelQ16
+  int32_t fu_at_default_width;                // PixelQ16
+  int32_t kernel_sigma[kDefaultKernelCount];  // AngleQ28, kDefaultKernels sized to this view
 };
 constexpr FieldOfView field_of_view(double hfov_rad) {
-  return FieldOfView{static_cast<int32_t>(to_counts(0.5 * kDefaultColumns / tan_of(hfov_rad / 2), kQ16))};
+  FieldOfView f{static_cast<int32_t>(to_counts(0.5 * kDefaultColumns / tan_of(hfov_rad / 2), kQ16)), {}};
+  for (int k = 0; k < kDefaultKernelCount; ++k)
+    f.kernel_sigma[k] = static_cast<int32_t>(to_counts(hfov_rad / 2 / kDefaultKernels[k].half_view_divisor, kQ28));
+  return f;
 }
 constexpr double kDefaultFovRad = 60 * kDeg;
 inline constexpr FieldOfView kDefaultFov = field_of_view(kDefaultFovRad);
 static_assert(kDefaultFov.fu_at_default_width == 2270234, "34.64 px: 60 degrees over 40 columns");
-
-// ---- default kernel banks ----
-// The device runs two first-derivative kernels (cheap on a microcontroller:
-// the kernel tables and the per-frame sums scale with the count); the host
-// tools run four, sized to the view (host::default_kernels). Both live here
-// so that neither is written down twice; the device's bank is what the
-// firmware tests and the blue pill's size budget were made with, the host's
-// what the reference studies were (docs/design.md).
-struct DeviceKernel {
-  uint8_t order;
-  double sigma;  // rad
-};
-constexpr DeviceKernel kDeviceKernels[] = {{1, 0.07}, {1, 0.14}};
-constexpr int kDeviceKernelCount = 2;
-// Host: each kernel is below 1 % of its peak on the outer ~12 % of each side
-// of the view (the side strips of paper eq. 19, with room for a couple of
-// degrees of misalignment): sigma = half view / 4 and / 6, orders 1 and 2.
-struct HostKernel {
-  int order;
-  double half_view_divisor;  // sigma = (hfov / 2) / this
-};
-constexpr HostKernel kHostKernels[] = {{1, 4.0}, {2, 4.0}, {1, 6.0}, {2, 6.0}};
-constexpr int kHostKernelCount = 4;
-static_assert(sizeof kDeviceKernels / sizeof kDeviceKernels[0] == kDeviceKernelCount, "count");
-static_assert(sizeof kHostKernels / sizeof kHostKernels[0] == kHostKernelCount, "count");
 
 }  // namespace lumavel::config

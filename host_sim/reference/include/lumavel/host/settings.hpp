@@ -73,7 +73,7 @@ class SettingsError : public std::invalid_argument {
 };
 
 // Default kernel bank for a field of view (radians, horizontal):
-// config::kHostKernels (the device runs config::kDeviceKernels).
+// config::kDefaultKernels, the device's too (protocol::defaults_for).
 std::vector<KernelModel> default_kernels(double hfov);
 
 // Quantises to the firmware configuration. Throws SettingsError naming the
