@@ -13,16 +13,9 @@ namespace {
 class FixedEngine final : public Engine {
  public:
   explicit FixedEngine(const EstimatorSettings& s) : est_(std::make_unique<Estimator>()) {
-    EstimatorConfig c = to_fixed_config(s);
-    std::vector<EdgeOffsetQ15> lens[2];
-    std::vector<ElevationScaleQ14> scale[2];
-    for (int i = 0; i < 2; ++i) {
-      lens[i] = to_fixed_edge_offsets(s.cam[i], c.cam[i], s.width);
-      c.edge_offsets[i] = lens[i].empty() ? nullptr : lens[i].data();
-      scale[i] = to_fixed_elevation_scale(s.cam[i], s.width);
-      c.elevation_scale[i] = scale[i].empty() ? nullptr : scale[i].data();
-    }
-    const ConfigError e = est_->configure(c);
+    FixedConfig c;
+    to_fixed_config(s, c);
+    const ConfigError e = est_->configure(c.config);
     if (e != ConfigError::kOk) throw std::invalid_argument(to_string(e));
     width_ = s.width;
   }

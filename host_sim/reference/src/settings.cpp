@@ -97,8 +97,9 @@ std::vector<KernelModel> default_kernels(double hfov) {
   return out;
 }
 
-EstimatorConfig to_fixed_config(const EstimatorSettings& s) {
-  EstimatorConfig c{};
+void to_fixed_config(const EstimatorSettings& s, FixedConfig& out) {
+  EstimatorConfig& c = out.config;
+  c = EstimatorConfig{};
   if (s.width < kMinColumns || s.width > kMaxColumns)
     throw SettingsError("width", "working width " + std::to_string(s.width) + " is outside " +
                                      std::to_string(kMinColumns) + ".." + std::to_string(kMaxColumns));
@@ -139,20 +140,24 @@ EstimatorConfig to_fixed_config(const EstimatorSettings& s) {
                                    (s.elevation_band ? kOptionElevationBand : 0));
   c.still_distance = static_cast<LengthQ24>(quantise(s.still_distance, fx::kLengthFrac, {"still distance", "still_distance", "m"}));
   c.still_min_us = micros(s.still_min, {"still duration", "still_min", "s"});
-  std::vector<EdgeOffsetQ15> lens[2];
-  std::vector<ElevationScaleQ14> scale[2];
   for (int i = 0; i < 2; ++i) {
-    lens[i] = to_fixed_edge_offsets(s.cam[i], c.cam[i], s.width);
-    c.edge_offsets[i] = lens[i].empty() ? nullptr : lens[i].data();
-    scale[i] = to_fixed_elevation_scale(s.cam[i], s.width);
-    c.elevation_scale[i] = scale[i].empty() ? nullptr : scale[i].data();
+    out.edge_offsets[i] = to_fixed_edge_offsets(s.cam[i], c.cam[i], s.width);
+    c.edge_offsets[i] = out.edge_offsets[i].empty() ? nullptr : out.edge_offsets[i].data();
+    out.elevation_scale[i] = to_fixed_elevation_scale(s.cam[i], s.width);
+    c.elevation_scale[i] = out.elevation_scale[i].empty() ? nullptr : out.elevation_scale[i].data();
   }
   const ConfigError e = validate(c);
   if (e != ConfigError::kOk) {
     const auto [setting, value] = offending(s, e);
     throw SettingsError(setting, value + ": " + to_string(e));
   }
-  c.edge_offsets[0] = c.edge_offsets[1] = nullptr;  // the vectors die here
+}
+
+EstimatorConfig to_fixed_config(const EstimatorSettings& s) {
+  FixedConfig f;
+  to_fixed_config(s, f);
+  EstimatorConfig c = f.config;
+  c.edge_offsets[0] = c.edge_offsets[1] = nullptr;  // the vectors die with f
   c.elevation_scale[0] = c.elevation_scale[1] = nullptr;
   return c;
 }

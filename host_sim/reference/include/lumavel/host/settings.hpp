@@ -76,12 +76,25 @@ class SettingsError : public std::invalid_argument {
 // config::kDefaultKernels, the device's too (protocol::defaults_for).
 std::vector<KernelModel> default_kernels(double hfov);
 
-// Quantises to the firmware configuration. Throws SettingsError naming the
-// field, its value and the rule when a value does not fit its fixed-point
-// format or is out of the core's range (validate()). Column
-// edge tables are checked too but not attached (edge_offsets and
-// elevation_scale stay nullptr): attach to_fixed_edge_offsets() and
-// to_fixed_elevation_scale() of each camera before configure().
+// The firmware configuration with the per-camera tables it points into
+// (lens edge offsets, elevation scales; empty for a pinhole camera). Not
+// copyable: `config` holds pointers into this object's vectors, so keep it
+// where to_fixed_config() filled it while configure() reads it.
+struct FixedConfig {
+  EstimatorConfig config{};
+  std::vector<EdgeOffsetQ15> edge_offsets[2];
+  std::vector<ElevationScaleQ14> elevation_scale[2];
+  FixedConfig() = default;
+  FixedConfig(const FixedConfig&) = delete;
+  FixedConfig& operator=(const FixedConfig&) = delete;
+};
+
+// Quantises to the firmware configuration, tables attached. Throws
+// SettingsError naming the field, its value and the rule when a value does
+// not fit its fixed-point format or is out of the core's range (validate()).
+void to_fixed_config(const EstimatorSettings& s, FixedConfig& out);
+// The same, checked with its tables but returned without them (edge_offsets
+// and elevation_scale nullptr): for the scalar fields.
 EstimatorConfig to_fixed_config(const EstimatorSettings& s);
 
 // A gyro rate (rad/s) as the firmware takes it: RateQ24, rounded half away
