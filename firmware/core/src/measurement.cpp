@@ -9,6 +9,20 @@ namespace {
 // sum_u w[u] * c[u]: q31 weights times sums of at most 23 bits (Q8 with a
 // band), 32 x 32 -> 64 products (|sum| < 2^31 * 2^23 * 160 < 2^62).
 int64_t dot(const KernelTable& t, const ColumnProfile& p) {
+#if defined(__ARM_ARCH_6M__)
+  // No 32 x 32 -> 64 multiply (M0/M0+: a library call per column). Plain sums
+  // are in [0, 2^15): w = hi 2^16 + lo, lo in [0, 2^16), gives two exact 32-bit
+  // products, |hi s| < 2^30 and lo s < 2^31; the same sum, bit for bit.
+  if (!p.q8) {
+    int64_t acc_hi = 0, acc_lo = 0;
+    for (uint16_t u = 0; u < p.width; ++u) {
+      const int32_t s = p.sum[u];
+      acc_hi += (t.w[u] >> 16) * s;
+      acc_lo += static_cast<uint32_t>(static_cast<uint32_t>(t.w[u]) & 0xFFFFu) * static_cast<uint32_t>(s);
+    }
+    return acc_hi * 65536 + acc_lo;
+  }
+#endif
   int64_t acc = 0;
   for (uint16_t u = 0; u < p.width; ++u) acc += int64_t{t.w[u]} * p.sum[u];
   return acc;
