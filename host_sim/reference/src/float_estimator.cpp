@@ -2,116 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
 #include "lumavel/core/estimator_params.hpp"
 #include "lumavel/core/fusion_params.hpp"
 #include "lumavel/core/status.hpp"
+#include "lumavel/host/float_column_profile.hpp"
 
 namespace lumavel::host {
-namespace {
-
-constexpr int kSimpsonIntervals = params::kKernelSimpsonIntervals;
-
-// Simpson's weights 1, 4, 2, 4, ..., 2, 4, 1, as kernel_bank.cpp has them.
-constexpr double simpson_weight(int j) { return j == 0 || j == kSimpsonIntervals ? 1 : (j % 2 == 1 ? 4 : 2); }
-
-// phi_n(s) = (-1)^n He_n(s) exp(-s^2/2), probabilists' Hermite polynomials,
-// zero beyond the kernels' cut-off.
-double gaussian_derivative(int n, double s) {
-  if (std::fabs(s) > params::kKernelCutoffSigma) return 0;
-  const double s2 = s * s;
-  const double he[7] = {1, s, s2 - 1, s2 * s - 3 * s, s2 * s2 - 6 * s2 + 3,
-                        s2 * s2 * s - 10 * s2 * s + 15 * s, s2 * s2 * s2 - 15 * s2 * s2 + 45 * s2 - 15};
-  const double v = he[n] * std::exp(-s * s / 2);
-  return n % 2 == 0 ? v : -v;
-}
-
-Eigen::VectorXd column_edges(const CameraModel& c, int width) {
-  Eigen::VectorXd e(width + 1);
-  if (!c.edges.empty()) {
-    for (int u = 0; u <= width; ++u) e[u] = c.edges[static_cast<size_t>(u)];
-    return e;
-  }
-  for (int u = 0; u <= width; ++u) e[u] = c.axis_yaw + c.u_sign * std::atan((u - 0.5 - c.cu) / c.fu);
-  return e;
-}
-
-void integrate(const Eigen::VectorXd& edges, double centre, const KernelModel& k,
-               Eigen::VectorXd& kk, Eigen::VectorXd& dd, Eigen::VectorXd& tt) {
-  const int width = static_cast<int>(edges.size()) - 1;
-  kk.resize(width);
-  dd.resize(width);
-  tt.resize(width);
-  for (int u = 0; u < width; ++u) {
-    const double lo = edges[u], hi = edges[u + 1];
-    double ak = 0, ad = 0, at = 0;
-    for (int j = 0; j <= kSimpsonIntervals; ++j) {
-      const double psi = lo + (hi - lo) * j / kSimpsonIntervals;
-      const double s = (psi - centre) / k.sigma;
-      const double wj = simpson_weight(j);
-      ak += wj * gaussian_derivative(k.order, s);
-      ad += wj * gaussian_derivative(k.order + 1, s);
-      at += wj * gaussian_derivative(k.order + 3, s);
-    }
-    const double ds = std::fabs(hi - lo) / k.sigma;
-    kk[u] = ak * ds / (3 * kSimpsonIntervals);
-    dd[u] = -ad * ds / (3 * kSimpsonIntervals);
-    tt[u] = -at * ds / (3 * kSimpsonIntervals);
-  }
-}
-
-void build_kernel(const EstimatorSettings& s, const Eigen::VectorXd (&edges)[2], const FloatColumnBand& band,
-                  double centre, const KernelModel& k, bool unit_l1, Eigen::VectorXd* kout[2],
-                  Eigen::VectorXd* dout[2], Eigen::VectorXd* tout[2]) {
-  for (int i = 0; i < 2; ++i) {
-    integrate(edges[i], centre, k, *kout[i], *dout[i], *tout[i]);
-    kout[i]->array() *= band.cos[i].array();
-    dout[i]->array() *= band.cos[i].array();
-    tout[i]->array() *= band.cos[i].array();
-  }
-  const double norm = unit_l1 ? (kout[0]->sum() + kout[1]->sum()) / 2
-                              : std::sqrt(s.width * (kout[0]->squaredNorm() + kout[1]->squaredNorm()) / 2);
-  for (int i = 0; i < 2; ++i) {
-    *kout[i] /= norm;
-    *dout[i] /= norm * k.sigma;
-    *tout[i] /= norm * k.sigma * k.sigma * k.sigma;
-  }
-}
-
-}  // namespace
-
-FloatBank build_float_bank(const EstimatorSettings& s) {
-  FloatBank b;
-  for (int i = 0; i < 2; ++i) b.edge[i] = column_edges(s.cam[i], s.width);
-  b.band = build_float_column_band(s, b.edge);
-  const double centre = (s.cam[0].axis_yaw + s.cam[1].axis_yaw) / 2;
-  Eigen::VectorXd* kn[2] = {&b.cam[0].norm, &b.cam[1].norm};
-  Eigen::VectorXd* dn[2] = {&b.cam[0].norm_d, &b.cam[1].norm_d};
-  Eigen::VectorXd unused[2];
-  Eigen::VectorXd* tn[2] = {&unused[0], &unused[1]};
-  build_kernel(s, b.edge, b.band, centre, s.normaliser, true, kn, dn, tn);
-  const size_t n = s.kernels.size();
-  for (auto& c : b.cam) {
-    c.k.resize(n);
-    c.d.resize(n);
-    c.t.resize(n);
-  }
-  for (size_t k = 0; k < n; ++k) {
-    Eigen::VectorXd* kk[2] = {&b.cam[0].k[k], &b.cam[1].k[k]};
-    Eigen::VectorXd* dd[2] = {&b.cam[0].d[k], &b.cam[1].d[k]};
-    Eigen::VectorXd* tt[2] = {&b.cam[0].t[k], &b.cam[1].t[k]};
-    build_kernel(s, b.edge, b.band, centre, s.kernels[k], false, kk, dd, tt);
-  }
-  // F of a uniform image: each column sums its band's rows of one value.
-  for (int i = 0; i < 2; ++i) {
-    FloatKernels& c = b.cam[i];
-    const Eigen::VectorXd& rows = b.band.rows;
-    c.dc.resize(static_cast<Eigen::Index>(n));
-    for (size_t k = 0; k < n; ++k) c.dc[static_cast<Eigen::Index>(k)] = c.k[k].dot(rows) / c.norm.dot(rows);
-  }
-  return b;
-}
 
 FloatEstimator::FloatEstimator(const EstimatorSettings& s) : s_(s) {
   // Same validation as the fixed engine (throws), and its timing thresholds
@@ -125,7 +22,7 @@ FloatEstimator::FloatEstimator(const EstimatorSettings& s) : s_(s) {
   double narrowest = s.kernels.empty() ? 0 : s.kernels[0].sigma;
   for (const KernelModel& k : s.kernels) narrowest = std::min(narrowest, k.sigma);
   tof_max_rotation_ = params::kTofMaxRotationSigma * narrowest;
-  bank_ = build_float_bank(s_);
+  bank_ = build_float_kernel_bank(s_);
   balance_ = FloatPhotometricBalance(static_cast<int>(s_.kernels.size()));
 }
 
@@ -192,82 +89,17 @@ bool FloatEstimator::gyro_saturated_since(uint64_t from) const {
   return g.count > 0 && (g.at_rail[1] || (g.railed && g.railed_end > from));
 }
 
-FloatMeasurement measure_float(const FloatBank& bank, const EstimatorSettings& s,
-                               const uint8_t* cam0, const uint8_t* cam1,
-                               const FloatPhotometricBalance* balance) {
-  FloatMeasurement m;
-  const int w = s.width, h = s.height;
-  const size_t n = s.kernels.size();
-  Eigen::VectorXd f[2], r[2], c[2];
-  const uint8_t* img[2] = {cam0, cam1};
-  Eigen::VectorXd cols[2];
-  for (int i = 0; i < 2; ++i) {
-    Eigen::VectorXd& col = cols[i];
-    col = float_column_profile(bank.band, img[i], w, h);
-    for (int y = 0; y < h; y += params::kClipRowStep)
-      for (int u = 0; u < w; ++u) {
-        const uint8_t p = img[i][y * w + u];
-        m.clipped += (p == 0 || p == 255);
-        m.sampled += 1;
-      }
-    const FloatKernels& k = bank.cam[i];
-    const double nrm = k.norm.dot(col);
-    f[i] = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));
-    r[i] = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));
-    c[i] = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));
-    if (nrm <= 0) {
-      m.no_light = true;
-      continue;
-    }
-    const double dn = k.norm_d.dot(col) / nrm;
-    for (size_t j = 0; j < n; ++j) {
-      const Eigen::Index jj = static_cast<Eigen::Index>(j);
-      f[i][jj] = k.k[j].dot(col) / nrm;
-      r[i][jj] = k.d[j].dot(col) / nrm - f[i][jj] * dn;
-      c[i][jj] = k.t[j].dot(col) / nrm;  // derivatives of N neglected: a correction term
-    }
-  }
-  m.balance = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));
-  if (balance && !m.no_light)
-    for (Eigen::Index j = 0; j < m.balance.size(); ++j) {
-      m.balance[j] = balance->offset(j);
-      f[1][j] -= m.balance[j];
-    }
-  // Same images, same row weights: equal exactly where the core's sums are.
-  // Flat: every sum in proportion to its rows (exact products: 23 x 16 bits).
-  const Eigen::VectorXd& rows = bank.band.rows;
-  m.no_stereo = cols[0] == cols[1] && (cols[0].array() * rows[0] != rows.array() * cols[0][0]).any();
-  m.mid = (f[0] + f[1]) / 2;
-  m.diff = f[1] - f[0];
-  m.rot = (r[0] + r[1]) / 2;
-  for (int i = 0; i < 2; ++i) {
-    m.f[i] = f[i];
-    m.r[i] = r[i];
-  }
-  // Each kernel's output as a local sinusoid: omega^2 = -C R / R^2 and
-  // z_i = (F_i - dc) - i R_i / omega; arg(z1 conj(z0)) = k h.
-  m.half_phase = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));
-  for (size_t j = 0; j < n && !m.no_light; ++j) {
-    const Eigen::Index jj = static_cast<Eigen::Index>(j);
-    const double rr = r[0][jj] * r[0][jj] + r[1][jj] * r[1][jj];
-    if (rr <= 0) continue;
-    const double sigma = s.kernels[j].sigma;
-    const double w2 = -(c[0][jj] * r[0][jj] + c[1][jj] * r[1][jj]) / rr;
-    const double u = std::clamp(w2 * sigma * sigma, params::kSigmaW2Min, params::kSigmaW2Max);  // (sigma w)^2
-    const double omega = std::sqrt(u) / sigma;
-    const double a0 = f[0][jj] - bank.cam[0].dc[jj], b0 = -r[0][jj] / omega;
-    const double a1 = f[1][jj] - bank.cam[1].dc[jj], b1 = -r[1][jj] / omega;
-    m.half_phase[jj] = std::atan2(b1 * a0 - a1 * b0, a1 * a0 + b1 * b0) / 2;
-  }
-  return m;
-}
-
 EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const uint8_t* cam1) {
   EngineEstimate est;
   est.t_ns = t_ns;
-  FloatMeasurement m = measure_float(bank_, s_, cam0, cam1, s_.photometric_balance ? &balance_ : nullptr);
+  FloatColumnProfile p[2];
+  const uint8_t* cam[2] = {cam0, cam1};
+  for (int i = 0; i < 2; ++i) p[i] = float_column_profile(bank_.band, cam[i], s_.width, s_.height);
+  const FloatStereoMeasurement m =
+      float_stereo_measurement(p[0], p[1], bank_, s_.photometric_balance ? &balance_ : nullptr);
   uint16_t status = 0;
-  if (m.clipped * 1000 > s_.saturated_permille * m.sampled) status |= kStatusSaturated;
+  const double sampled = p[0].clip_sampled + p[1].clip_sampled;
+  if (m.clipped * 1000 > s_.saturated_permille * sampled) status |= kStatusSaturated;
   const double angle = angle_at(t_ns);
   const bool first = !have_prev_frame_;
   have_prev_frame_ = true;
@@ -281,7 +113,8 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
   const bool gyro_saturated = gyro_saturated_since(first ? t_ns : prev_t_ns_);  // V held over the interval
   if (gyro_saturated) status |= kStatusSaturated;
   auto converging = [&] { return !started_ || since_start_ns_ < converging_ns_; };
-  if (m.no_light || m.no_stereo) {
+  const bool no_stereo = float_same_textured_profile(p[0], p[1], bank_.band);
+  if (m.no_light || no_stereo) {
     status |= (m.no_light ? kStatusNoLight : kStatusNoStereo) | kStatusLowTexture | kStatusNoTof;
     have_prev_ = false;
     have_ref_ = still_ = false;  // GyroOffset::drop_reference
@@ -392,7 +225,7 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
   return est;
 }
 
-void FloatEstimator::learn_offset(const FloatMeasurement& m, uint64_t t_ns, double angle, bool textured) {
+void FloatEstimator::learn_offset(const FloatStereoMeasurement& m, uint64_t t_ns, double angle, bool textured) {
   auto anchor = [&] {
     ref_ = m;
     t_ref_ = t_ns;

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "lumavel/host/float_estimator.hpp"
+#include "lumavel/host/float_measurement.hpp"
 
 namespace lumavel::host {
 
@@ -12,7 +12,8 @@ void FloatPhotometricBalance::reset() {
   mean_s_.setZero();
 }
 
-void FloatPhotometricBalance::learn(const FloatMeasurement& a, const FloatMeasurement& b, double dtheta, double h) {
+void FloatPhotometricBalance::learn(const FloatStereoMeasurement& a, const FloatStereoMeasurement& b, double dtheta,
+                                    double h) {
   const Eigen::Index n = b.diff.size();
   Eigen::VectorXd s_bar(n), innovation(n), s_corr(n);
   for (Eigen::Index k = 0; k < n; ++k) {
