@@ -1,3 +1,4 @@
+// Twin of firmware/core/src/photometric_balance.cpp.
 #include "lumavel/host/float_photometric_balance.hpp"
 
 #include <algorithm>
