@@ -9,7 +9,7 @@
 #include <memory>
 
 #include "lumavel/core/estimator.hpp"
-#include "lumavel/host/float_estimator.hpp"
+#include "lumavel/host/float_measurement.hpp"
 #include "synthetic_rig.hpp"
 
 using namespace lumavel;
@@ -86,10 +86,11 @@ TEST(Identities, BaselineDifferenceTendsToTheTranslationDerivative) {
     rig.baseline = baseline;
     host::EstimatorSettings s = rig.settings();
     s.elevation_band = band;
-    const host::FloatBank bank = host::build_float_bank(s);
+    const host::FloatKernelBank bank = host::build_float_kernel_bank(s);
     test::Pose2 p{at, 0, 0};
     const auto a = rig.render(0, p), b = rig.render(1, p);
-    return host::measure_float(bank, s, a.data(), b.data());
+    return host::float_stereo_measurement(host::float_column_profile(bank.band, a.data(), s.width, s.height),
+                                          host::float_column_profile(bank.band, b.data(), s.width, s.height), bank);
   };
   for (const bool b : {false, true}) {  // plain column sums, and the elevation band
     band = b;

@@ -6,7 +6,7 @@
 #include <memory>
 
 #include "lumavel/core/estimator.hpp"
-#include "lumavel/host/float_estimator.hpp"
+#include "lumavel/host/float_kernel_bank.hpp"
 #include "synthetic_rig.hpp"
 
 using namespace lumavel;
@@ -17,10 +17,10 @@ double value(const KernelTable& t, int u) { return std::ldexp(t.w[u], -(31 + t.e
 struct Banks {
   host::EstimatorSettings s;
   std::unique_ptr<KernelBank> fixed = std::make_unique<KernelBank>();
-  host::FloatBank dbl;
+  host::FloatKernelBank dbl;
   explicit Banks(const host::EstimatorSettings& set) : s(set) {
     build_kernel_bank(host::to_fixed_config(s), *fixed);
-    dbl = host::build_float_bank(s);
+    dbl = host::build_float_kernel_bank(s);
   }
 };
 }  // namespace
@@ -120,7 +120,7 @@ TEST(KernelBank, BandRowsMatchTheDoubleTwin) {
           const EstimatorConfig c = host::to_fixed_config(s);
           auto bank = std::make_unique<KernelBank>();
           build_kernel_bank(c, *bank);
-          const host::FloatBank dbl = host::build_float_bank(s);
+          const host::FloatKernelBank dbl = host::build_float_kernel_bank(s);
           CHECK_EQUAL(dbl.band.banded, bank->banded);
           banded += bank->banded;
           for (int u = 0; u < w; ++u) {

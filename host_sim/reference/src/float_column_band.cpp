@@ -1,5 +1,4 @@
-// Twin of build_band (firmware/core/src/kernel_bank.cpp) and of the band
-// part of column_profile (firmware/core/src/column_profile.cpp).
+// Twin of build_band in firmware/core/src/kernel_bank.cpp (the sums it weighs: float_column_profile.cpp).
 #include "lumavel/host/float_column_band.hpp"
 
 #include <algorithm>
@@ -56,13 +55,6 @@ FloatColumnBand build_float_column_band(const EstimatorSettings& s, const Eigen:
   }
   b.rows = b.row_weight.colwise().sum().transpose();
   return b;
-}
-
-Eigen::VectorXd float_column_profile(const FloatColumnBand& band, const uint8_t* img, int width, int height) {
-  Eigen::VectorXd col = Eigen::VectorXd::Zero(width);
-  for (int y = 0; y < height; ++y)
-    for (int u = 0; u < width; ++u) col[u] += band.row_weight(y, u) * img[y * width + u];
-  return col;
 }
 
 }  // namespace lumavel::host

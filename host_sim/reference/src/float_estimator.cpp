@@ -1,290 +1,65 @@
+// Twin of firmware/core/src/estimator.cpp.
 #include "lumavel/host/float_estimator.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
 #include "lumavel/core/estimator_params.hpp"
 #include "lumavel/core/fusion_params.hpp"
 #include "lumavel/core/status.hpp"
+#include "lumavel/host/float_column_profile.hpp"
 
 namespace lumavel::host {
-namespace {
-
-constexpr int kSimpsonIntervals = params::kKernelSimpsonIntervals;
-
-// Simpson's weights 1, 4, 2, 4, ..., 2, 4, 1, as kernel_bank.cpp has them.
-constexpr double simpson_weight(int j) { return j == 0 || j == kSimpsonIntervals ? 1 : (j % 2 == 1 ? 4 : 2); }
-
-// phi_n(s) = (-1)^n He_n(s) exp(-s^2/2), probabilists' Hermite polynomials,
-// zero beyond the kernels' cut-off.
-double gaussian_derivative(int n, double s) {
-  if (std::fabs(s) > params::kKernelCutoffSigma) return 0;
-  const double s2 = s * s;
-  const double he[7] = {1, s, s2 - 1, s2 * s - 3 * s, s2 * s2 - 6 * s2 + 3,
-                        s2 * s2 * s - 10 * s2 * s + 15 * s, s2 * s2 * s2 - 15 * s2 * s2 + 45 * s2 - 15};
-  const double v = he[n] * std::exp(-s * s / 2);
-  return n % 2 == 0 ? v : -v;
-}
-
-Eigen::VectorXd column_edges(const CameraModel& c, int width) {
-  Eigen::VectorXd e(width + 1);
-  if (!c.edges.empty()) {
-    for (int u = 0; u <= width; ++u) e[u] = c.edges[static_cast<size_t>(u)];
-    return e;
-  }
-  for (int u = 0; u <= width; ++u) e[u] = c.axis_yaw + c.u_sign * std::atan((u - 0.5 - c.cu) / c.fu);
-  return e;
-}
-
-void integrate(const Eigen::VectorXd& edges, double centre, const KernelModel& k,
-               Eigen::VectorXd& kk, Eigen::VectorXd& dd, Eigen::VectorXd& tt) {
-  const int width = static_cast<int>(edges.size()) - 1;
-  kk.resize(width);
-  dd.resize(width);
-  tt.resize(width);
-  for (int u = 0; u < width; ++u) {
-    const double lo = edges[u], hi = edges[u + 1];
-    double ak = 0, ad = 0, at = 0;
-    for (int j = 0; j <= kSimpsonIntervals; ++j) {
-      const double psi = lo + (hi - lo) * j / kSimpsonIntervals;
-      const double s = (psi - centre) / k.sigma;
-      const double wj = simpson_weight(j);
-      ak += wj * gaussian_derivative(k.order, s);
-      ad += wj * gaussian_derivative(k.order + 1, s);
-      at += wj * gaussian_derivative(k.order + 3, s);
-    }
-    const double ds = std::fabs(hi - lo) / k.sigma;
-    kk[u] = ak * ds / (3 * kSimpsonIntervals);
-    dd[u] = -ad * ds / (3 * kSimpsonIntervals);
-    tt[u] = -at * ds / (3 * kSimpsonIntervals);
-  }
-}
-
-void build_kernel(const EstimatorSettings& s, const Eigen::VectorXd (&edges)[2], const FloatColumnBand& band,
-                  double centre, const KernelModel& k, bool unit_l1, Eigen::VectorXd* kout[2],
-                  Eigen::VectorXd* dout[2], Eigen::VectorXd* tout[2]) {
-  for (int i = 0; i < 2; ++i) {
-    integrate(edges[i], centre, k, *kout[i], *dout[i], *tout[i]);
-    kout[i]->array() *= band.cos[i].array();
-    dout[i]->array() *= band.cos[i].array();
-    tout[i]->array() *= band.cos[i].array();
-  }
-  const double norm = unit_l1 ? (kout[0]->sum() + kout[1]->sum()) / 2
-                              : std::sqrt(s.width * (kout[0]->squaredNorm() + kout[1]->squaredNorm()) / 2);
-  for (int i = 0; i < 2; ++i) {
-    *kout[i] /= norm;
-    *dout[i] /= norm * k.sigma;
-    *tout[i] /= norm * k.sigma * k.sigma * k.sigma;
-  }
-}
-
-}  // namespace
-
-FloatBank build_float_bank(const EstimatorSettings& s) {
-  FloatBank b;
-  for (int i = 0; i < 2; ++i) b.edge[i] = column_edges(s.cam[i], s.width);
-  b.band = build_float_column_band(s, b.edge);
-  const double centre = (s.cam[0].axis_yaw + s.cam[1].axis_yaw) / 2;
-  Eigen::VectorXd* kn[2] = {&b.cam[0].norm, &b.cam[1].norm};
-  Eigen::VectorXd* dn[2] = {&b.cam[0].norm_d, &b.cam[1].norm_d};
-  Eigen::VectorXd unused[2];
-  Eigen::VectorXd* tn[2] = {&unused[0], &unused[1]};
-  build_kernel(s, b.edge, b.band, centre, s.normaliser, true, kn, dn, tn);
-  const size_t n = s.kernels.size();
-  for (auto& c : b.cam) {
-    c.k.resize(n);
-    c.d.resize(n);
-    c.t.resize(n);
-  }
-  for (size_t k = 0; k < n; ++k) {
-    Eigen::VectorXd* kk[2] = {&b.cam[0].k[k], &b.cam[1].k[k]};
-    Eigen::VectorXd* dd[2] = {&b.cam[0].d[k], &b.cam[1].d[k]};
-    Eigen::VectorXd* tt[2] = {&b.cam[0].t[k], &b.cam[1].t[k]};
-    build_kernel(s, b.edge, b.band, centre, s.kernels[k], false, kk, dd, tt);
-  }
-  // F of a uniform image: each column sums its band's rows of one value.
-  for (int i = 0; i < 2; ++i) {
-    FloatKernels& c = b.cam[i];
-    const Eigen::VectorXd& rows = b.band.rows;
-    c.dc.resize(static_cast<Eigen::Index>(n));
-    for (size_t k = 0; k < n; ++k) c.dc[static_cast<Eigen::Index>(k)] = c.k[k].dot(rows) / c.norm.dot(rows);
-  }
-  return b;
-}
 
 FloatEstimator::FloatEstimator(const EstimatorSettings& s) : s_(s) {
   // Same validation as the fixed engine (throws), and its timing thresholds
-  // in integer nanoseconds, so that both flag on the same frames even at a tie.
+  // in integer nanoseconds.
   const EstimatorConfig c = to_fixed_config(s);
   gyro_gap_ns_ = uint64_t{c.gyro_gap_us} * 1000;
   frame_period_ns_ = uint64_t{c.frame_period_us} * 1000;
   max_gap_ns_ = uint64_t{c.max_gap_us} * 1000;
-  converging_ns_ = static_cast<uint64_t>(params::kConvergingTaus * static_cast<double>(uint64_t{c.tau_us} * 1000));
   still_min_ns_ = uint64_t{c.still_min_us} * 1000;
+  observer_ = FloatVelocityObserver(c.tau_us);
   double narrowest = s.kernels.empty() ? 0 : s.kernels[0].sigma;
   for (const KernelModel& k : s.kernels) narrowest = std::min(narrowest, k.sigma);
   tof_max_rotation_ = params::kTofMaxRotationSigma * narrowest;
-  bank_ = build_float_bank(s_);
+  bank_ = build_float_kernel_bank(s_);
   balance_ = FloatPhotometricBalance(static_cast<int>(s_.kernels.size()));
-}
-
-void FloatEstimator::push_gyro(uint64_t t_ns, double rate) {
-  // What the fixed engine cannot represent is clipped to its range, as there.
-  const RateQ24 q = to_fixed_rate(rate);  // throws if not finite
-  const bool rail = fx::rate_at_rail(q);
-  if (rail) rate = std::ldexp(static_cast<double>(q), -fx::kRateFrac);
-  Gyro& g = gyro_;
-  if (g.count == 0) {
-    g.t[1] = t_ns;
-    g.r[1] = rate;
-    g.at_rail[1] = rail;
-    g.angle[1] = 0;
-    g.t_first = t_ns;
-    g.count = 1;
-    return;
-  }
-  if (t_ns <= g.t[1]) return;
-  const double dt = static_cast<double>(t_ns - g.t[1]) * 1e-9;
-  g.max_spacing = std::max(g.max_spacing, t_ns - g.t[1]);
-  g.t[0] = g.t[1];
-  g.r[0] = g.r[1];
-  g.angle[0] = g.angle[1];
-  g.at_rail[0] = g.at_rail[1];
-  g.t[1] = t_ns;
-  g.r[1] = rate;
-  g.at_rail[1] = rail;
-  g.angle[1] = g.angle[0] + (g.r[0] + g.r[1]) / 2 * std::min(dt, params::kGyroMaxStep);  // one piece at most, as the core
-  if (g.at_rail[0] || g.at_rail[1]) {
-    g.railed = true;
-    g.railed_end = t_ns;
-  }
-  ++g.count;
-}
-
-double FloatEstimator::angle_at(uint64_t t) const {
-  const Gyro& g = gyro_;
-  if (g.count == 0) return 0;
-  auto secs = [](uint64_t a, uint64_t b) { return (static_cast<double>(a) - static_cast<double>(b)) * 1e-9; };
-  constexpr double kMax = params::kGyroMaxStep;  // held rates extrapolate this far at most
-  if (t >= g.t[1]) return g.angle[1] + g.r[1] * std::min(secs(t, g.t[1]), kMax);
-  if (g.count < 2) return g.angle[1] - g.r[1] * std::min(secs(g.t[1], t), kMax);
-  if (t <= g.t[0]) return g.angle[0] - g.r[0] * std::min(secs(g.t[0], t), kMax);
-  const double span = secs(g.t[1], g.t[0]), dt = secs(t, g.t[0]);
-  const double rate_t = g.r[0] + (g.r[1] - g.r[0]) * dt / span;
-  return g.angle[0] + (g.r[0] + rate_t) / 2 * dt;
-}
-
-bool FloatEstimator::gyro_covers(uint64_t from, uint64_t to) const {
-  const Gyro& g = gyro_;
-  if (g.count == 0) return false;
-  if (from > to) std::swap(from, to);
-  const uint64_t gap = gyro_gap_ns_;
-  if (g.t_first > from + gap || to > g.t[1] + gap) return false;
-  const uint64_t oldest = g.count < 2 ? g.t[1] : g.t[0];
-  if (to + gap < oldest) return false;
-  const bool hole = g.count >= 2 && g.t[1] - g.t[0] > gap;
-  return !(hole && g.t[0] < to && g.t[1] > from);
-}
-
-bool FloatEstimator::gyro_saturated_since(uint64_t from) const {
-  const Gyro& g = gyro_;
-  return g.count > 0 && (g.at_rail[1] || (g.railed && g.railed_end > from));
-}
-
-FloatMeasurement measure_float(const FloatBank& bank, const EstimatorSettings& s,
-                               const uint8_t* cam0, const uint8_t* cam1,
-                               const FloatPhotometricBalance* balance) {
-  FloatMeasurement m;
-  const int w = s.width, h = s.height;
-  const size_t n = s.kernels.size();
-  Eigen::VectorXd f[2], r[2], c[2];
-  const uint8_t* img[2] = {cam0, cam1};
-  Eigen::VectorXd cols[2];
-  for (int i = 0; i < 2; ++i) {
-    Eigen::VectorXd& col = cols[i];
-    col = float_column_profile(bank.band, img[i], w, h);
-    for (int y = 0; y < h; y += params::kClipRowStep)
-      for (int u = 0; u < w; ++u) {
-        const uint8_t p = img[i][y * w + u];
-        m.clipped += (p == 0 || p == 255);
-        m.sampled += 1;
-      }
-    const FloatKernels& k = bank.cam[i];
-    const double nrm = k.norm.dot(col);
-    f[i] = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));
-    r[i] = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));
-    c[i] = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));
-    if (nrm <= 0) {
-      m.no_light = true;
-      continue;
-    }
-    const double dn = k.norm_d.dot(col) / nrm;
-    for (size_t j = 0; j < n; ++j) {
-      const Eigen::Index jj = static_cast<Eigen::Index>(j);
-      f[i][jj] = k.k[j].dot(col) / nrm;
-      r[i][jj] = k.d[j].dot(col) / nrm - f[i][jj] * dn;
-      c[i][jj] = k.t[j].dot(col) / nrm;  // derivatives of N neglected: a correction term
-    }
-  }
-  m.balance = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));
-  if (balance && !m.no_light)
-    for (Eigen::Index j = 0; j < m.balance.size(); ++j) {
-      m.balance[j] = balance->offset(j);
-      f[1][j] -= m.balance[j];
-    }
-  // Same images, same row weights: equal exactly where the core's sums are.
-  // Flat: every sum in proportion to its rows (exact products: 23 x 16 bits).
-  const Eigen::VectorXd& rows = bank.band.rows;
-  m.no_stereo = cols[0] == cols[1] && (cols[0].array() * rows[0] != rows.array() * cols[0][0]).any();
-  m.mid = (f[0] + f[1]) / 2;
-  m.diff = f[1] - f[0];
-  m.rot = (r[0] + r[1]) / 2;
-  for (int i = 0; i < 2; ++i) {
-    m.f[i] = f[i];
-    m.r[i] = r[i];
-  }
-  // Each kernel's output as a local sinusoid: omega^2 = -C R / R^2 and
-  // z_i = (F_i - dc) - i R_i / omega; arg(z1 conj(z0)) = k h.
-  m.half_phase = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));
-  for (size_t j = 0; j < n && !m.no_light; ++j) {
-    const Eigen::Index jj = static_cast<Eigen::Index>(j);
-    const double rr = r[0][jj] * r[0][jj] + r[1][jj] * r[1][jj];
-    if (rr <= 0) continue;
-    const double sigma = s.kernels[j].sigma;
-    const double w2 = -(c[0][jj] * r[0][jj] + c[1][jj] * r[1][jj]) / rr;
-    const double u = std::clamp(w2 * sigma * sigma, params::kSigmaW2Min, params::kSigmaW2Max);  // (sigma w)^2
-    const double omega = std::sqrt(u) / sigma;
-    const double a0 = f[0][jj] - bank.cam[0].dc[jj], b0 = -r[0][jj] / omega;
-    const double a1 = f[1][jj] - bank.cam[1].dc[jj], b1 = -r[1][jj] / omega;
-    m.half_phase[jj] = std::atan2(b1 * a0 - a1 * b0, a1 * a0 + b1 * b0) / 2;
-  }
-  return m;
 }
 
 EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const uint8_t* cam1) {
   EngineEstimate est;
   est.t_ns = t_ns;
-  FloatMeasurement m = measure_float(bank_, s_, cam0, cam1, s_.photometric_balance ? &balance_ : nullptr);
+
+  FloatColumnProfile p[2];
+  const uint8_t* cam[2] = {cam0, cam1};
+  for (int i = 0; i < 2; ++i) p[i] = float_column_profile(bank_.band, cam[i], s_.width, s_.height);
+  const FloatStereoMeasurement m =
+      float_stereo_measurement(p[0], p[1], bank_, s_.photometric_balance ? &balance_ : nullptr);
+
   uint16_t status = 0;
-  if (m.clipped * 1000 > s_.saturated_permille * m.sampled) status |= kStatusSaturated;
-  const double angle = angle_at(t_ns);
-  const bool first = !have_prev_frame_;
-  have_prev_frame_ = true;
-  const double since_prev = first ? 0 : (static_cast<double>(t_ns) - static_cast<double>(prev_t_ns_)) * 1e-9;
-  const double dtheta = first ? 0 : angle - prev_gyro_angle_ - offset_ * since_prev;
-  heading_ = first ? angle : heading_ + dtheta;
+  const double sampled = p[0].clip_sampled + p[1].clip_sampled;
+  if (m.clipped * 1000 > s_.saturated_permille * sampled) status |= kStatusSaturated;
+
+  const double angle = gyro_.angle_at(t_ns);
+  const double since_prev =
+      have_prev_frame_ ? (static_cast<double>(t_ns) - static_cast<double>(prev_t_ns_)) * 1e-9 : 0;
+  // Gyro angle of the interval with the learned offset removed.
+  const double dtheta = have_prev_frame_ ? angle - prev_gyro_angle_ - gyro_offset_.angle_over(since_prev) : 0;
+  heading_ = have_prev_frame_ ? heading_ + dtheta : angle;
   est.heading = std::remainder(heading_, 2 * M_PI);
   if (est.heading >= M_PI) est.heading -= 2 * M_PI;
-  if (gyro_.max_spacing > gyro_gap_ns_ || !gyro_covers(first ? t_ns : prev_t_ns_, t_ns)) status |= kStatusGyroGap;
-  gyro_.max_spacing = 0;
-  const bool gyro_saturated = gyro_saturated_since(first ? t_ns : prev_t_ns_);  // V held over the interval
+  const uint64_t interval_start = have_prev_frame_ ? prev_t_ns_ : t_ns;
+  if (gyro_.take_max_spacing() > gyro_gap_ns_ || !gyro_.covers(interval_start, t_ns, gyro_gap_ns_))
+    status |= kStatusGyroGap;
+  const bool gyro_saturated = gyro_.saturated_since(interval_start);  // V held over the interval
   if (gyro_saturated) status |= kStatusSaturated;
-  auto converging = [&] { return !started_ || since_start_ns_ < converging_ns_; };
-  if (m.no_light || m.no_stereo) {
+
+  const bool no_stereo = float_same_textured_profile(p[0], p[1], bank_.band);
+  if (m.no_light || no_stereo) {
     status |= (m.no_light ? kStatusNoLight : kStatusNoStereo) | kStatusLowTexture | kStatusNoTof;
     have_prev_ = false;
-    have_ref_ = still_ = false;  // GyroOffset::drop_reference
+    gyro_offset_.drop_reference();
     tof_.reset();
     fusion_.restart();
   } else if (!have_prev_) {
@@ -295,54 +70,36 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
     const double dt = (static_cast<double>(t_ns) - static_cast<double>(prev_t_ns_)) * 1e-9;
     if (t_ns <= prev_t_ns_ || t_ns - prev_t_ns_ > max_gap_ns_) {
       status |= kStatusFrameGap | kStatusRestarted | kStatusNoTof;
-      started_ = false;  // V held; the next interval re-initialises it
-      since_start_ns_ = 0;
-      have_ref_ = still_ = false;
+      observer_.restart();
+      gyro_offset_.drop_reference();
       tof_.reset();
       fusion_.restart();
     } else {
       // (both sides exact in double: the same test as the core's integers)
       if (static_cast<double>(t_ns - prev_t_ns_) > params::kFrameGapPeriods * static_cast<double>(frame_period_ns_))
         status |= kStatusFrameGap;
-      const Eigen::VectorXd s_bar = (m.diff + prev_.diff) / 2;
-      const Eigen::VectorXd r_bar = (m.rot + prev_.rot) / 2;
-      const Eigen::VectorXd e = (m.mid - prev_.mid) - dtheta * r_bar;
-      Eigen::VectorXd a = s_bar;
-      if (s_.baseline_correction) {
-        // dM = (d/h) S x / tan(x), x = k h / 2 (velocity_observer.hpp).
-        for (Eigen::Index j = 0; j < a.size(); ++j) {
-          const double x = std::clamp((m.half_phase[j] + prev_.half_phase[j]) / 2, -params::kMaxHalfPhase,
-                                      params::kMaxHalfPhase);
-          a[j] *= std::fabs(x) > 1e-12 ? x / std::tan(x) : 1.0;
-        }
+      FloatObserverInput in;
+      in.prev = &prev_;
+      in.cur = &m;
+      in.dt = dt;
+      in.dt_ns = t_ns - prev_t_ns_;
+      in.dtheta = dtheta;
+      in.baseline = s_.baseline;
+      in.tau = s_.tau;
+      in.low_texture = s_.low_texture;
+      in.baseline_correction = s_.baseline_correction;
+      const FloatObserverOutput o = gyro_saturated ? observer_.hold() : observer_.update(in);
+      if (!o.updated && !gyro_saturated) status |= kStatusLowTexture;
+      if (s_.gyro_offset_learning) {
+        if (status & (kStatusFrameGap | kStatusGyroGap)) gyro_offset_.drop_reference();
+        gyro_offset_.update({&m, t_ns, angle, o.updated, s_.baseline, s_.still_distance, still_min_ns_});
+        if (gyro_offset_.still()) status |= kStatusStill;
       }
-      const double ss_min = std::min(m.diff.squaredNorm(), prev_.diff.squaredNorm());
-      est.texture = s_bar.size() ? std::sqrt(ss_min / static_cast<double>(s_bar.size())) : 0;
-      const double den = a.squaredNorm();
-      bool textured = false;
-      double residual = 0;
-      if (gyro_saturated) {
-        est.texture = 0;
-      } else if (den <= 0 || s_bar.squaredNorm() <= 0 || est.texture < s_.low_texture) {
-        status |= kStatusLowTexture;
-      } else {
-        textured = true;
-        const double d = s_.baseline * e.dot(a) / den;
-        est.v_direct = d / dt;
-        // VelocityObserver's residual ratio: the kernels' disagreement.
-        const double ee = e.squaredNorm();
-        residual = ee > 0 ? std::min((e - (d / s_.baseline) * a).squaredNorm() / ee, 1.0) : 0.0;
-        if (!started_) {
-          v_ = est.v_direct;
-          started_ = true;
-          since_start_ns_ = 0;
-        } else {
-          v_ += (est.v_direct - v_) * dt / (s_.tau + dt);
-          since_start_ns_ += t_ns - prev_t_ns_;
-        }
-      }
-      // The time of flight and the fusion (Estimator::step).
-      y_ += (textured ? est.v_direct : v_) * dt;
+      est.v_direct = o.v_direct;
+      est.texture = o.texture;
+      // The time of flight: this frame on the history, then its match (not
+      // over an interval whose rotation is unknown).
+      y_ += (o.updated ? o.v_direct : o.v) * dt;
       FloatTofResult tof;
       if (!gyro_saturated) {
         FloatTofFrame tf;
@@ -358,68 +115,35 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
       }
       FloatFusionInput fin;
       fin.dt = dt;
-      fin.v_differential = v_;
-      fin.direct = textured;
-      fin.v_direct = est.v_direct;
-      fin.residual = residual;
+      fin.v_differential = o.v;
+      fin.direct = o.updated;
+      fin.v_direct = o.v_direct;
+      fin.residual = o.residual;
       fin.tof = &tof;
       fin.y = y_;
       fin.baseline = s_.baseline;
       const FloatFusionOutput fo = fusion_.update(fin);
       if (!fo.used_tof) status |= kStatusNoTof;
       est.tof_s = tof.ok ? tof.tau_ns * 1e-9 : 0;
-      if (s_.photometric_balance && textured && !gyro_saturated &&
+      distance_ += fo.v * dt;
+      // The balance (not where the rotation or the interval is in doubt).
+      if (s_.photometric_balance && o.updated && !gyro_saturated &&
           !(status & (kStatusSaturated | kStatusGyroGap | kStatusFrameGap)))
         balance_.learn(prev_, m, dtheta, s_.baseline);
-      distance_ += fo.v * dt;
-      if (s_.gyro_offset_learning) {
-        if (status & (kStatusFrameGap | kStatusGyroGap)) have_ref_ = still_ = false;
-        learn_offset(m, t_ns, angle, textured);
-        if (still_) status |= kStatusStill;
-      }
     }
     prev_ = m;
   }
-  if (converging()) status |= kStatusConverging;
+  if (observer_.converging_now()) status |= kStatusConverging;
   prev_t_ns_ = t_ns;
   prev_gyro_angle_ = angle;
-  est.v_differential = v_;
+  have_prev_frame_ = true;
+  est.v_differential = observer_.v();
   est.v = fusion_.v();
   est.scale = fusion_.scale();
   est.distance = distance_;
   est.status = status;
-  est.gyro_offset = offset_;
+  est.gyro_offset = gyro_offset_.offset();
   return est;
-}
-
-void FloatEstimator::learn_offset(const FloatMeasurement& m, uint64_t t_ns, double angle, bool textured) {
-  auto anchor = [&] {
-    ref_ = m;
-    t_ref_ = t_ns;
-    angle_ref_ = angle;
-    have_ref_ = true;
-    still_ = false;
-  };
-  if (!textured) {
-    have_ref_ = still_ = false;
-    return;
-  }
-  if (!have_ref_ || t_ns <= t_ref_) return anchor();
-  const double den = m.diff.squaredNorm();
-  if (den <= 0) {
-    have_ref_ = false;
-    return;
-  }
-  const double d = s_.baseline * (m.mid - ref_.mid).dot(m.diff) / den;
-  if (std::fabs(d) > s_.still_distance) return anchor();
-  const uint64_t span_ns = t_ns - t_ref_;  // compared in integer ns, as the core
-  still_ = span_ns >= still_min_ns_;
-  if (still_) {
-    offset_ = (angle - angle_ref_) / (static_cast<double>(span_ns) * 1e-9);
-    // Renewed as the core: not still again until still_min has passed.
-    constexpr uint64_t kRenewNs = static_cast<uint64_t>(fx::q_of(params::kGyroOffsetRenewal * 1e9, 0));
-    if (span_ns > kRenewNs) anchor();
-  }
 }
 
 }  // namespace lumavel::host

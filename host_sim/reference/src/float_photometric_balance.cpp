@@ -1,9 +1,10 @@
+// Twin of firmware/core/src/photometric_balance.cpp.
 #include "lumavel/host/float_photometric_balance.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "lumavel/host/float_estimator.hpp"
+#include "lumavel/host/float_measurement.hpp"
 
 namespace lumavel::host {
 
@@ -12,7 +13,8 @@ void FloatPhotometricBalance::reset() {
   mean_s_.setZero();
 }
 
-void FloatPhotometricBalance::learn(const FloatMeasurement& a, const FloatMeasurement& b, double dtheta, double h) {
+void FloatPhotometricBalance::learn(const FloatStereoMeasurement& a, const FloatStereoMeasurement& b, double dtheta,
+                                    double h) {
   const Eigen::Index n = b.diff.size();
   Eigen::VectorXd s_bar(n), innovation(n), s_corr(n);
   for (Eigen::Index k = 0; k < n; ++k) {

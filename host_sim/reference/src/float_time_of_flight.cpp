@@ -1,3 +1,4 @@
+// Twin of firmware/core/src/time_of_flight.cpp.
 #include "lumavel/host/float_time_of_flight.hpp"
 
 #include <algorithm>

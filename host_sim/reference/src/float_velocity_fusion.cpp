@@ -1,3 +1,4 @@
+// Twin of firmware/core/src/velocity_fusion.cpp.
 #include "lumavel/host/float_velocity_fusion.hpp"
 
 #include <algorithm>

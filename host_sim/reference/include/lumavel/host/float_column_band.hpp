@@ -21,7 +21,4 @@ struct FloatColumnBand {
 // edges: each camera's column edge yaws (width + 1).
 FloatColumnBand build_float_column_band(const EstimatorSettings& s, const Eigen::VectorXd (&edges)[2]);
 
-// Twin of column_profile: each column's row-weighted sum of img (width x height, packed).
-Eigen::VectorXd float_column_profile(const FloatColumnBand& band, const uint8_t* img, int width, int height);
-
 }  // namespace lumavel::host

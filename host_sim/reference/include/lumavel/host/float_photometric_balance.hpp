@@ -8,14 +8,14 @@
 
 namespace lumavel::host {
 
-struct FloatMeasurement;
+struct FloatStereoMeasurement;
 
 class FloatPhotometricBalance {
  public:
   explicit FloatPhotometricBalance(int kernels = 0) : mean_s_(Eigen::VectorXd::Zero(kernels)) {}
   void reset();
   // One usable interval: dtheta the gyro angle, h the baseline.
-  void learn(const FloatMeasurement& prev, const FloatMeasurement& cur, double dtheta, double h);
+  void learn(const FloatStereoMeasurement& prev, const FloatStereoMeasurement& cur, double dtheta, double h);
   // cam1's offset b_k; 0 until ready().
   double offset(Eigen::Index k) const { return ready() ? mean_s_[k] : 0; }
   bool ready() const { return learned_ >= params::kBalanceReadyLength; }

@@ -1,0 +1,59 @@
+// The double twin of firmware/core/velocity_observer.hpp (read the core's
+// header for the model, the least squares over kernels and the
+// finite-baseline correction).
+#pragma once
+#include <cstdint>
+
+#include "lumavel/host/float_measurement.hpp"
+
+namespace lumavel::host {
+
+struct FloatObserverInput {
+  const FloatStereoMeasurement* prev = nullptr;
+  const FloatStereoMeasurement* cur = nullptr;
+  double dt = 0;        // s
+  uint64_t dt_ns = 0;   // the same interval in ns: the converging time adds these, as the core does
+  double dtheta = 0;    // integrated gyro over the interval, rad
+  double baseline = 0;  // m
+  double tau = 0;       // s
+  double low_texture = 0;
+  bool baseline_correction = false;
+};
+
+struct FloatObserverOutput {
+  double v = 0;         // m/s
+  double v_direct = 0;  // m/s, 0 when not updated
+  double texture = 0;   // rms over kernels of F1 - F0, weaker frame of the interval
+  double residual = 0;  // the kernels' disagreement, [0, 1]
+  bool updated = false;  // false: low texture, V held
+};
+
+class FloatVelocityObserver {
+ public:
+  // tau_us: the configured time constant in whole microseconds, as the core
+  // has it, so that both engines stop converging on the same frame.
+  explicit FloatVelocityObserver(uint32_t tau_us = 0);
+  // Next measurement re-initialises V directly; V is held until then.
+  void restart() {
+    started_ = false;
+    since_start_ns_ = 0;
+  }
+  FloatObserverOutput update(const FloatObserverInput& in);
+  // An interval that cannot be used (its rotation unknown): V held, no update.
+  FloatObserverOutput hold() const {
+    FloatObserverOutput o;
+    o.v = v_;
+    return o;
+  }
+  double v() const { return v_; }
+  // Not started, or started less than kConvergingTaus time constants ago.
+  bool converging_now() const { return !started_ || since_start_ns_ < converging_ns_; }
+
+ private:
+  double v_ = 0;
+  bool started_ = false;
+  uint64_t since_start_ns_ = 0;
+  uint64_t converging_ns_ = 0;
+};
+
+}  // namespace lumavel::host

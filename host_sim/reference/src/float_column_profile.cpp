@@ -1,0 +1,30 @@
+// Twin of firmware/core/src/column_profile.cpp.
+#include "lumavel/host/float_column_profile.hpp"
+
+#include "lumavel/core/estimator_params.hpp"
+
+namespace lumavel::host {
+
+FloatColumnProfile float_column_profile(const FloatColumnBand& band, const uint8_t* img, int width, int height) {
+  FloatColumnProfile p;
+  p.sum = Eigen::VectorXd::Zero(width);
+  for (int y = 0; y < height; ++y)
+    for (int u = 0; u < width; ++u) p.sum[u] += band.row_weight(y, u) * img[y * width + u];
+  for (int y = 0; y < height; y += params::kClipRowStep)
+    for (int u = 0; u < width; ++u) {
+      const uint8_t v = img[y * width + u];
+      p.clipped += (v == 0 || v == 255);
+      p.clip_sampled += 1;
+    }
+  return p;
+}
+
+bool float_same_textured_profile(const FloatColumnProfile& a, const FloatColumnProfile& b,
+                                 const FloatColumnBand& band) {
+  // Same images, same row weights: equal exactly where the core's sums are.
+  // Flat: every sum in proportion to its rows (exact products: 23 x 16 bits).
+  const Eigen::VectorXd& rows = band.rows;
+  return a.sum == b.sum && (a.sum.array() * rows[0] != rows.array() * a.sum[0]).any();
+}
+
+}  // namespace lumavel::host
