@@ -38,11 +38,17 @@ StereoMeasurement measure_rotated(test::SyntheticRig& rig, const KernelBank& ban
 TEST_GROUP(Identities){};
 
 TEST(Identities, DerivativeKernelIsTheRotationDerivative) {
+  // hfov 50: within 3 % of the rms; hfov 90: within 10 % (measured 8.9 % at 40
+  // columns, 3.8 % at 160: the columns' width against the texture, not the
+  // band; 120 deg pinholes fail it: 19 % at 160 columns, docs/design.md).
+  for (const double hfov_deg : {50.0, 90.0})
   for (const bool band : {false, true}) {  // plain column sums, and the elevation band (kernel_bank.hpp)
     for (int w : {40, 160}) {
       test::SyntheticRig rig;
       rig.width = w;
       rig.height = w * 3 / 4;
+      rig.hfov = hfov_deg * M_PI / 180;
+      rig.vfov = 2 * std::atan(std::tan(rig.hfov / 2) * 3 / 4);  // square pixels
       rig.supersample = w == 40 ? 4 : 2;
       rig.misalignment = 1.6 * M_PI / 180;
       host::EstimatorSettings s = rig.settings();
@@ -64,11 +70,56 @@ TEST(Identities, DerivativeKernelIsTheRotationDerivative) {
           worst = std::fmax(worst, std::fabs(fd - std::ldexp(m0.rot[k], -20)) / rms);
         }
       }
-      std::printf("\n  %dpx%s: worst |dF/dtheta (kernel) - finite difference| = %.2f %% of rms\n", w,
+      std::printf("\n  hfov %.0f, %dpx%s: worst |dF/dtheta (kernel) - finite difference| = %.2f %% of rms\n", hfov_deg, w,
                   band ? ", band" : "", 100 * worst);
-      CHECK(worst < 0.03);
+      CHECK(worst < (hfov_deg < 60 ? 0.03 : 0.10));
     }
   }
+}
+
+// A wide camera turning before a scene that brightens towards its top and
+// bottom (a floor and a ceiling, say): each column keeps its own elevation
+// extent, so the derivative along the columns is not the rotation derivative;
+// the edge-row correction (measurement.hpp) makes it so. hfov 90, 160
+// columns: 11.1 % of the rms with it, 180.5 % without (measured).
+TEST(Identities, EdgeRowsMakeTheColumnDerivativeTheRotationDerivative) {
+  test::SyntheticRig rig;
+  rig.width = 160;
+  rig.height = 120;
+  rig.supersample = 2;
+  rig.hfov = 90 * M_PI / 180;
+  rig.vfov = 2 * std::atan(std::tan(rig.hfov / 2) * 3 / 4);
+  rig.texture = [](double X, double Z) {
+    return 100 + 40 * std::sin(2 * M_PI * X / 0.37) + 25 * std::sin(2 * M_PI * X / 0.23 + 1.3) +
+           60 * Z * Z * (1.2 + std::sin(2 * M_PI * X / 0.53));
+  };
+  auto bank = std::make_unique<KernelBank>();
+  build_kernel_bank(host::to_fixed_config(rig.settings()), *bank);
+  CHECK(bank->leaning);
+  auto worst_error = [&] {
+    const double delta = 0.5 * M_PI / 180;
+    double worst = 0;
+    for (double x : {0.0, 0.11, 0.37}) {
+      const StereoMeasurement m0 = measure_rotated(rig, *bank, x, 0);
+      const StereoMeasurement mp = measure_rotated(rig, *bank, x, delta);
+      const StereoMeasurement mm = measure_rotated(rig, *bank, x, -delta);
+      double rms = 0;
+      for (int k = 0; k < bank->count; ++k) rms += std::pow(std::ldexp(m0.rot[k], -20), 2);
+      rms = std::sqrt(rms / bank->count);
+      for (int k = 0; k < bank->count; ++k) {
+        const double fd = std::ldexp(mp.mid[k] - mm.mid[k], -28) / (2 * delta);
+        worst = std::fmax(worst, std::fabs(fd - std::ldexp(m0.rot[k], -20)) / rms);
+      }
+    }
+    return worst;
+  };
+  const double with = worst_error();
+  bank->leaning = false;
+  const double without = worst_error();
+  std::printf("\n  hfov 90, 160px, floor and ceiling: worst error %.1f %% of rms with the edge rows, %.1f %% without\n",
+              100 * with, 100 * without);
+  CHECK(with < 0.2);
+  CHECK(without > 4 * with);
 }
 
 TEST(Identities, BaselineDifferenceTendsToTheTranslationDerivative) {

@@ -109,6 +109,18 @@ void column_profile(const uint8_t* pixels, uint16_t width, uint16_t height, uint
     for (uint16_t r = first; r < height - first; ++r) s += p[uint32_t{r} * stride];
     out.sum[u] = static_cast<ColumnSum>(band ? to_band_q8(p, s, first, height, stride, first, band->edge_q8[u]) : s);
   }
+  // Edge rows (a line scan has none: its arrays are one entry long).
+  out.edges = band == nullptr && kBandColumns > 1 && height >= 2;
+  if (out.edges) {
+    const uint8_t* top = pixels;
+    const uint8_t* bottom = pixels + uint32_t(height - 1) * stride;
+    const int32_t h = height;
+    for (uint16_t c = 0; c < width && c < kBandColumns; ++c) {
+      const int32_t edge = height >= 4 ? 3 * (top[c] + bottom[c]) - top[c + stride] - bottom[c - stride]
+                                       : 2 * (top[c] + bottom[c]);
+      out.edge4[c] = h * edge - 4 * int32_t{out.sum[c]};
+    }
+  }
   uint32_t clipped = 0;
   for (uint16_t r = 0; r < height; r = static_cast<uint16_t>(r + kClipRowStep)) {
     const uint8_t* p = pixels + uint32_t{r} * stride;

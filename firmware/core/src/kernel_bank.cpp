@@ -111,6 +111,27 @@ bool build_band(const EstimatorConfig& cfg, ColumnBand& band) {
   return true;
 }
 
+int64_t clamp_lean(int64_t v, int64_t lim) { return v > lim ? lim : (v < -lim ? -lim : v); }
+
+// Column u's lean, -d ln s / d(yaw), s the elevation scale (column_cos_q30):
+// a central difference over the column's neighbours (one-sided at the ends),
+// in body yaw. For a pinhole s = cos(a_u) and the lean is tan(a_u) (to 0.03 %
+// at 40 columns / 60 deg inside, 4 % on the outermost columns). 0 where a
+// column is turned to 90 deg; clamped to +-4 (LeanQ24).
+LeanQ24 column_lean_q24(const EstimatorConfig& cfg, int cam, uint16_t u) {
+  const uint16_t lo = u > 0 ? static_cast<uint16_t>(u - 1) : u;
+  const uint16_t hi = u + 1 < cfg.width ? static_cast<uint16_t>(u + 1) : u;
+  const int64_t s = column_cos_q30(cfg, cam, u), s_lo = column_cos_q30(cfg, cam, lo), s_hi = column_cos_q30(cfg, cam, hi);
+  const CameraGeometry& g = cfg.cam[cam];
+  const EdgeOffsetQ15* lens = cfg.edge_offsets[cam];
+  const auto mid = [&](uint16_t c) { return (int64_t{edge_yaw(g, lens, c)} + edge_yaw(g, lens, static_cast<uint16_t>(c + 1))) / 2; };
+  const int64_t dpsi = mid(hi) - mid(lo);  // Q28
+  if (s <= 0 || s_lo <= 0 || s_hi <= 0 || dpsi == 0) return 0;
+  const int64_t rel = fx::div_q(s_hi - s_lo, s, 30);  // ds / s, Q30 (|.| < 2)
+  constexpr int64_t kMax = int64_t{4} << fx::kLeanFrac;
+  return static_cast<LeanQ24>(clamp_lean(fx::div_q(-rel, dpsi, fx::kLeanFrac + fx::kAngleFrac - 30), kMax));
+}
+
 // Raw column integrals, in sigma units, Q3.28, written into the tables'
 // storage before quantisation (no scratch memory: the edges are computed as
 // they are needed, so no edge table is kept in RAM), weighted by cos(a_u)
@@ -277,6 +298,10 @@ void build_kernel_bank(const EstimatorConfig& cfg, KernelBank& bank) {
     build_kernel(cfg, centre, bank.banded, cfg.kernels[k], false, kk, dd, tt);
   }
   for (int k = 0; k < cfg.kernel_count; ++k) bank.sigma[k] = cfg.kernels[k].sigma;
+  bank.leaning = !bank.banded && kBandColumns > 1 && cfg.height >= 2;
+  for (int i = 0; i < 2; ++i)
+    for (uint16_t u = 0; u < kBandColumns; ++u)
+      bank.lean[i][u] = bank.leaning && u < cfg.width ? column_lean_q24(cfg, i, u) : 0;
   // F of a uniform image: each column sums its band's rows of one value.
   for (int i = 0; i < 2; ++i) {
     const auto uniform_dot = [&](const KernelTable& t) {

@@ -42,6 +42,21 @@ int64_t dot(const KernelTable16& t, const ColumnProfile& p) {
   return acc;
 }
 
+// sum_u w[u] * v[u] for the edge-row profile (|v| < 2^23, as a banded sum).
+int64_t dot_values(const KernelTable& t, const int32_t* v, uint16_t width) {
+  int64_t acc = 0;
+  for (uint16_t u = 0; u < width; ++u) acc += int64_t{t.w[u]} * v[u];
+  return acc;
+}
+
+// The rotation term's edge-row correction (measurement.hpp), 2^kEdgeScaleBits x per column:
+// C = lean x E, |lean| <= 4 (Q24), |4 E| < 2^18: |C| < 2^24.3 (times 2^31 x 160 < 2^63).
+constexpr int kEdgeScaleBits = 6;  // C is 2^6 x lean x E
+void edge_correction(const ColumnProfile& p, const LeanQ24* lean, int32_t* c) {
+  for (uint16_t u = 0; u < p.width && u < kBandColumns; ++u)
+    c[u] = static_cast<int32_t>(fx::shr_round(int64_t{lean[u]} * p.edge4[u], fx::kLeanFrac + 2 - kEdgeScaleBits));
+}
+
 // 1/N as a 31-bit mantissa and a power of two, so that each ratio X/N is
 // one 32x32->64 multiply instead of a 64-bit division (no divider on M0, a
 // slow library routine on M3).
@@ -92,7 +107,9 @@ struct CameraOutputs {
 
 // F_k = B_k / N (paper eq. 21 applied after the kernel: one division per
 // kernel instead of one per pixel); dF/dtheta = (dB - F dN) / N.
-void camera_outputs(const ColumnProfile& p, const CameraKernels& ck, uint8_t count,
+// lean: the bank's column leans where the profile has its edge rows (the
+// rotation term's correction: measurement.hpp), else nullptr.
+void camera_outputs(const ColumnProfile& p, const CameraKernels& ck, uint8_t count, const LeanQ24* lean,
                     CameraOutputs& out) {
   out.no_light = false;
   out.saturated = false;
@@ -105,10 +122,18 @@ void camera_outputs(const ColumnProfile& p, const CameraKernels& ck, uint8_t cou
   const Reciprocal inv = reciprocal(n);
   bool sat = false;
   // value of table t = w * 2^-(31 + exp): a ratio of two dots carries 2^(exp_n - exp_t).
-  const SlopeQ20 dn_over_n = ratio(dot(ck.norm_d, p), inv, fx::kSlopeFrac + ck.norm.exp - ck.norm_d.exp, &sat);
+  int32_t c[kBandColumns];
+  if (lean) edge_correction(p, lean, c);
+  // A correction term: x 2^-kEdgeScaleBits, through each table's own B kernel.
+  const auto corr = [&](const KernelTable& t) {
+    return lean ? int64_t{ratio(dot_values(t, c, p.width), inv, fx::kSlopeFrac - kEdgeScaleBits + ck.norm.exp - t.exp, &sat)} : 0;
+  };
+  const SlopeQ20 dn_over_n = fx::sat32(
+      int64_t{ratio(dot(ck.norm_d, p), inv, fx::kSlopeFrac + ck.norm.exp - ck.norm_d.exp, &sat)} + corr(ck.norm), &sat);
   for (uint8_t k = 0; k < count; ++k) {
     const ValueQ28 f = ratio(dot(ck.k[k], p), inv, fx::kValueFrac + ck.norm.exp - ck.k[k].exp, &sat);
-    const SlopeQ20 db_over_n = ratio(dot(ck.d[k], p), inv, fx::kSlopeFrac + ck.norm.exp - ck.d[k].exp, &sat);
+    const SlopeQ20 db_over_n = fx::sat32(
+        int64_t{ratio(dot(ck.d[k], p), inv, fx::kSlopeFrac + ck.norm.exp - ck.d[k].exp, &sat)} + corr(ck.k[k]), &sat);
     out.f[k] = f;
     // T is a 16-bit table: value = w * 2^-(15 + exp), a 2^16 larger step than a q31 table.
     out.c[k] = ratio(dot(ck.t[k], p), inv, fx::kCurvFrac + ck.norm.exp - ck.t[k].exp + 16, &sat);
@@ -168,8 +193,8 @@ AngleQ28 half_phase(const CameraOutputs& c0, const CameraOutputs& c1, ValueQ28 d
 void stereo_measurement(const ColumnProfile& p0, const ColumnProfile& p1, const KernelBank& bank,
                         const PhotometricBalance* balance, StereoMeasurement& out) {
   CameraOutputs c0, c1;
-  camera_outputs(p0, bank.cam[0], bank.count, c0);
-  camera_outputs(p1, bank.cam[1], bank.count, c1);
+  camera_outputs(p0, bank.cam[0], bank.count, bank.leaning && p0.edges ? bank.lean[0] : nullptr, c0);
+  camera_outputs(p1, bank.cam[1], bank.count, bank.leaning && p1.edges ? bank.lean[1] : nullptr, c1);
   for (uint8_t k = 0; k < bank.count; ++k) {
     const ValueQ28 delta = balance && !c0.no_light && !c1.no_light ? balance->offset(k) : 0;
     out.balance[k] = delta;

@@ -1,4 +1,4 @@
-// Twin of build_band in firmware/core/src/kernel_bank.cpp (the sums it weighs: float_column_profile.cpp).
+// Twin of build_band and column_cos_q30 in firmware/core/src/kernel_bank.cpp (the sums it weighs: float_column_profile.cpp).
 #include "lumavel/host/float_column_band.hpp"
 
 #include <algorithm>
@@ -7,10 +7,19 @@
 namespace lumavel::host {
 namespace {
 
-// Each column's elevation scale: the lens table's where there is one, else
-// cos(a_u), a_u the yaw of column u's centre (the mean of its edges) from the
-// axis; 0 at or past 90 deg (the bank then does not band).
-Eigen::VectorXd column_cos(const CameraModel& cam, const Eigen::VectorXd& edges) {
+
+
+FloatColumnBand unbanded(int width, int height) {
+  FloatColumnBand b;
+  b.row_weight = Eigen::MatrixXd::Ones(height, width);
+  b.rows = Eigen::VectorXd::Constant(width, height);
+  for (auto& c : b.cos) c = Eigen::VectorXd::Ones(width);
+  return b;
+}
+
+}  // namespace
+
+Eigen::VectorXd float_column_cos(const CameraModel& cam, const Eigen::VectorXd& edges) {
   if (!cam.elevation_scale.empty())
     return Eigen::Map<const Eigen::VectorXd>(cam.elevation_scale.data(), static_cast<Eigen::Index>(cam.elevation_scale.size()));
   const double axis = cam.axis_yaw;
@@ -23,21 +32,11 @@ Eigen::VectorXd column_cos(const CameraModel& cam, const Eigen::VectorXd& edges)
   return c;
 }
 
-FloatColumnBand unbanded(int width, int height) {
-  FloatColumnBand b;
-  b.row_weight = Eigen::MatrixXd::Ones(height, width);
-  b.rows = Eigen::VectorXd::Constant(width, height);
-  for (auto& c : b.cos) c = Eigen::VectorXd::Ones(width);
-  return b;
-}
-
-}  // namespace
-
 FloatColumnBand build_float_column_band(const EstimatorSettings& s, const Eigen::VectorXd (&edges)[2]) {
   const int w = s.width, h = s.height;
   if (h < 2 || !s.elevation_band) return unbanded(w, h);
   FloatColumnBand b;
-  for (int i = 0; i < 2; ++i) b.cos[i] = column_cos(s.cam[i], edges[i]);
+  for (int i = 0; i < 2; ++i) b.cos[i] = float_column_cos(s.cam[i], edges[i]);
   if (b.cos[0].minCoeff() <= 0 || b.cos[1].minCoeff() <= 0) return unbanded(w, h);
   const Eigen::VectorXd mean = (b.cos[0] + b.cos[1]) / 2;
   const double cos_min = mean.minCoeff();

@@ -10,6 +10,16 @@ FloatColumnProfile float_column_profile(const FloatColumnBand& band, const uint8
   p.sum = Eigen::VectorXd::Zero(width);
   for (int y = 0; y < height; ++y)
     for (int u = 0; u < width; ++u) p.sum[u] += band.row_weight(y, u) * img[y * width + u];
+  if (!band.banded && height >= 2) {
+    p.edge = Eigen::VectorXd::Zero(width);
+    const uint8_t* top = img;
+    const uint8_t* bottom = img + (height - 1) * width;
+    for (int u = 0; u < width; ++u) {
+      const double at_edges = height >= 4 ? 1.5 * (top[u] + bottom[u]) - 0.5 * (top[u + width] + bottom[u - width])
+                                          : top[u] + bottom[u];
+      p.edge[u] = 0.5 * height * at_edges - p.sum[u];
+    }
+  }
   for (int y = 0; y < height; y += params::kClipRowStep)
     for (int u = 0; u < width; ++u) {
       const uint8_t v = img[y * width + u];

@@ -1,6 +1,7 @@
 // Twin of firmware/core/src/kernel_bank.cpp (the band itself: float_column_band.cpp).
 #include "lumavel/host/float_kernel_bank.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "lumavel/core/estimator_params.hpp"
@@ -108,6 +109,20 @@ FloatKernelBank build_float_kernel_bank(const EstimatorSettings& s) {
     const Eigen::VectorXd& rows = b.band.rows;
     c.dc.resize(static_cast<Eigen::Index>(n));
     for (size_t k = 0; k < n; ++k) c.dc[static_cast<Eigen::Index>(k)] = c.k[k].dot(rows) / c.norm.dot(rows);
+  }
+  // Each column's lean, as column_lean_q24: a central difference of the
+  // elevation scale (one-sided at the ends), clamped to +-4.
+  b.leaning = !b.band.banded && s.height >= 2;
+  for (int i = 0; i < 2; ++i) {
+    const Eigen::VectorXd sc = float_column_cos(s.cam[i], b.edge[i]);
+    auto mid = [&](int u) { return (b.edge[i][u] + b.edge[i][u + 1]) / 2; };
+    b.cam[i].lean = Eigen::VectorXd::Zero(s.width);
+    for (int u = 0; u < s.width && b.leaning; ++u) {
+      const int lo = u > 0 ? u - 1 : u, hi = u + 1 < s.width ? u + 1 : u;
+      const double dpsi = mid(hi) - mid(lo);
+      if (sc[u] <= 0 || sc[lo] <= 0 || sc[hi] <= 0 || dpsi == 0) continue;
+      b.cam[i].lean[u] = std::clamp(-(sc[hi] - sc[lo]) / sc[u] / dpsi, -4.0, 4.0);
+    }
   }
   return b;
 }

@@ -15,7 +15,9 @@ struct CameraOutputs {
 };
 
 // F_k = B_k / N (paper eq. 21 applied after the kernel); dF/dtheta = (dB - F dN) / N.
-CameraOutputs camera_outputs(const FloatColumnProfile& p, const FloatCameraKernels& k, Eigen::Index n) {
+// With the bank leaning, dB/dtheta and dN/dtheta gain the edge-row correction
+// sum_u K[u] lean[u] E[u] (the core's measurement.hpp says why).
+CameraOutputs camera_outputs(const FloatColumnProfile& p, const FloatCameraKernels& k, Eigen::Index n, bool leaning) {
   CameraOutputs out;
   const Eigen::VectorXd& col = p.sum;
   const double nrm = k.norm.dot(col);
@@ -26,11 +28,14 @@ CameraOutputs camera_outputs(const FloatColumnProfile& p, const FloatCameraKerne
     out.no_light = true;
     return out;
   }
-  const double dn = k.norm_d.dot(col) / nrm;
+  const bool lean = leaning && p.edge.size() == col.size();
+  const Eigen::VectorXd corr = lean ? Eigen::VectorXd(k.lean.cwiseProduct(p.edge)) : Eigen::VectorXd();
+  const auto correction = [&](const Eigen::VectorXd& t) { return lean ? t.dot(corr) / nrm : 0.0; };
+  const double dn = k.norm_d.dot(col) / nrm + correction(k.norm);
   for (Eigen::Index j = 0; j < n; ++j) {
     const size_t jj = static_cast<size_t>(j);
     out.f[j] = k.k[jj].dot(col) / nrm;
-    out.r[j] = k.d[jj].dot(col) / nrm - out.f[j] * dn;
+    out.r[j] = k.d[jj].dot(col) / nrm + correction(k.k[jj]) - out.f[j] * dn;
     out.c[j] = k.t[jj].dot(col) / nrm;  // derivatives of N neglected: a correction term
   }
   return out;
@@ -57,7 +62,7 @@ FloatStereoMeasurement float_stereo_measurement(const FloatColumnProfile& p0, co
                                                 const FloatPhotometricBalance* balance) {
   FloatStereoMeasurement m;
   const auto n = static_cast<Eigen::Index>(bank.sigma.size());
-  CameraOutputs c[2] = {camera_outputs(p0, bank.cam[0], n), camera_outputs(p1, bank.cam[1], n)};
+  CameraOutputs c[2] = {camera_outputs(p0, bank.cam[0], n, bank.leaning), camera_outputs(p1, bank.cam[1], n, bank.leaning)};
   m.no_light = c[0].no_light || c[1].no_light;
   m.balance = Eigen::VectorXd::Zero(n);
   if (balance && !m.no_light)

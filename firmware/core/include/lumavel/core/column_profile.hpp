@@ -29,8 +29,15 @@ struct ColumnProfile {
   // Everything downstream is a ratio of two dot products of one profile, so
   // the scale cancels; plain sums keep the cheaper 32-bit products.
   ColumnSum sum[kMaxColumns];
+  // Without a band, each column's edge rows against its sum, for the rotation
+  // term's Leibniz correction (measurement.hpp): 4 E = H (3 r0 - r1 + 3 rb - rb1)
+  // - 4 sum, r0/rb the top and bottom rows, r1/rb1 the next ones in (the
+  // rows' value at the image's edge, extrapolated half a row; H < 4: the
+  // edge rows alone, 2 H (r0 + rb) - 4 sum). |4 E| < 2^18. Valid when `edges`.
+  int32_t edge4[kBandColumns];
   uint16_t width;
   bool q8;
+  bool edges;
   uint32_t clipped;           // pixels at 0 or 255 among the sampled rows
   uint32_t clip_sampled;      // pixels inspected for clipping (every 8th row)
 };

@@ -73,6 +73,11 @@ struct KernelBank {
   CameraKernels cam[2];
   ValueQ28 dc[2][kMaxKernels];  // F of a uniform image (sum K / sum N), per camera
   AngleQ28 sigma[kMaxKernels];
+  // Each column's lean, -d ln(elevation scale)/d(yaw), per camera, for the
+  // rotation term's edge-row correction (measurement.hpp); used where the
+  // columns sum all rows (not banded; a line scan keeps one entry, unused).
+  bool leaning;
+  LeanQ24 lean[2][kBandColumns];
   // No edge table: the edges (column_edge_yaws) are computed while the
   // tables are built, which saves 2 x (kMaxColumns + 1) x 4 bytes of RAM.
 };

@@ -1,6 +1,20 @@
 // Per-frame stereo measurement: the normalised kernel outputs of both
 // cameras combined into mid values, the baseline difference and the
 // rotation derivative (paper eq. 2, 6, 8, 21).
+//
+// The rotation derivative and the column edges. A pinhole column at yaw a
+// from the axis sums its rows over |tan E| <= (H/2) s / f, s = cos a (a lens:
+// its elevation scale), and its sum carries a factor f / s. Turning the
+// camera slides the scene through the columns, but not rigidly: each column
+// keeps its own elevation extent and factor. By Leibniz' rule the true
+// rotation derivative of a column sum P is the derivative along the columns
+// (the D tables) plus lean (E), lean = -d ln s / d(yaw) (the bank's, tan a for
+// a pinhole) and E = (H/2)(edge rows' value at the image's edge) - P; with all
+// rows of a uniform column E = 0. Through the B kernels it adds sum_u K[u]
+// lean[u] E[u] to dB/dtheta (and to dN/dtheta). Without it a wide camera
+// turning reads as motion (the slalom of docs/results.md at hfov 90: E 12 %
+// -> 4 %); with the elevation band (every column the same extent) it is not
+// needed and not applied, nor on a line scan (one row, E = 0).
 #pragma once
 #include <cstdint>
 

@@ -36,6 +36,12 @@
 //                                                                         sets its band and table weight
 //                                                                         (kernel_bank.hpp). Rounding 3e-5
 //                                                                         relative, below the tables' own
+//   LeanQ24     int32    Q7.24    [-4, 4] used          6e-8              a column's lean, -d ln(elevation
+//                                                                         scale)/d(yaw): how fast its rows'
+//                                                                         elevation extent shrinks sideways,
+//                                                                         for the rotation term's edge-row
+//                                                                         correction (measurement.hpp);
+//                                                                         clamped to +-4 (76 deg off axis)
 //
 // Every conversion that can overflow saturates and reports it (see sat32).
 #pragma once
@@ -55,6 +61,7 @@ using PixelQ16 = int32_t;
 using CurvQ12 = int32_t;
 using EdgeOffsetQ15 = int16_t;
 using ElevationScaleQ14 = uint16_t;
+using LeanQ24 = int32_t;
 using FracQ16 = int32_t;
 using ScaleQ24 = int32_t;
 using AccelQ16 = int32_t;
@@ -74,6 +81,7 @@ constexpr int kPixelFrac = 16;
 constexpr int kCurvFrac = 12;
 constexpr int kEdgeOffsetFrac = 15;
 constexpr int kElevationScaleFrac = 14;
+constexpr int kLeanFrac = 24;
 constexpr int kFracFrac = 16;
 constexpr int kScaleFrac = 24;
 constexpr int kAccelFrac = 16;

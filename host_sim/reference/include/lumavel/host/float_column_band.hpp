@@ -18,6 +18,11 @@ struct FloatColumnBand {
   Eigen::VectorXd cos[2];      // cos(a_u) per column: the tables' weight (1 when not banded)
 };
 
+// Twin of column_cos_q30: each column's elevation scale, the lens table's
+// where there is one, else cos(a_u), a_u the yaw of column u's centre (the
+// mean of its edges, width + 1 of them) from the axis; 0 at or past 90 deg.
+Eigen::VectorXd float_column_cos(const CameraModel& cam, const Eigen::VectorXd& edges);
+
 // edges: each camera's column edge yaws (width + 1).
 FloatColumnBand build_float_column_band(const EstimatorSettings& s, const Eigen::VectorXd (&edges)[2]);
 

@@ -11,6 +11,9 @@ namespace lumavel::host {
 
 struct FloatColumnProfile {
   Eigen::VectorXd sum;      // per column: its row-weighted sum (FloatColumnBand::row_weight)
+  // Without a band: E = (H/2)(edge rows' value at the image's edge) - sum, per
+  // column (the core's edge4 / 4); empty with a band or on a line scan.
+  Eigen::VectorXd edge;
   double clipped = 0;       // pixels at 0 or 255 among the sampled rows
   double clip_sampled = 0;  // pixels inspected for clipping (every kClipRowStep-th row)
 };

@@ -14,6 +14,7 @@ struct FloatCameraKernels {
   Eigen::VectorXd norm, norm_d;          // normaliser window (order 0) and its angular derivative
   Eigen::VectorXd dc;                    // F of a uniform image, per kernel (sum K / sum N)
   std::vector<Eigen::VectorXd> k, d, t;  // B, dB/dtheta, d3B/dtheta3 kernels
+  Eigen::VectorXd lean;                  // -d ln(elevation scale)/d(yaw) per column (when leaning)
 };
 
 // Tables of both cameras, built exactly as build_kernel_bank does.
@@ -22,6 +23,7 @@ struct FloatKernelBank {
   Eigen::VectorXd edge[2];    // column edge yaws, width + 1
   FloatColumnBand band;       // the rows each column sums, the tables' cos(a_u) weight
   std::vector<double> sigma;  // each kernel's scale, rad (one per kernel: the bank's kernel count)
+  bool leaning = false;       // the rotation term's edge-row correction applies (not banded, 2+ rows)
 };
 FloatKernelBank build_float_kernel_bank(const EstimatorSettings& s);
 
