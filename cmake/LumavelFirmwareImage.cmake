@@ -11,12 +11,14 @@ function(lumavel_firmware_image target)
   cmake_parse_arguments(F "" "LINKER_SCRIPT;FLASH_BYTES;RAM_BYTES" "" ${ARGN})
   set(out $<TARGET_FILE:${target}>)
   set(map ${CMAKE_CURRENT_BINARY_DIR}/${target}.map)
-  # gcc, not g++, drives the link: no libstdc++ is installed or wanted.
+  # gcc, not g++, drives the link: no libstdc++ is linked (nor installed, on RISC-V).
   set_target_properties(${target} PROPERTIES LINKER_LANGUAGE C SUFFIX .elf
                         LINK_DEPENDS ${F_LINKER_SCRIPT})
   target_compile_options(${target} PRIVATE -fstack-usage)
+  # LUMAVEL_IMAGE_LINK_OPTIONS: the toolchain file's C library choice
+  # (newlib-nano on Arm; none on RISC-V).
   target_link_options(${target} PRIVATE -T${F_LINKER_SCRIPT} -L${LUMAVEL_BOARDS_COMMON_DIR}
-                      --specs=nano.specs -Wl,-Map=${map} -Wl,--cref)
+                      ${LUMAVEL_IMAGE_LINK_OPTIONS} -Wl,-Map=${map} -Wl,--cref)
   add_custom_command(TARGET ${target} POST_BUILD
     COMMAND ${LUMAVEL_OBJCOPY} -O binary ${out} ${CMAKE_CURRENT_BINARY_DIR}/${target}.bin
     COMMAND ${LUMAVEL_OBJCOPY} -O ihex ${out} ${CMAKE_CURRENT_BINARY_DIR}/${target}.hex

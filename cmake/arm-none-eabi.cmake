@@ -40,6 +40,8 @@ set(CMAKE_CXX_FLAGS_RELEASE_INIT "-Os")
 set(CMAKE_C_FLAGS_MINSIZEREL_INIT "-Os")
 set(CMAKE_CXX_FLAGS_MINSIZEREL_INIT "-Os")
 set(CMAKE_EXE_LINKER_FLAGS_INIT "${LUMAVEL_BOARD_FLAGS} -nostartfiles -Wl,--gc-sections")
+# Read by cmake/LumavelFirmwareImage.cmake: images link newlib-nano.
+set(LUMAVEL_IMAGE_LINK_OPTIONS --specs=nano.specs)
 
 set(CMAKE_FIND_ROOT_PATH_MODE_PROGRAM NEVER)
 set(CMAKE_FIND_ROOT_PATH_MODE_LIBRARY ONLY)

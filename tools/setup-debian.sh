@@ -17,6 +17,9 @@ packages=(
   clang-14 libclang-rt-14-dev
   # firmware cross build and the emulated Cortex-M
   gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-dev qemu-system-arm
+  # the RISC-V (RV32) build and its emulator (qemu-system-riscv32); no C
+  # library, not picolibc: see boards/qemu-riscv-virt/README.md
+  gcc-riscv64-unknown-elf qemu-system-misc
 )
 
 sudo=""

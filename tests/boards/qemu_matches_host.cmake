@@ -4,19 +4,26 @@
 # (RENDER = lumavel-sim, SCENARIO, CONVERT = lumavel_recording_to_stream).
 #   cmake -DGEN=<lumavel_make_test_stream> -DHOST_APP=<lumavel_app_host> -DELF=<image>
 #         -DMACHINE=mps2-an385 -DWORK=<dir> -DWIDTH=40 -DHEIGHT=30 -DFRAMES=200 -P qemu_matches_host.cmake
+#   QEMU: qemu-system-arm (default), or e.g. -DQEMU_NAME=qemu-system-riscv32
+#   -DQEMU_PACKAGE=qemu-system-misc -DMACHINE=virt "-DMACHINE_ARGS=-bios none" (space-separated)
 #   (or -DRENDER=... -DSCENARIO=<yaml> -DCONVERT=... instead of -DGEN, FRAMES = a lower bound)
 # -DLENS=ON (with GEN): the stream uploads barrel lens tables (GEN --lens
 # barrel). The host also runs the same stream with all-zero tables (--lens
 # flat: what a device that ignored the tables would report); the test then
 # requires the lens configuration accepted, and the estimates with the lens
 # to differ from those without it, on the host and on the target.
-find_program(QEMU qemu-system-arm)
+if(NOT QEMU_NAME)
+  set(QEMU_NAME qemu-system-arm)
+  set(QEMU_PACKAGE qemu-system-arm)
+endif()
+separate_arguments(MACHINE_ARGS)
+find_program(QEMU ${QEMU_NAME})
 if(NOT QEMU)
-  message("SKIP: qemu-system-arm not found (apt-get install --no-install-recommends qemu-system-arm)")
+  message("SKIP: ${QEMU_NAME} not found (apt-get install --no-install-recommends ${QEMU_PACKAGE})")
   return()
 endif()
 if(NOT EXISTS ${ELF})
-  message("SKIP: ${ELF} not built (arm-none-eabi toolchain missing?)")
+  message("SKIP: ${ELF} not built (cross toolchain missing?)")
   return()
 endif()
 file(MAKE_DIRECTORY ${WORK})
@@ -43,7 +50,7 @@ else()
   run("generate" ${GEN} ${stream} ${WIDTH} ${HEIGHT} ${FRAMES} 7)
 endif()
 run("host app" ${HOST_APP} ${stream} ${WORK}/host.lvr)
-run("qemu ${MACHINE}" ${QEMU} -M ${MACHINE} -nographic -monitor none -serial none
+run("qemu ${MACHINE}" ${QEMU} -M ${MACHINE} ${MACHINE_ARGS} -nographic -monitor none -serial none
     -semihosting-config enable=on,target=native,arg=lumavel,arg=test.lvs,arg=qemu.lvr -kernel ${ELF})
 file(SIZE ${WORK}/host.lvr host_size)
 math(EXPR min_size "(${FRAMES} - 3) * 44")  # a 42-byte report (+2 framing) per frame; 3 are dropped

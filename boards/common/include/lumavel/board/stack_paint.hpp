@@ -9,8 +9,11 @@ namespace lumavel::board {
 
 constexpr uint32_t kStackPattern = 0x5AC3A55Au;
 
-// Called first thing in main(): paints up to a margin below the current frame.
-inline void paint_stack() {
+// Called first thing in main(): paints up to a margin below its own frame,
+// i.e. below main's whole frame. Not inlined: __builtin_frame_address is the
+// bottom of the frame on Thumb but its top (the caller's stack pointer) on
+// RISC-V, where an inlined call would paint over main's own locals.
+__attribute__((noinline)) inline void paint_stack() {
   uint32_t* limit = static_cast<uint32_t*>(__builtin_frame_address(0)) - 64;
   for (uint32_t* p = _ebss; p < limit; ++p) *p = kStackPattern;
 }

@@ -1,16 +1,20 @@
 // Instruction budget per frame, measured in QEMU: reads a recorded stream
-// through semihosting, and times with SysTick under -icount shift=0 (one tick
-// = 40 instructions) the phases of each frame:
+// through semihosting, and times with the board's instruction counter
+// (lumavel/board/instruction_counter.hpp; run QEMU with -icount shift=0) the
+// phases of each frame:
 //   columns  : column_profile of both cameras (the only per-pixel work)
 //   kernels  : stereo_measurement (kernel dot products and ratios)
 //   observer : the rest of Estimator::step (gyro, observer, status), i.e. step - columns - kernels
 //   report   : encode_measurement
-// Every timed call is noipa so that no work moves across a SysTick read.
+// Every timed call is noipa so that no work moves across a counter read.
 //   qemu-system-arm -M mps2-an385 -icount shift=0 -nographic -monitor none -serial none
 //     -semihosting-config enable=on,target=native,arg=bench,arg=<in.lvs>,arg=<label> -kernel lumavel_qemu_bench.elf
+//   qemu-system-riscv32 -M virt -bios none -icount shift=0 ... (the same)
 #include <cstdint>
 
 #include "lumavel/app/estimator_config.hpp"
+#include "lumavel/board/instruction_counter.hpp"
+#include "lumavel/board/semihosting.hpp"
 #include "lumavel/board/text.hpp"
 #include "lumavel/core/column_profile.hpp"
 #include "lumavel/core/estimator.hpp"
@@ -19,17 +23,11 @@
 #include "lumavel/protocol/reports.hpp"
 #include "lumavel/stream/run_stream.hpp"
 #include "lumavel/stream/stream_hal.hpp"
-#include "semihosting.hpp"
-#include "systick.hpp"
-
-namespace lumavel::qemu {
-uint32_t systick_now() { return syst_cvr(); }
-}  // namespace lumavel::qemu
 
 namespace {
 
-using lumavel::qemu::systick_now;
-using lumavel::qemu::ticks_between;
+namespace counter = lumavel::board::counter;
+using counter::ticks_between;
 
 alignas(4) uint8_t frame[2][lumavel::kMaxColumns * lumavel::kMaxRows];  // word loads
 lumavel::Estimator estimator;
@@ -53,11 +51,6 @@ __attribute__((noipa)) void do_report(const lumavel::Estimate& e, uint16_t seq) 
   lumavel::protocol::encode_measurement(m, report, sizeof report);
 }
 __attribute__((noipa)) void do_nothing() {}
-// A loop of exactly 2 * n instructions (subs, bne), to check the tick rate.
-__attribute__((noipa)) void spin(uint32_t n) {
-  // GCC wraps inline asm in divided syntax; this loop is written in unified syntax.
-  __asm__ volatile(".syntax unified\n1: subs %0, %0, #1\n bne 1b\n .syntax divided" : "+l"(n) : : "cc");
-}
 
 [[noreturn]] void fail(const char* what) {
   lumavel::semihost::write_text(what);
@@ -66,7 +59,7 @@ __attribute__((noipa)) void spin(uint32_t n) {
 
 // "<label> <phase>: <instr/frame> instructions/frame, <x.xx> per stereo pixel"
 void print_phase(const char* label, const char* phase, uint64_t ticks, uint32_t frames, uint32_t pixels) {
-  const uint64_t instr = ticks * lumavel::qemu::kInstructionsPerTick;
+  const uint64_t instr = ticks * counter::kInstructionsPerTick;
   const uint64_t per_frame = (instr + frames / 2) / frames;
   const uint64_t per_px_x100 = (instr * 100 + uint64_t{frames} * pixels / 2) / (uint64_t{frames} * pixels);
   lumavel::board::Text<160> t;
@@ -96,18 +89,18 @@ int main() {
       estimator.configure(cfg) != lumavel::ConfigError::kOk) {
     fail("default configuration refused\n");
   }
-  lumavel::qemu::systick_start();
+  counter::start();
 
-  // Tick rate check: 2 * 100000 instructions should read 5000 ticks.
-  uint32_t a = systick_now();
-  spin(100000);
-  uint32_t b = systick_now();
+  // Tick rate check: a loop of 2 * 100000 instructions (5000 ticks of the MPS2 SysTick).
+  uint32_t a = counter::now();
+  counter::spin(100000);
+  uint32_t b = counter::now();
   lumavel::board::Text<160> t;
-  const uint32_t measured = ticks_between(a, b) * lumavel::qemu::kInstructionsPerTick;
-  t << words[2] << " calibration: 200000-instruction loop = " << measured << " instructions by SysTick\n";
+  const uint32_t measured = ticks_between(a, b) * counter::kInstructionsPerTick;
+  t << words[2] << " calibration: 200000-instruction loop = " << measured << " instructions by the counter\n";
   sh::write_text(t.c_str());
   if (measured + 400 < 200000 || measured > 200000 + 400) {
-    fail("SysTick does not count instructions: run QEMU with -icount shift=0\n");
+    fail("the counter does not count instructions: run QEMU with -icount shift=0\n");
   }
 
   uint64_t sum_cols = 0, sum_kern = 0, sum_step = 0, sum_report = 0, sum_empty = 0;
@@ -122,17 +115,17 @@ int main() {
       have_gyro = true;
       last_gyro = g.t_ns;
     }
-    const uint32_t t0 = systick_now();
+    const uint32_t t0 = counter::now();
     do_columns(w, h);
-    const uint32_t t1 = systick_now();
+    const uint32_t t1 = counter::now();
     do_kernels();
-    const uint32_t t2 = systick_now();
+    const uint32_t t2 = counter::now();
     const lumavel::Estimate e = do_step(t_ns, w);
-    const uint32_t t3 = systick_now();
+    const uint32_t t3 = counter::now();
     do_report(e, static_cast<uint16_t>(frames));
-    const uint32_t t4 = systick_now();
+    const uint32_t t4 = counter::now();
     do_nothing();
-    const uint32_t t5 = systick_now();
+    const uint32_t t5 = counter::now();
     if (e.frame_index == 0) continue;  // the first frame has no interval to observe
     sum_cols += ticks_between(t0, t1);
     sum_kern += ticks_between(t1, t2);

@@ -1,15 +1,18 @@
-// The firmware app on MPS2 under QEMU: camera and gyro read a recorded stream
-// and the report link writes a report file, both through semihosting.
+// The firmware app on an emulated board (QEMU): camera and gyro read a
+// recorded stream and the report link writes a report file, both through
+// semihosting. The same source for every semihosted board:
 //   qemu-system-arm -M mps2-an385 -nographic -monitor none -serial none
 //     -semihosting-config enable=on,target=native,arg=lumavel,arg=<in.lvs>,arg=<out.lvr>
 //     -kernel lumavel_qemu_app.elf
+//   qemu-system-riscv32 -M virt -bios none -nographic -monitor none -serial none
+//     -semihosting-config (the same) -kernel lumavel_qemu_app.elf
 // Exit status: 0 ok, 1 usage/files, 2 bad stream, 3 unconfigured, 4 write failed.
 #include <cstdint>
 
+#include "lumavel/board/semihosting.hpp"
 #include "lumavel/board/stack_paint.hpp"
 #include "lumavel/board/text.hpp"
 #include "lumavel/stream/run_stream.hpp"
-#include "semihosting.hpp"
 
 namespace {
 

@@ -1,4 +1,4 @@
-#include "semihosting.hpp"
+#include "lumavel/board/semihosting.hpp"
 
 namespace lumavel::semihost {
 namespace {
@@ -12,12 +12,7 @@ constexpr uint32_t kSysGetCmdline = 0x15;
 constexpr uint32_t kSysExitExtended = 0x20;
 constexpr uint32_t kApplicationExit = 0x20026;
 
-int32_t call(uint32_t op, const void* args) {
-  register uint32_t r0 __asm__("r0") = op;
-  register const void* r1 __asm__("r1") = args;
-  __asm__ volatile("bkpt 0xAB" : "+r"(r0) : "r"(r1) : "memory");
-  return static_cast<int32_t>(r0);
-}
+int32_t call(uint32_t op, const void* args) { return lumavel_semihost_trap(op, args); }
 
 size_t length(const char* s) {
   size_t n = 0;

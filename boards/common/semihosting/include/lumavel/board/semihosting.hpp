@@ -1,10 +1,17 @@
-// ARM semihosting (bkpt 0xAB on M-profile): file I/O and exit through the
-// debugger, here QEMU with -semihosting-config enable=on,target=native.
+// Semihosting (the Arm semihosting interface, which RISC-V adopted): file
+// I/O and exit through the debugger, here QEMU with
+// -semihosting-config enable=on,target=native. The operations are the same on
+// every core; only the trap differs, and each board defines it:
+//   Cortex-M: bkpt 0xAB (boards/qemu-mps2-an385/semihost_trap.cpp)
+//   RISC-V:   slli x0,x0,0x1f; ebreak; srai x0,x0,7 (boards/qemu-riscv-virt/semihost_trap.cpp)
 #pragma once
 #include <cstddef>
 #include <cstdint>
 
 #include "lumavel/stream/byte_io.hpp"
+
+// The board's trap: operation number and argument block in, result out.
+extern "C" int32_t lumavel_semihost_trap(uint32_t op, const void* args);
 
 namespace lumavel::semihost {
 
