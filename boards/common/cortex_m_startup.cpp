@@ -5,15 +5,12 @@
 // go in section .isr_vector.device right after these.
 #include <cstdint>
 
-extern "C" {
-extern uint32_t _sidata[], _sdata[], _edata[], _sbss[], _ebss[], _estack[];
-using InitFn = void (*)();
-extern InitFn __init_array_start[], __init_array_end[];
+#include "include/lumavel/board/c_runtime.hpp"
 
-// ISO C++ forbids calling main(): reach it through another name for the same symbol.
-int lumavel_call_main() __asm__("main");
+extern "C" {
+extern uint32_t _estack[];
+
 void Reset_Handler();
-void lumavel_board_early_init();  // weak: clocks before .data/.bss (default: nothing)
 void lumavel_fault_handler();     // weak: default spins so a debugger/watchdog sees it
 void lumavel_systick_handler();   // weak: boards that enable the SysTick interrupt define it
 
@@ -28,13 +25,7 @@ __attribute__((weak)) void _init() {}
 __attribute__((weak)) void _fini() {}
 
 void Reset_Handler() {
-  lumavel_board_early_init();
-  for (uint32_t *src = _sidata, *dst = _sdata; dst < _edata;) *dst++ = *src++;
-  for (uint32_t* dst = _sbss; dst < _ebss;) *dst++ = 0;
-  for (InitFn* f = __init_array_start; f < __init_array_end; ++f) (*f)();
-  lumavel_call_main();
-  for (;;) {
-  }
+  lumavel::board::run_c_runtime();
 }
 
 using Vector = void (*)();

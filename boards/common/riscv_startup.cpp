@@ -6,16 +6,12 @@
 // ebreak outside a semihosting call) goes to lumavel_fault_handler().
 #include <cstdint>
 
-extern "C" {
-extern uint32_t _sidata[], _sdata[], _edata[], _sbss[], _ebss[];
-using InitFn = void (*)();
-extern InitFn __init_array_start[], __init_array_end[];
+#include "include/lumavel/board/c_runtime.hpp"
 
-// ISO C++ forbids calling main(): reach it through another name for the same symbol.
-int lumavel_call_main() __asm__("main");
+extern "C" {
+
 [[noreturn]] void lumavel_reset();
 void lumavel_trap_entry();
-void lumavel_board_early_init();  // weak: clocks before .data/.bss (default: nothing)
 void lumavel_fault_handler();     // weak: default spins so a debugger/watchdog sees it
 
 __attribute__((weak)) void lumavel_board_early_init() {}
@@ -53,12 +49,6 @@ __attribute__((aligned(4))) void lumavel_trap_entry() {
 }
 
 void lumavel_reset() {
-  lumavel_board_early_init();
-  for (uint32_t *src = _sidata, *dst = _sdata; dst < _edata;) *dst++ = *src++;
-  for (uint32_t* dst = _sbss; dst < _ebss;) *dst++ = 0;
-  for (InitFn* f = __init_array_start; f < __init_array_end; ++f) (*f)();
-  lumavel_call_main();
-  for (;;) {
-  }
+  lumavel::board::run_c_runtime();
 }
 }
