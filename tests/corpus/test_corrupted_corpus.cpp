@@ -26,28 +26,12 @@
 using namespace lumavel;
 using namespace lumavel::host;
 
+using fixture::replace_in;
+using fixture::set_field;
+
 namespace {
 
 // ---- damage helpers --------------------------------------------------------
-
-void replace_in(const std::string& path, const std::string& from, const std::string& to) {
-  std::string t = fixture::read_text(path);
-  const size_t at = t.find(from);
-  if (at == std::string::npos) throw std::logic_error(path + ": no '" + from + "' to replace");
-  t.replace(at, from.size(), to);
-  fixture::write_text(path, t);
-}
-
-// Field `col` (0-based, timestamp 0) of 1-based line `line` of a CSV.
-void set_field(const std::string& path, size_t line, size_t col, const std::string& value) {
-  std::vector<std::string> lines = fixture::read_lines(path);
-  std::string& l = lines.at(line - 1);
-  size_t start = 0;
-  for (size_t c = 0; c < col; ++c) start = l.find(',', start) + 1;
-  const size_t end = l.find(',', start);
-  l.replace(start, (end == std::string::npos ? l.size() : end) - start, value);
-  fixture::write_lines(path, lines);
-}
 
 // Gyro rows kept where keep(t) holds.
 void filter_gyro(const std::string& m, const std::function<bool(uint64_t)>& keep) {
