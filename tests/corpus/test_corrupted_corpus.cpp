@@ -140,6 +140,14 @@ const std::vector<RecordingCase>& recording_corpus() {
          write_png_gray(m + image(1, 0), px.data(), 41, 30);
        },
        "frame 0 of cam1 is 41x30"},
+      // Found by the command-line campaign (cli_campaign.cpp).
+      {"timestamp beyond int64 (a wrong distance, flagged only as a gyro gap)",
+       [](const std::string& m) {
+         for (const char* cam : {"cam0", "cam1"}) set_field(m + cam + "/data.csv", 13, 0, "9300000000000000000");
+       },
+       "cam0/data.csv:13: timestamp 9300000000000000000 is beyond 9223372036854775807 ns"},
+      {"negative timestamp", [](const std::string& m) { set_field(m + "imu0/data.csv", 2, 0, "-1"); },
+       "imu0/data.csv:2: timestamp -1 is negative"},
       // Accepted, and flagged.
       {"gyro stops early (frames beyond it flagged)",
        [](const std::string& m) { filter_gyro(m, [](uint64_t t) { return t < 1030000000ull; }); }, nullptr,

@@ -429,3 +429,29 @@ TEST(BadInput, Mav0ThatIsNotAFolder) {
   fixture::write_text(r + "/mav0", "x");
   STRCMP_EQUAL((r + "/mav0: is a file, not a folder").c_str(), error_of([&] { load_recording(r); }).c_str());
 }
+
+// ---- found by the command-line campaign (tests/corpus/cli_campaign.cpp) ----
+
+// 9300000000000000000 fits a uint64 but not the format's int64: the last
+// frame's interval wrapped negative and the fixed engine's distance went
+// from 13.9 m to -114 231 m, flagged only as a gyro gap.
+TEST(BadInput, TimestampBeyondInt64OrNegative) {
+  const std::string c0 = m + "cam0/data.csv";
+  fixture::set_field(c0, 13, 0, "9300000000000000000");
+  fixture::set_field(m + "cam1/data.csv", 13, 0, "9300000000000000000");
+  STRCMP_CONTAINS((c0 + ":13: timestamp 9300000000000000000 is beyond 9223372036854775807 ns").c_str(),
+                  load_error().c_str());
+  fixture::set_field(c0, 13, 0, "99999999999999999999");
+  STRCMP_CONTAINS((c0 + ":13: timestamp 99999999999999999999 is beyond").c_str(), load_error().c_str());
+  fixture::set_field(c0, 2, 0, "-5");
+  STRCMP_CONTAINS((c0 + ":2: timestamp -5 is negative").c_str(), load_error().c_str());
+}
+
+// A field of a megabyte is shown shortened, not copied into the message.
+TEST(BadInput, HugeFieldIsShownShortened) {
+  fixture::set_field(m + "imu0/data.csv", 12, 3, std::string(1 << 20, 'x'));
+  const std::string e = load_error();
+  STRCMP_CONTAINS((m + "imu0/data.csv:12: column 'w_RS_S_z [rad s^-1]': 'xxx").c_str(), e.c_str());
+  STRCMP_CONTAINS("(1048576 characters)", e.c_str());
+  CHECK(e.size() < 600);
+}
