@@ -148,6 +148,15 @@ const std::vector<RecordingCase>& recording_corpus() {
        "cam0/data.csv:13: timestamp 9300000000000000000 is beyond 9223372036854775807 ns"},
       {"negative timestamp", [](const std::string& m) { set_field(m + "imu0/data.csv", 2, 0, "-1"); },
        "imu0/data.csv:2: timestamp -1 is negative"},
+      {"ground truth with a header only (was: no ground truth, exit 0)",
+       [](const std::string& m) {
+         const std::string gt = m + "state_groundtruth_estimate0/data.csv";
+         fixture::write_lines(gt, {fixture::read_lines(gt)[0]});
+       },
+       "state_groundtruth_estimate0/data.csv:2: no ground-truth samples"},
+      {"cam1 at another resolution",
+       [](const std::string& m) { replace_in(m + "cam1/sensor.yaml", "resolution: [40, 30]", "resolution: [20, 15]"); },
+       "cam1/sensor.yaml:15: resolution [20, 15] differs from"},
       // Accepted, and flagged.
       {"gyro stops early (frames beyond it flagged)",
        [](const std::string& m) { filter_gyro(m, [](uint64_t t) { return t < 1030000000ull; }); }, nullptr,

@@ -455,3 +455,30 @@ TEST(BadInput, HugeFieldIsShownShortened) {
   STRCMP_CONTAINS("(1048576 characters)", e.c_str());
   CHECK(e.size() < 600);
 }
+
+// A ground truth that is there with a header only was taken for "no ground
+// truth": a run without error figures and exit 0.
+TEST(BadInput, GroundTruthWithoutSamples) {
+  const std::string gt = m + "state_groundtruth_estimate0/data.csv";
+  fixture::write_lines(gt, {fixture::read_lines(gt)[0]});
+  STRCMP_CONTAINS((gt + ":2: no ground-truth samples after the header").c_str(), load_error().c_str());
+}
+
+// With --width 20 --height 15 a 40x30 cam0 and a 20x15 cam1 ran (E 99.5 %);
+// at the default size the message blamed the working size.
+TEST(BadInput, CamerasOfDifferentResolutions) {
+  fixture::replace_in(m + "cam1/sensor.yaml", "resolution: [40, 30]", "resolution: [20, 15]");
+  STRCMP_CONTAINS((m + "cam1/sensor.yaml:15: resolution [20, 15] differs from " + m +
+                   "cam0/sensor.yaml:15 resolution [40, 30]: both cameras must have the same resolution").c_str(),
+                  load_error().c_str());
+}
+
+// REC/mav0/cam0 given for REC said "REC/mav0/cam0/cam0/sensor.yaml: does not exist".
+TEST(BadInput, SensorFolderOrOtherFolderGivenForTheRecording) {
+  STRCMP_CONTAINS((m + "cam0: is the folder of one sensor (it holds sensor.yaml or data.csv), not a recording").c_str(),
+                  error_of([&] { load_recording(m + "cam0"); }).c_str());
+  STRCMP_CONTAINS((m + "cam0/data: is not a recording folder: it holds no mav0/, cam0/, cam1/ or imu0/").c_str(),
+                  error_of([&] { load_recording(m + "cam0/data"); }).c_str());
+  std::filesystem::remove_all(m + "cam1");  // still a recording, with cam1 missing
+  STRCMP_CONTAINS((m + "cam1/sensor.yaml: does not exist").c_str(), load_error().c_str());
+}
