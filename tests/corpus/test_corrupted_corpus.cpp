@@ -112,10 +112,10 @@ const std::vector<RecordingCase>& recording_corpus() {
          replace_in(m + "cam0/sensor.yaml", "0, 0, 1, 0,\n         0, -1, 0, 0", "0, 1, 0, 0,\n         0, 0, 1, 0");
        },
        "cam0/sensor.yaml:5: T_BS: this camera looks along body"},
-      {"fu = 1e300", [](const std::string& m) { replace_in(m + "cam0/sensor.yaml", "intrinsics: [36", "intrinsics: [1e300"); },
+      {"fu = fv = 1e300", [](const std::string& m) { replace_in(m + "cam0/sensor.yaml", "intrinsics: [36, 36", "intrinsics: [1e300, 1e300"); },
        "cam0/sensor.yaml:17: intrinsics (at the working resolution): focal length fu"},
       {"cu = 1e6", [](const std::string& m) { replace_in(m + "cam1/sensor.yaml", "19.5, 14.5]", "1e6, 14.5]"); },
-       "cam1/sensor.yaml: "},
+       "cam1/sensor.yaml:17: intrinsics: principal point cu = 1e+06 px must lie in [-width, 2 width]"},
       {"k1 = 1e10", [](const std::string& m) { replace_in(m + "cam0/sensor.yaml", "[0.01, ", "[1e10, "); },
        "cannot be inverted"},
       {"p2 = 20", [](const std::string& m) { replace_in(m + "cam1/sensor.yaml", "-0.0004]", "20]"); },
@@ -154,6 +154,18 @@ const std::vector<RecordingCase>& recording_corpus() {
          fixture::write_lines(gt, {fixture::read_lines(gt)[0]});
        },
        "state_groundtruth_estimate0/data.csv:2: no ground-truth samples"},
+      {"T_BS given twice (the second was ignored)",
+       [](const std::string& m) {
+         const std::string y = m + "cam0/sensor.yaml";
+         fixture::write_text(y, fixture::read_text(y) + "T_BS:\n  cols: 4\n  rows: 4\n  data: [1, 0, 0, 0.04, 0, 0, 1, "
+                                                        "0, 0, -1, 0, 0, 0, 0, 0, 1]\n");
+       },
+       "cam0/sensor.yaml:20: key 'T_BS' is given again (first at line 5)"},
+      {"fv = 1e12 (only the lens model reads it)",
+       [](const std::string& m) { replace_in(m + "cam0/sensor.yaml", "intrinsics: [36, 36", "intrinsics: [36, 1e12"); },
+       "cam0/sensor.yaml:17: intrinsics: fu = 36 px, fv = 1e+12 px: fv/fu must be 0.5..2"},
+      {"cv = -1e5", [](const std::string& m) { replace_in(m + "cam1/sensor.yaml", "19.5, 14.5]", "19.5, -1e5]"); },
+       "cam1/sensor.yaml:17: intrinsics: principal point cv = -100000 px must lie in [-height, 2 height]"},
       {"cam1 at another resolution",
        [](const std::string& m) { replace_in(m + "cam1/sensor.yaml", "resolution: [40, 30]", "resolution: [20, 15]"); },
        "cam1/sensor.yaml:15: resolution [20, 15] differs from"},
