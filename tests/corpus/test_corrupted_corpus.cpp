@@ -169,6 +169,9 @@ const std::vector<RecordingCase>& recording_corpus() {
       {"cam1 at another resolution",
        [](const std::string& m) { replace_in(m + "cam1/sensor.yaml", "resolution: [40, 30]", "resolution: [20, 15]"); },
        "cam1/sensor.yaml:15: resolution [20, 15] differs from"},
+      {"baseline across body x",
+       [](const std::string& m) { replace_in(m + "cam1/sensor.yaml", "0, 0, 1, 0,", "0, 0, 1, 3,"); },
+       "cam0/sensor.yaml:5: T_BS: cam1's optical centre minus cam0's is (0.08, 3, 0) m"},
       // Accepted, and flagged.
       {"gyro stops early (frames beyond it flagged)",
        [](const std::string& m) { filter_gyro(m, [](uint64_t t) { return t < 1030000000ull; }); }, nullptr,

@@ -11,6 +11,8 @@
 
 #include "lumavel/host/file_camera.hpp"
 #include "lumavel/host/image_io.hpp"
+#include "lumavel/host/rig.hpp"
+#include "lumavel/host/rig_settings_check.hpp"
 #include "recording_fixture.hpp"
 // CppUTest last: its leak-detector macros redefine new.
 #include "CppUTest/TestHarness.h"
@@ -512,6 +514,17 @@ TEST(BadInput, CamerasOfDifferentResolutions) {
                   load_error().c_str());
 }
 
+// Cameras 8 cm apart across body x and 2 mm along it ran as a 2 mm baseline.
+TEST(BadInput, BaselineAcrossBodyX) {
+  fixture::replace_in(m + "cam0/sensor.yaml", "-0.04,", "0.038,");
+  fixture::replace_in(m + "cam0/sensor.yaml", "0, 0, 1, 0,", "0, 0, 1, 0.08,");
+  const Recording r = load_recording(rec);
+  const std::string e = error_of([&] { derive_settings(r, {40, 30}); });
+  STRCMP_CONTAINS((m + "cam0/sensor.yaml:5: T_BS: cam1's optical centre minus cam0's is (0.002, -0.08, 0) m in the "
+                       "body frame: more across body x than along it").c_str(),
+                  e.c_str());
+}
+
 // REC/mav0/cam0 given for REC said "REC/mav0/cam0/cam0/sensor.yaml: does not exist".
 TEST(BadInput, SensorFolderOrOtherFolderGivenForTheRecording) {
   STRCMP_CONTAINS((m + "cam0: is the folder of one sensor (it holds sensor.yaml or data.csv), not a recording").c_str(),
@@ -520,4 +533,14 @@ TEST(BadInput, SensorFolderOrOtherFolderGivenForTheRecording) {
                   error_of([&] { load_recording(m + "cam0/data"); }).c_str());
   std::filesystem::remove_all(m + "cam1");  // still a recording, with cam1 missing
   STRCMP_CONTAINS((m + "cam1/sensor.yaml: does not exist").c_str(), load_error().c_str());
+}
+
+// An elevation scale the core cannot hold named only "REC/mav0: the
+// estimator configuration derived from it".
+TEST(BadInput, ElevationScaleNamesTheSensorYaml) {
+  const Recording r = load_recording(rec);
+  const std::string s = setting_source(r, "cam[].elevation_scale");
+  STRCMP_EQUAL((m + "cam0/sensor.yaml:17 or cam1/sensor.yaml:17: intrinsics with distortion_coefficients (the lens "
+                    "model)").c_str(),
+               s.c_str());
 }
