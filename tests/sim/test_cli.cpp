@@ -578,3 +578,18 @@ TEST(Cli, CalibrateSuggestsNothingItCannotKnow) {
   LONGS_EQUAL(0, r.code);
   STRCMP_CONTAINS("send to a board: lumavel-read config set misalignment_rad=", r.out.c_str());
 }
+
+// run counts a gyro hole and flags its frames; calibrate said nothing of it
+// (found by the corrupted-input campaign, tests/corpus/cli_campaign.cpp).
+TEST(Cli, CalibrateSaysTheRecordingHasGaps) {
+  fixture::Options o;
+  o.gyro_hole_from = 1030000000ull;
+  o.gyro_hole_to = 1080000000ull;
+  rec(o);
+  const Outcome cal = sim("calibrate rec --quiet");
+  STRCMP_CONTAINS("calibrate: warning: rec: 0 frame gaps (about 0 pairs missing, longest 0.000 s), 1 gyro holes",
+                  cal.err.c_str());
+  std::filesystem::remove_all(dir.path() + "/rec");
+  rec();
+  CHECK(sim("calibrate rec --quiet").err.find("gyro holes") == std::string::npos);
+}

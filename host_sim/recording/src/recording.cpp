@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "lumavel/host/csv_table.hpp"
 #include "lumavel/host/image_io.hpp"
@@ -240,6 +241,17 @@ Recording load_recording(const std::string& dir_arg) {
   check_gyro_coverage(rec, imu_csv, c0.csv);
   return rec;
 }
+
+std::string format_gaps(const GapReport& g) {
+  char buf[320];
+  std::snprintf(buf, sizeof buf, "%d frame gaps (about %ld pairs missing, longest %.3f s), %d gyro holes (longest %.3f s)",
+                g.frame_gaps, g.frames_missing, g.longest_frame_gap_s, g.gyro_holes, g.longest_gyro_hole_s);
+  std::string s = buf;
+  if (g.frames_beyond_gyro > 0) s += ", " + std::to_string(g.frames_beyond_gyro) + " frames beyond the gyro's samples";
+  return s;
+}
+
+bool has_gaps(const GapReport& g) { return g.frame_gaps > 0 || g.gyro_holes > 0 || g.frames_beyond_gyro > 0; }
 
 double body_yaw_rate(const ImuSensor& imu, const ImuSample& s) {
   // Third row of R_BS times w_S.
