@@ -26,28 +26,12 @@
 using namespace lumavel;
 using namespace lumavel::host;
 
+using fixture::replace_in;
+using fixture::set_field;
+
 namespace {
 
 // ---- damage helpers --------------------------------------------------------
-
-void replace_in(const std::string& path, const std::string& from, const std::string& to) {
-  std::string t = fixture::read_text(path);
-  const size_t at = t.find(from);
-  if (at == std::string::npos) throw std::logic_error(path + ": no '" + from + "' to replace");
-  t.replace(at, from.size(), to);
-  fixture::write_text(path, t);
-}
-
-// Field `col` (0-based, timestamp 0) of 1-based line `line` of a CSV.
-void set_field(const std::string& path, size_t line, size_t col, const std::string& value) {
-  std::vector<std::string> lines = fixture::read_lines(path);
-  std::string& l = lines.at(line - 1);
-  size_t start = 0;
-  for (size_t c = 0; c < col; ++c) start = l.find(',', start) + 1;
-  const size_t end = l.find(',', start);
-  l.replace(start, (end == std::string::npos ? l.size() : end) - start, value);
-  fixture::write_lines(path, lines);
-}
 
 // Gyro rows kept where keep(t) holds.
 void filter_gyro(const std::string& m, const std::function<bool(uint64_t)>& keep) {
@@ -128,10 +112,10 @@ const std::vector<RecordingCase>& recording_corpus() {
          replace_in(m + "cam0/sensor.yaml", "0, 0, 1, 0,\n         0, -1, 0, 0", "0, 1, 0, 0,\n         0, 0, 1, 0");
        },
        "cam0/sensor.yaml:5: T_BS: this camera looks along body"},
-      {"fu = 1e300", [](const std::string& m) { replace_in(m + "cam0/sensor.yaml", "intrinsics: [36", "intrinsics: [1e300"); },
+      {"fu = fv = 1e300", [](const std::string& m) { replace_in(m + "cam0/sensor.yaml", "intrinsics: [36, 36", "intrinsics: [1e300, 1e300"); },
        "cam0/sensor.yaml:17: intrinsics (at the working resolution): focal length fu"},
       {"cu = 1e6", [](const std::string& m) { replace_in(m + "cam1/sensor.yaml", "19.5, 14.5]", "1e6, 14.5]"); },
-       "cam1/sensor.yaml: "},
+       "cam1/sensor.yaml:17: intrinsics: principal point cu = 1e+06 px must lie in [-width, 2 width]"},
       {"k1 = 1e10", [](const std::string& m) { replace_in(m + "cam0/sensor.yaml", "[0.01, ", "[1e10, "); },
        "cannot be inverted"},
       {"p2 = 20", [](const std::string& m) { replace_in(m + "cam1/sensor.yaml", "-0.0004]", "20]"); },
@@ -156,6 +140,38 @@ const std::vector<RecordingCase>& recording_corpus() {
          write_png_gray(m + image(1, 0), px.data(), 41, 30);
        },
        "frame 0 of cam1 is 41x30"},
+      // Found by the command-line campaign (cli_campaign.cpp).
+      {"timestamp beyond int64 (a wrong distance, flagged only as a gyro gap)",
+       [](const std::string& m) {
+         for (const char* cam : {"cam0", "cam1"}) set_field(m + cam + "/data.csv", 13, 0, "9300000000000000000");
+       },
+       "cam0/data.csv:13: timestamp 9300000000000000000 is beyond 9223372036854775807 ns"},
+      {"negative timestamp", [](const std::string& m) { set_field(m + "imu0/data.csv", 2, 0, "-1"); },
+       "imu0/data.csv:2: timestamp -1 is negative"},
+      {"ground truth with a header only (was: no ground truth, exit 0)",
+       [](const std::string& m) {
+         const std::string gt = m + "state_groundtruth_estimate0/data.csv";
+         fixture::write_lines(gt, {fixture::read_lines(gt)[0]});
+       },
+       "state_groundtruth_estimate0/data.csv:2: no ground-truth samples"},
+      {"T_BS given twice (the second was ignored)",
+       [](const std::string& m) {
+         const std::string y = m + "cam0/sensor.yaml";
+         fixture::write_text(y, fixture::read_text(y) + "T_BS:\n  cols: 4\n  rows: 4\n  data: [1, 0, 0, 0.04, 0, 0, 1, "
+                                                        "0, 0, -1, 0, 0, 0, 0, 0, 1]\n");
+       },
+       "cam0/sensor.yaml:20: key 'T_BS' is given again (first at line 5)"},
+      {"fv = 1e12 (only the lens model reads it)",
+       [](const std::string& m) { replace_in(m + "cam0/sensor.yaml", "intrinsics: [36, 36", "intrinsics: [36, 1e12"); },
+       "cam0/sensor.yaml:17: intrinsics: fu = 36 px, fv = 1e+12 px: fv/fu must be 0.5..2"},
+      {"cv = -1e5", [](const std::string& m) { replace_in(m + "cam1/sensor.yaml", "19.5, 14.5]", "19.5, -1e5]"); },
+       "cam1/sensor.yaml:17: intrinsics: principal point cv = -100000 px must lie in [-height, 2 height]"},
+      {"cam1 at another resolution",
+       [](const std::string& m) { replace_in(m + "cam1/sensor.yaml", "resolution: [40, 30]", "resolution: [20, 15]"); },
+       "cam1/sensor.yaml:15: resolution [20, 15] differs from"},
+      {"baseline across body x",
+       [](const std::string& m) { replace_in(m + "cam1/sensor.yaml", "0, 0, 1, 0,", "0, 0, 1, 3,"); },
+       "cam0/sensor.yaml:5: T_BS: cam1's optical centre minus cam0's is (0.08, 3, 0) m"},
       // Accepted, and flagged.
       {"gyro stops early (frames beyond it flagged)",
        [](const std::string& m) { filter_gyro(m, [](uint64_t t) { return t < 1030000000ull; }); }, nullptr,

@@ -3,7 +3,9 @@
 // image is exactly cam0's two frames later.
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -152,4 +154,80 @@ TEST(ImportSlider, CommandLineRefusesABadBaseline) {
   LONGS_EQUAL(2, import_slider_main(5, const_cast<char**>(argv)));
   const char* argv2[] = {"import-slider", "only-one"};
   LONGS_EQUAL(2, import_slider_main(2, const_cast<char**>(argv2)));
+}
+
+// Found by the command-line campaign (tests/corpus/cli_campaign.cpp): each
+// was accepted (exit 0, a recording written) or named the wrong thing.
+TEST(ImportSlider, DamagedDatasetsAreRefusedNamingTheLine) {
+  fixture::TempDir tmp;
+  const std::string d = tmp.path() + "/data";
+  auto line5 = [&](const std::string& file, const std::function<std::string(const std::string&)>& f) {
+    fixture::set_line(d + "/" + file, 5, f(fixture::read_lines(d + "/" + file)[4]));
+  };
+  const struct {
+    std::function<void()> damage;
+    std::string refused_with;
+  } cases[] = {
+      // "0.17abc images/x.png" was read as 0.17 and the file "abc".
+      {[&] { line5("images.txt", [](std::string l) { return l.insert(l.find(' '), "abc"); }); },
+       "images.txt:5: time: '0.170000abc' is not a number"},
+      // -5 s became 18446744068709551616 ns; 1e300 s an int64 overflow.
+      {[&] { line5("images.txt", [](const std::string& l) { return "-5" + l.substr(l.find(' ')); }); },
+       "images.txt:5: time -5 s is outside 0..9.2e9 s"},
+      {[&] { line5("groundtruth.txt", [](const std::string& l) { return "1e300" + l.substr(l.find(' ')); }); },
+       "groundtruth.txt:5: time 1e+300 s is outside 0..9.2e9 s"},
+      // Extra fields were ignored.
+      {[&] { line5("groundtruth.txt", [](const std::string& l) { return l + " 7"; }); },
+       "groundtruth.txt:5: unexpected extra field '7' (expected t x y z qx qy qz qw)"},
+      {[&] { fixture::write_text(d + "/calib.txt", "50 51 23.5 17.5 0 0 0 0 0 9\n"); },
+       "calib.txt:1: unexpected extra field '9'"},
+      {[&] { line5("groundtruth.txt", [](const std::string& l) { return l.substr(0, l.size() - 3) + "0.0"; }); },
+       "groundtruth.txt:5: qx qy qz qw is not a unit quaternion (norm 0)"},
+      // A camera `run` refuses is refused here, naming calib.txt.
+      {[&] { fixture::write_text(d + "/calib.txt", "50 51 23.5 1e6 0 0 0 0 0\n"); },
+       "calib.txt:1: intrinsics: principal point cv = 1e+06 px"},
+      {[&] { fixture::write_text(d + "/calib.txt", "50 51 23.5 17.5 1e10 0 0 0 0\n"); },
+       "calib.txt: distortion_coefficients [1e+10, 0, 0, 0]: the lens model cannot be inverted"},
+      // Image errors name images.txt's line; a size mismatch gives the sizes.
+      {[&] { std::filesystem::remove(d + "/images/frame_00000004.png"); },
+       "images.txt:5: " + d + "/images/frame_00000004.png: does not exist"},
+      {[&] {
+         const std::vector<uint8_t> px(40 * kH, 9);
+         write_png_gray(d + "/images/frame_00000004.png", px.data(), 40, kH);
+       },
+       "images.txt:5: " + d + "/images/frame_00000004.png is 40x36, but " + d +
+           "/images/frame_00000000.png (line 1) is 48x36: every frame must have the same size"},
+  };
+  for (const auto& c : cases) {
+    std::filesystem::remove_all(d);
+    write_dataset(d);
+    c.damage();
+    std::string e = "(accepted)";
+    try {
+      ImportSliderOptions o;
+      o.baseline = 0.02;
+      import_slider(d, tmp.path() + "/rec", o);
+    } catch (const RecordingError& x) {
+      e = x.what();
+    }
+    STRCMP_CONTAINS((d + "/" + c.refused_with).c_str(), e.c_str());
+  }
+}
+
+// An image name with spaces was cut at the first one; a UTF-8 byte order
+// mark made line 1 "bad or missing time".
+TEST(ImportSlider, NamesWithSpacesAndAByteOrderMarkAreRead) {
+  fixture::TempDir tmp;
+  const std::string d = tmp.path() + "/data";
+  write_dataset(d);
+  std::filesystem::rename(d + "/images/frame_00000004.png", d + "/images/frame 4.png");
+  std::vector<std::string> l = fixture::read_lines(d + "/images.txt");
+  l[4] = l[4].substr(0, l[4].find(' ') + 1) + "images/frame 4.png  ";
+  l[0] = "\xEF\xBB\xBF" + l[0];
+  fixture::write_lines(d + "/images.txt", l);
+  ImportSliderOptions o;
+  o.baseline = 0.02;
+  const ImportSliderSummary s = import_slider(d, tmp.path() + "/rec", o);
+  LONGS_EQUAL(kFrames, s.frames_in);
+  LONGS_EQUAL(kFrames - 2, s.pairs);
 }

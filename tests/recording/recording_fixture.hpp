@@ -10,6 +10,7 @@
 #include <fstream>
 #include <functional>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -152,6 +153,26 @@ inline void set_line(const std::string& path, size_t line, const std::string& te
 inline void erase_line(const std::string& path, size_t line) {
   std::vector<std::string> lines = read_lines(path);
   lines.erase(lines.begin() + static_cast<long>(line - 1));
+  write_lines(path, lines);
+}
+
+// Replaces the first `from` in a file by `to`.
+inline void replace_in(const std::string& path, const std::string& from, const std::string& to) {
+  std::string t = read_text(path);
+  const size_t at = t.find(from);
+  if (at == std::string::npos) throw std::logic_error(path + ": no '" + from + "' to replace");
+  t.replace(at, from.size(), to);
+  write_text(path, t);
+}
+
+// Field `col` (0-based, timestamp 0) of 1-based line `line` of a CSV.
+inline void set_field(const std::string& path, size_t line, size_t col, const std::string& value) {
+  std::vector<std::string> lines = read_lines(path);
+  std::string& l = lines.at(line - 1);
+  size_t start = 0;
+  for (size_t c = 0; c < col; ++c) start = l.find(',', start) + 1;
+  const size_t end = l.find(',', start);
+  l.replace(start, (end == std::string::npos ? l.size() : end) - start, value);
   write_lines(path, lines);
 }
 

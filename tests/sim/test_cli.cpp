@@ -350,7 +350,7 @@ TEST(Cli, ConfigurationRefusalsNameTheFileTheValueAndTheRule) {
   const std::string yaml0 = rec() + "/mav0/cam0/sensor.yaml";
   text = fixture::read_text(yaml0);
   const size_t in = text.find("intrinsics: [") + 13;
-  text.replace(in, text.find(',', in) - in, "1e300");
+  text.replace(in, text.find(',', text.find(',', in) + 1) - in, "1e300, 1e300");  // fu and fv: square pixels
   fixture::write_text(yaml0, text);
   r = sim("run rec -o est.csv");
   LONGS_EQUAL(1, r.code);
@@ -472,10 +472,11 @@ TEST(Cli, CalibrateRefusesWhatRunRefuses) {
   t.replace(t.find("19.5, 14.5]"), 4, "1e6");  // cu
   fixture::write_text(yaml0, t);
   refused_alike("cu = 1e6");
-  STRCMP_CONTAINS("rec/mav0/cam0/sensor.yaml: ", sim("calibrate rec --quiet").err.c_str());
+  STRCMP_CONTAINS("rec/mav0/cam0/sensor.yaml:17: intrinsics: principal point cu = 1e+06 px",
+                  sim("calibrate rec --quiet").err.c_str());
   t = intact0;
   const size_t fu = t.find("intrinsics: [") + 13;
-  t.replace(fu, t.find(',', fu) - fu, "1e300");
+  t.replace(fu, t.find(',', t.find(',', fu) + 1) - fu, "1e300, 1e300");  // fu and fv: square pixels
   fixture::write_text(yaml0, t);
   refused_alike("fu = 1e300");
   fixture::write_text(yaml0, intact0);
@@ -514,7 +515,7 @@ TEST(Cli, EveryEngineRefusesTheSameRig) {
   for (const char* engine : {"fixed", "float", "vo"}) {
     const Outcome r = sim(std::string("run rec -o est.csv --quiet --engine ") + engine);
     LONGS_EQUAL_TEXT(1, r.code, engine);
-    STRCMP_CONTAINS("rec/mav0/cam0/sensor.yaml: ", r.err.c_str());  // the lens or the principal point
+    STRCMP_CONTAINS("rec/mav0/cam0/sensor.yaml:17: intrinsics: principal point cu = 1e+06 px", r.err.c_str());
   }
   CHECK(!exists(dir.path() + "/est.csv"));
 }
@@ -576,4 +577,19 @@ TEST(Cli, CalibrateSuggestsNothingItCannotKnow) {
   r = sim("calibrate fine --quiet");
   LONGS_EQUAL(0, r.code);
   STRCMP_CONTAINS("send to a board: lumavel-read config set misalignment_rad=", r.out.c_str());
+}
+
+// run counts a gyro hole and flags its frames; calibrate said nothing of it
+// (found by the corrupted-input campaign, tests/corpus/cli_campaign.cpp).
+TEST(Cli, CalibrateSaysTheRecordingHasGaps) {
+  fixture::Options o;
+  o.gyro_hole_from = 1030000000ull;
+  o.gyro_hole_to = 1080000000ull;
+  rec(o);
+  const Outcome cal = sim("calibrate rec --quiet");
+  STRCMP_CONTAINS("calibrate: warning: rec: 0 frame gaps (about 0 pairs missing, longest 0.000 s), 1 gyro holes",
+                  cal.err.c_str());
+  std::filesystem::remove_all(dir.path() + "/rec");
+  rec();
+  CHECK(sim("calibrate rec --quiet").err.find("gyro holes") == std::string::npos);
 }

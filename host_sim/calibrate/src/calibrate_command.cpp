@@ -77,6 +77,12 @@ int calibrate(CalibrateArgs& a) {
   // The configuration --write will carry, checked by run's rules before the
   // registration (naming the file), not after it with a bare message.
   if (!a.write_path.empty()) check_rig_settings(rec, derive_settings(rec, write_size));
+  // run flags the frames of a gap; calibrate has no such column: it says so.
+  if (has_gaps(rec.gaps))
+    std::fprintf(stderr,
+                 "calibrate: warning: %s: %s (the heading is interpolated across a gyro hole; frames beyond the gyro "
+                 "read no turn)\n",
+                 a.rec.c_str(), format_gaps(rec.gaps).c_str());
   const int columns = std::min(a.opt.width, rec.cam[0].width);
   if (columns < kRegistrationColumns)
     std::fprintf(stderr,

@@ -11,6 +11,8 @@
 
 #include "lumavel/host/image_io.hpp"
 #include "lumavel/host/recording_writer.hpp"
+#include "lumavel/host/rig.hpp"
+#include "lumavel/host/sensor_yaml.hpp"
 #include "lumavel/host/slider_dataset.hpp"
 #include "lumavel/host/time_shift_pairing.hpp"
 
@@ -97,12 +99,23 @@ ImportSliderSummary import_slider(const std::string& data_dir, const std::string
                                           " m further on (baseline longer than the travel?)");
 
   std::vector<GrayImage> img(d.frames.size());
+  const std::string images_txt = data_dir + "/images.txt";
   auto image = [&](size_t i) -> const GrayImage& {
     if (img[i].px.empty()) {
-      img[i] = read_gray_image(d.frames[i].path);
-      const GrayImage& first = img[pairs.front().cam0].px.empty() ? img[i] : img[pairs.front().cam0];
+      const SliderFrame& f = d.frames[i];
+      try {
+        img[i] = read_gray_image(f.path);
+      } catch (const RecordingError& e) {
+        throw recording_error_at(images_txt, f.line, e.what());  // the row that names the image
+      }
+      const size_t first_i = pairs.front().cam0;
+      const GrayImage& first = img[first_i].px.empty() ? img[i] : img[first_i];
+      auto size = [](const GrayImage& g) { return std::to_string(g.width) + "x" + std::to_string(g.height); };
       if (img[i].width != first.width || img[i].height != first.height)
-        throw recording_error_in(d.frames[i].path, "image size differs from the first frame's");
+        throw recording_error_at(images_txt, f.line,
+                                 f.path + " is " + size(img[i]) + ", but " + d.frames[first_i].path + " (line " +
+                                     std::to_string(d.frames[first_i].line) + ") is " + size(first) +
+                                     ": every frame must have the same size");
     }
     return img[i];
   };
@@ -115,6 +128,9 @@ ImportSliderSummary import_slider(const std::string& data_dir, const std::string
   imu.comment = "synthesised by lumavel-sim import-slider: the slider does not turn, the gyro reads zero";
   CameraSensor cam0 = make_camera(d.calib, w, hgt, rate, -0.5 * h);
   CameraSensor cam1 = make_camera(d.calib, w, hgt, rate, 0.5 * h);
+  // What `run` would refuse in the recording is refused here, naming calib.txt.
+  check_intrinsics(cam0, data_dir + "/calib.txt", 1);
+  check_lens_invertible(cam0, data_dir + "/calib.txt");
   cam0.comment = "slider camera (Event-Camera Dataset), imported by lumavel-sim import-slider";
   cam1.comment = "cam0's frames time-shifted to the slider position x + " + std::to_string(h) +
                  " m (pixelwise blend of the two bracketing frames, weighted by position)";

@@ -1,9 +1,11 @@
 #include "lumavel/host/slider_dataset.hpp"
 
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
+#include "lumavel/host/csv_table.hpp"
 #include "lumavel/host/path_check.hpp"
 #include "lumavel/host/recording_error.hpp"
 
@@ -20,6 +22,7 @@ void for_each_row(const std::string& path, Row row) {
   long no = 0;
   while (std::getline(in, line)) {
     ++no;
+    if (no == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);  // UTF-8 byte order mark
     if (!line.empty() && line.back() == '\r') line.pop_back();
     const size_t first = line.find_first_not_of(" \t");
     if (first == std::string::npos || line[first] == '#') continue;
@@ -28,10 +31,35 @@ void for_each_row(const std::string& path, Row row) {
   }
 }
 
+// The next whitespace-separated field, whole: "1.5abc" is not 1.5.
 double number(std::istringstream& s, const std::string& path, long line, const char* what) {
-  double v = 0;
-  if (!(s >> v) || !std::isfinite(v)) throw recording_error_at(path, line, std::string("bad or missing ") + what);
+  std::string field;
+  if (!(s >> field)) throw recording_error_at(path, line, std::string("missing ") + what);
+  char* end = nullptr;
+  const double v = std::strtod(field.c_str(), &end);
+  if (end != field.c_str() + field.size())
+    throw recording_error_at(path, line, std::string(what) + ": '" + shown_path(field) + "' is not a number");
+  if (!std::isfinite(v)) throw recording_error_at(path, line, std::string(what) + ": '" + field + "' is not finite");
   return v;
+}
+
+// Times become int64 nanoseconds in the recording written from them.
+constexpr double kMaxTimeS = 9.2e9;
+
+double time_s(std::istringstream& s, const std::string& path, long line) {
+  const double t = number(s, path, line, "time");
+  if (!(t >= 0 && t <= kMaxTimeS))
+    throw recording_error_at(path, line,
+                             "time " + format_double(t) + " s is outside 0..9.2e9 s (nanoseconds in a signed 64-bit "
+                                                           "timestamp)");
+  return t;
+}
+
+void no_more_fields(std::istringstream& s, const std::string& path, long line, const char* expected) {
+  std::string extra;
+  if (s >> extra)
+    throw recording_error_at(path, line,
+                             "unexpected extra field '" + shown_path(extra) + "' (expected " + expected + ")");
 }
 
 void check_increasing(double prev, double t, bool any, const std::string& path, long line) {
@@ -45,9 +73,13 @@ SliderDataset read_slider_dataset(const std::string& dir) {
   const std::string images = dir + "/images.txt";
   for_each_row(images, [&](std::istringstream& s, long line) {
     SliderFrame f;
-    f.t = number(s, images, line, "time");
+    f.t = time_s(s, images, line);
+    f.line = line;
+    // The rest of the line is the name: it may hold spaces.
     std::string file;
-    if (!(s >> file)) throw recording_error_at(images, line, "missing image file name");
+    std::getline(s >> std::ws, file);
+    while (!file.empty() && (file.back() == ' ' || file.back() == '\t')) file.pop_back();
+    if (file.empty()) throw recording_error_at(images, line, "missing image file name");
     f.path = file.front() == '/' ? file : dir + "/" + file;
     check_increasing(d.frames.empty() ? 0 : d.frames.back().t, f.t, !d.frames.empty(), images, line);
     d.frames.push_back(f);
@@ -58,9 +90,13 @@ SliderDataset read_slider_dataset(const std::string& dir) {
   static const char* const kCols[] = {"x", "y", "z", "qx", "qy", "qz", "qw"};
   for_each_row(gt, [&](std::istringstream& s, long line) {
     SliderPose p;
-    p.t = number(s, gt, line, "time");
+    p.t = time_s(s, gt, line);
     for (int k = 0; k < 3; ++k) p.p[k] = number(s, gt, line, kCols[k]);
     for (int k = 0; k < 4; ++k) p.q[k] = number(s, gt, line, kCols[3 + k]);
+    no_more_fields(s, gt, line, "t x y z qx qy qz qw");
+    const double n = std::sqrt(p.q[0] * p.q[0] + p.q[1] * p.q[1] + p.q[2] * p.q[2] + p.q[3] * p.q[3]);
+    if (std::fabs(n - 1.0) > 0.01)
+      throw recording_error_at(gt, line, "qx qy qz qw is not a unit quaternion (norm " + format_double(n) + ")");
     check_increasing(d.poses.empty() ? 0 : d.poses.back().t, p.t, !d.poses.empty(), gt, line);
     d.poses.push_back(p);
   });
@@ -78,6 +114,7 @@ SliderDataset read_slider_dataset(const std::string& dir) {
     double* k[] = {&c.k1, &c.k2, &c.p1, &c.p2, &c.k3};
     static const char* const kNames[] = {"k1", "k2", "p1", "p2", "k3"};
     for (int i = 0; i < 5; ++i) *k[i] = number(s, calib, line, kNames[i]);
+    no_more_fields(s, calib, line, "fx fy cx cy k1 k2 p1 p2 k3");
     if (c.fx <= 0 || c.fy <= 0) throw recording_error_at(calib, line, "focal lengths must be positive");
   });
   if (!rows) throw recording_error_in(calib, "empty (expected fx fy cx cy k1 k2 p1 p2 k3)");

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <limits>
 
 #include "lumavel/host/path_check.hpp"
 #include "lumavel/host/recording_error.hpp"
@@ -32,6 +33,9 @@ std::vector<std::string> split(const std::string& line) {
   return out;
 }
 
+// A field as messages show it: a 10 MB field is shortened like a long path.
+std::string shown(const std::string& field) { return shown_path(field); }
+
 std::string join(const std::vector<std::string>& v) {
   std::string s;
   for (size_t i = 0; i < v.size(); ++i) s += (i ? "," : "") + v[i];
@@ -52,9 +56,9 @@ double parse_finite(const std::string& text, const std::string& path, long line,
   errno = 0;
   const double v = std::strtod(text.c_str(), &end);
   if (end == text.c_str() || end != text.c_str() + text.size())
-    throw recording_error_at(path, line, "column '" + column + "': '" + text + "' is not a number");
+    throw recording_error_at(path, line, "column '" + column + "': '" + shown(text) + "' is not a number");
   if (!std::isfinite(v))
-    throw recording_error_at(path, line, "column '" + column + "': value '" + text + "' is not finite");
+    throw recording_error_at(path, line, "column '" + column + "': value '" + shown(text) + "' is not finite");
   return v;
 }
 
@@ -106,8 +110,18 @@ void for_each_csv_row(const std::string& path, const std::vector<std::string>& c
                                    std::to_string(row.fields.size()));
     const std::string& ts = row.fields[0];
     const auto r = std::from_chars(ts.data(), ts.data() + ts.size(), row.t_ns);
-    if (ts.empty() || r.ec != std::errc() || r.ptr != ts.data() + ts.size())
-      throw recording_error_at(path, line, "timestamp '" + ts + "' is not an integer number of nanoseconds");
+    // EuRoC timestamps are int64 nanoseconds; beyond that, differences of
+    // two of them no longer fit the engines' signed intervals.
+    constexpr uint64_t kMaxTimestamp = static_cast<uint64_t>(std::numeric_limits<int64_t>::max());
+    const bool digits = !ts.empty() && r.ptr == ts.data() + ts.size();
+    if (digits && (r.ec == std::errc::result_out_of_range || (r.ec == std::errc() && row.t_ns > kMaxTimestamp)))
+      throw recording_error_at(path, line,
+                               "timestamp " + shown(ts) + " is beyond " + std::to_string(kMaxTimestamp) +
+                                   " ns, the largest the format's signed 64-bit nanoseconds hold");
+    if (!ts.empty() && ts[0] == '-' && ts.find_first_not_of("0123456789", 1) == std::string::npos && ts.size() > 1)
+      throw recording_error_at(path, line, "timestamp " + shown(ts) + " is negative: timestamps are nanoseconds, 0 or more");
+    if (!digits || r.ec != std::errc())
+      throw recording_error_at(path, line, "timestamp '" + shown(ts) + "' is not an integer number of nanoseconds");
     if (any && row.t_ns <= prev_t)
       throw recording_error_at(path, line,
                                "timestamp " + ts + " is not after the previous one (" + std::to_string(prev_t) +

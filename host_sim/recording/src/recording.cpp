@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "lumavel/host/csv_table.hpp"
 #include "lumavel/host/image_io.hpp"
@@ -38,7 +39,7 @@ CamRows read_cam_rows(const std::string& root, int cam) {
     if (name.empty()) throw recording_error_at(c.csv, r.line, "empty filename");
     name = dir + "/data/" + name;
     if (const std::string why = why_not_a_file(name); !why.empty())
-      throw recording_error_at(c.csv, r.line, "image file " + name + " " + why);
+      throw recording_error_at(c.csv, r.line, "image file " + shown_path(name) + " " + why);
   }
   return c;
 }
@@ -120,6 +121,32 @@ void check_first_frame(const std::string& image, int cam, const CameraSensor& s,
                                         std::to_string(s.height) + "]");
 }
 
+// Both cameras are binned to one working size: their sensors must match.
+void check_same_resolution(const Recording& rec, const std::string yaml[2]) {
+  const CameraSensor &a = rec.cam[0], &b = rec.cam[1];
+  if (a.width == b.width && a.height == b.height) return;
+  throw recording_error_at(yaml[1], b.line.resolution,
+                           "resolution [" + std::to_string(b.width) + ", " + std::to_string(b.height) + "] differs from " +
+                               yaml[0] + ":" + std::to_string(a.line.resolution) + " resolution [" +
+                               std::to_string(a.width) + ", " + std::to_string(a.height) +
+                               "]: both cameras must have the same resolution");
+}
+
+// A folder that holds no recording: said as what it is (a sensor's folder,
+// a camera's data folder) and where the recording would be, rather than
+// "cam0/sensor.yaml does not exist" one level too deep.
+void check_is_recording(const std::string& dir) {
+  auto has = [&](const char* sub) { return path_present(dir + "/" + sub); };
+  if (has("mav0") || has(layout::kCamDir[0]) || has(layout::kCamDir[1]) || has(layout::kImuDir)) return;
+  const size_t slash = dir.find_last_of('/');
+  const std::string parent = slash == std::string::npos ? "." : slash == 0 ? "/" : dir.substr(0, slash);
+  const std::string hint = " (docs/recording-format.md): give the recording folder REC, or REC/mav0";
+  if (has("sensor.yaml") || has("data.csv"))
+    throw recording_error_in(shown_path(dir), "is the folder of one sensor (it holds sensor.yaml or data.csv), not a "
+                                              "recording" + hint + " (here " + shown_path(parent) + " or its parent)");
+  throw recording_error_in(shown_path(dir), "is not a recording folder: it holds no mav0/, cam0/, cam1/ or imu0/" + hint);
+}
+
 void count_gaps(Recording& rec) {
   GapReport& g = rec.gaps;
   for (size_t i = 1; i < rec.frames.size(); ++i) {
@@ -171,14 +198,16 @@ Recording load_recording(const std::string& dir_arg) {
     throw recording_error_in(shown_path(dir), why == "does not exist" ? "recording folder does not exist" : why);
   if (path_present(dir + "/mav0") && !is_dir(dir + "/mav0"))  // REC/mav0 is the data when it is there
     throw recording_error_in(dir + "/mav0", why_not_a_folder(dir + "/mav0"));
+  check_is_recording(dir);
   rec.root = is_dir(dir + "/mav0") ? dir + "/mav0" : dir;
   const std::string& root = rec.root;
   std::string yaml[2];
   for (int c = 0; c < 2; ++c) {
     yaml[c] = root + "/" + layout::kCamDir[c] + "/sensor.yaml";
     rec.cam[c] = read_camera_yaml(yaml[c]);
-    check_lens_invertible(rec.cam[c], yaml[c]);
   }
+  check_same_resolution(rec, yaml);
+  for (int c = 0; c < 2; ++c) check_lens_invertible(rec.cam[c], yaml[c]);
   rec.imu = read_imu_yaml(root + "/" + layout::kImuDir + "/sensor.yaml");
 
   const CamRows c0 = read_cam_rows(root, 0);
@@ -191,7 +220,13 @@ Recording load_recording(const std::string& dir_arg) {
   if (rec.imu_samples.empty()) throw recording_error_at(imu_csv, 2, "no gyro samples");
 
   const std::string gt_csv = root + "/" + layout::kGroundTruthDir + "/data.csv";
-  if (path_present(gt_csv)) rec.groundtruth = read_groundtruth(gt_csv);  // absent: no ground truth
+  if (path_present(gt_csv)) {  // absent: no ground truth; present, it must hold some
+    rec.groundtruth = read_groundtruth(gt_csv);
+    if (rec.groundtruth.empty())
+      throw recording_error_at(gt_csv, 2,
+                               "no ground-truth samples after the header (remove the file for a run without ground "
+                               "truth)");
+  }
 
   for (int c = 0; c < 2; ++c) check_first_frame(rec.frames.front().path[c], c, rec.cam[c], yaml[c]);
 
@@ -206,6 +241,17 @@ Recording load_recording(const std::string& dir_arg) {
   check_gyro_coverage(rec, imu_csv, c0.csv);
   return rec;
 }
+
+std::string format_gaps(const GapReport& g) {
+  char buf[320];
+  std::snprintf(buf, sizeof buf, "%d frame gaps (about %ld pairs missing, longest %.3f s), %d gyro holes (longest %.3f s)",
+                g.frame_gaps, g.frames_missing, g.longest_frame_gap_s, g.gyro_holes, g.longest_gyro_hole_s);
+  std::string s = buf;
+  if (g.frames_beyond_gyro > 0) s += ", " + std::to_string(g.frames_beyond_gyro) + " frames beyond the gyro's samples";
+  return s;
+}
+
+bool has_gaps(const GapReport& g) { return g.frame_gaps > 0 || g.gyro_holes > 0 || g.frames_beyond_gyro > 0; }
 
 double body_yaw_rate(const ImuSensor& imu, const ImuSample& s) {
   // Third row of R_BS times w_S.

@@ -230,6 +230,19 @@ EstimatorSettings derive_settings(const Recording& rec, WorkingSize size) {
   if (std::fabs(s.baseline) < 1e-4)
     throw error_at_key(yaml0, rec.cam[0].line.T_BS,
                        "T_BS: cam0 and cam1 are less than 0.1 mm apart along body x (no baseline)");
+  // The baseline runs along the travel: cameras side by side across it (or
+  // stacked) with a millimetre of x between them would be read as a
+  // millimetre baseline, and every speed scaled by it.
+  const double across = std::hypot(rec.cam[1].T_BS[7] - rec.cam[0].T_BS[7], rec.cam[1].T_BS[11] - rec.cam[0].T_BS[11]);
+  if (across > std::fabs(s.baseline)) {
+    char v[160];
+    std::snprintf(v, sizeof v, "(%.4g, %.4g, %.4g) m", s.baseline, rec.cam[1].T_BS[7] - rec.cam[0].T_BS[7],
+                  rec.cam[1].T_BS[11] - rec.cam[0].T_BS[11]);
+    throw error_at_key(yaml0, rec.cam[0].line.T_BS,
+                       std::string("T_BS: cam1's optical centre minus cam0's is ") + v +
+                           " in the body frame: more across body x than along it; the baseline must lie along body x "
+                           "(the direction of travel), within 45 degrees");
+  }
   s.frame_period = rec.frame_period_s;
   s.gyro_gap = gyro_gap_s(rec.imu_period_s);
   const double hfov = 2.0 * std::atan(0.5 * rec.cam[0].width / rec.cam[0].fu);

@@ -19,11 +19,20 @@ std::string setting_source(const Recording& rec, const std::string& setting) {
     return at(cam[0], rec.cam[0].line.T_BS) + " and " + at(std::string(layout::kCamDir[1]) + "/sensor.yaml",
                                                            rec.cam[1].line.T_BS) +
            ": T_BS (the baseline is cam1's x minus cam0's)";
+  // With one frame or one gyro sample the period is 1 / rate_hz (load_recording).
   if (setting == "frame_period")
-    return rec.root + "/" + layout::kCamDir[0] + "/data.csv: the median interval between frames";
-  if (setting == "gyro_gap") return rec.root + "/" + layout::kImuDir + "/data.csv: the median interval between samples";
+    return rec.frames.size() < 2 ? cam[0] + ": rate_hz (one frame: the frame period is 1 / rate_hz)"
+                                 : rec.root + "/" + layout::kCamDir[0] + "/data.csv: the median interval between frames";
+  if (setting == "gyro_gap")
+    return rec.imu_samples.size() < 2
+               ? rec.root + "/" + layout::kImuDir + "/sensor.yaml: rate_hz (one gyro sample: its period is 1 / rate_hz)"
+               : rec.root + "/" + layout::kImuDir + "/data.csv: the median interval between samples";
   if (setting == "kernels")
     return at(cam[0], rec.cam[0].line.intrinsics) + ": the field of view (resolution and intrinsics) sizes the kernels";
+  if (setting == "cam[].elevation_scale")  // from the lens model: the intrinsics and the coefficients
+    return at(cam[0], rec.cam[0].line.intrinsics) + " or " +
+           at(std::string(layout::kCamDir[1]) + "/sensor.yaml", rec.cam[1].line.intrinsics) +
+           ": intrinsics with distortion_coefficients (the lens model)";
   if (setting == "cam[].edges")
     return at(cam[0], rec.cam[0].line.distortion) + " or " +
            at(std::string(layout::kCamDir[1]) + "/sensor.yaml", rec.cam[1].line.distortion) +

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "lumavel/host/csv_table.hpp"
@@ -23,6 +24,23 @@ long key_line(const YAML::Node& root, const char* key) {
   for (const auto& kv : root)
     if (kv.first.IsScalar() && kv.first.Scalar() == key) return line_of(kv.first);
   return 0;
+}
+
+// yaml-cpp keeps every copy of a repeated key and answers with the first: a
+// T_BS appended to correct a file would be ignored. One value per key, in
+// the file's mapping and in the mappings it holds (T_BS).
+void check_unique_keys(const YAML::Node& map, const std::string& path, const std::string& within, int depth = 0) {
+  std::map<std::string, long> seen;
+  for (const auto& kv : map) {
+    if (!kv.first.IsScalar()) continue;
+    const std::string key = within + kv.first.Scalar();
+    const auto [at, fresh] = seen.emplace(key, line_of(kv.first));
+    if (!fresh)
+      throw recording_error_at(path, line_of(kv.first),
+                               "key '" + key + "' is given again (first at line " + std::to_string(at->second) +
+                                   "): one value per key");
+    if (depth == 0 && kv.second.IsMap()) check_unique_keys(kv.second, path, key + ".", depth + 1);
+  }
 }
 
 YAML::Node load_yaml(const std::string& path) {
@@ -42,6 +60,7 @@ YAML::Node load_yaml(const std::string& path) {
     if (!root.IsMap())
       throw recording_error_at(path, line_of(root),
                                "not a YAML mapping of sensor keys (KEY: VALUE lines, docs/recording-format.md)");
+    check_unique_keys(root, path, "");
     return root;
   } catch (const YAML::ParserException& e) {
     throw recording_error_at(path, e.mark.line + 1, "YAML syntax error: " + e.msg);
@@ -165,6 +184,19 @@ void write_text(const std::string& path, const std::string& text) {
 
 }  // namespace
 
+void check_intrinsics(const CameraSensor& c, const std::string& file, long line) {
+  auto range = [](int size) { return "] = [" + std::to_string(-size) + ", " + std::to_string(2 * size) + "] px"; };
+  if (!(c.cu >= -c.width && c.cu <= 2.0 * c.width))
+    throw recording_error_at(file, line, "intrinsics: principal point cu = " + format_double(c.cu) +
+                                             " px must lie in [-width, 2 width" + range(c.width));
+  if (!(c.fv >= 0.5 * c.fu && c.fv <= 2 * c.fu))
+    throw recording_error_at(file, line, "intrinsics: fu = " + format_double(c.fu) + " px, fv = " + format_double(c.fv) +
+                                             " px: fv/fu must be 0.5..2 (pixels at most 2:1 out of square)");
+  if (!(c.cv >= -c.height && c.cv <= 2.0 * c.height))
+    throw recording_error_at(file, line, "intrinsics: principal point cv = " + format_double(c.cv) +
+                                             " px must lie in [-height, 2 height" + range(c.height));
+}
+
 Pose identity_pose() { return {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}; }
 
 CameraSensor read_camera_yaml(const std::string& path) {
@@ -191,6 +223,7 @@ CameraSensor read_camera_yaml(const std::string& path) {
   c.cu = k[2];
   c.cv = k[3];
   if (c.fu <= 0 || c.fv <= 0) throw recording_error_at(path, line_of(in), "intrinsics: fu and fv must be positive");
+  check_intrinsics(c, path, line_of(in));
   const YAML::Node dm = require(root, "distortion_model", path);
   c.distortion_model = text_of(dm, "distortion_model", path);
   if (c.distortion_model != "radial-tangential")

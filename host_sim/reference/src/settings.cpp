@@ -36,8 +36,9 @@ int64_t quantise(double v, int frac, const Field& f, int64_t lo = INT32_MIN, int
     const double top = std::ldexp(static_cast<double>(hi) + 1, -frac);
     const std::string range = lo == -hi - 1 ? "|value| < " + g(top) : g(std::ldexp(static_cast<double>(lo), -frac)) +
                                                                           " to " + g(top);
-    throw SettingsError(f.setting, std::string(f.what) + " = " + g(v) + " " + f.unit +
-                                       " does not fit its fixed-point format (" + range + " " + f.unit + ")");
+    const std::string unit = *f.unit ? std::string(" ") + f.unit : std::string();  // a ratio has none
+    throw SettingsError(f.setting, std::string(f.what) + " = " + g(v) + unit + " does not fit its fixed-point format (" +
+                                       range + unit + ")");
   }
   return static_cast<int64_t>(q);
 }

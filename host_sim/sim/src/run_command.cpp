@@ -111,18 +111,6 @@ std::string default_plot_path(const RunArgs& a) {
   return dir + recording_name(a.rec) + "_estimates.svg";
 }
 
-std::string gaps_line(const Recording& rec) {
-  char buf[320];
-  std::snprintf(buf, sizeof buf,
-                "gaps: %d frame gaps (about %ld pairs missing, longest %.3f s), %d gyro holes (longest %.3f s)%s",
-                rec.gaps.frame_gaps, rec.gaps.frames_missing, rec.gaps.longest_frame_gap_s, rec.gaps.gyro_holes,
-                rec.gaps.longest_gyro_hole_s,
-                rec.gaps.frames_beyond_gyro > 0
-                    ? (", " + std::to_string(rec.gaps.frames_beyond_gyro) + " frames beyond the gyro's samples").c_str()
-                    : "");
-  return buf;
-}
-
 // Where the working size came from, when not from --width/--height.
 std::string working_size_origin(const RunArgs& a, const Recording& rec) {
   if (a.width > 0 || a.height > 0) return "";
@@ -269,7 +257,7 @@ int run(const RunArgs& a) {
                  result.width, result.height, working_size_origin(a, rec).c_str(),
                  result.wall_s > 0 ? static_cast<double>(result.frames) / result.wall_s : 0.0,
                  result.frames ? 1e6 * result.step_s / static_cast<double>(result.frames) : 0.0);
-    std::fprintf(stderr, "%s\n", gaps_line(rec).c_str());
+    std::fprintf(stderr, "gaps: %s\n", format_gaps(rec.gaps).c_str());
     std::fprintf(stderr, "%s\n", format_flag_counts(count_flags(result.track)).c_str());
     if (result.lens_distorted || a.ignore_distortion)
       std::fprintf(stderr, "%s\n", lens_line(result.lens_distorted, a.ignore_distortion));

@@ -11,6 +11,7 @@ namespace lumavel::host {
 struct SliderFrame {
   double t = 0;      // s
   std::string path;  // absolute or relative to the current directory
+  long line = 0;     // in images.txt
 };
 
 struct SliderPose {

@@ -56,6 +56,11 @@ struct Recording {
   GapReport gaps;
 };
 
+// "0 frame gaps (about 0 pairs missing, longest 0.000 s), 0 gyro holes
+// (longest 0.000 s)[, N frames beyond the gyro's samples]".
+std::string format_gaps(const GapReport& g);
+bool has_gaps(const GapReport& g);
+
 // `dir` is REC or REC/mav0. Throws RecordingError naming the file and the
 // line or frame of the first problem.
 Recording load_recording(const std::string& dir);

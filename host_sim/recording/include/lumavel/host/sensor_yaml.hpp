@@ -35,6 +35,12 @@ struct ImuSensor {
   std::string comment;
 };
 
+// The intrinsics' own rules, checked as they are read, before the lens
+// model uses them (a principal point of 1e5 px would otherwise be blamed on
+// the distortion coefficients): cu within [-width, 2 width], cv within
+// [-height, 2 height], fv/fu 0.5..2. Throws RecordingError naming FILE:LINE.
+void check_intrinsics(const CameraSensor& c, const std::string& file, long line);
+
 // Throw RecordingError naming `path` (and the line when the problem has one).
 CameraSensor read_camera_yaml(const std::string& path);
 ImuSensor read_imu_yaml(const std::string& path);

@@ -1,0 +1,629 @@
+// The corrupted-input campaign of the command-line tools: damaged copies of a
+// recording (the fixture's, or --base REC, e.g. a copy of out/reproduce/rec/
+// wall_40x30), of a slider dataset, of configuration and report files, each
+// run through the real executables from another folder with a timeout, and
+// each outcome classified:
+//   crash    a signal or a sanitizer report
+//   hang     still running at the timeout
+//   silent   exit 0 on bad input with no status flag raised
+//   unclear  refused, but the message does not name the file and the line,
+//            frame or value
+//   wrong    a harmless variation (CRLF, BOM, blank lines) changed the answer
+// Prints one line per case and exits 1 when any fails. CTest runs it on the
+// fixture (corpus_cli_campaign); by hand:
+//   build/tests/corpus/cli_campaign --sim build/host_sim/sim/lumavel-sim
+//     --read build/tools/lumavel-read/lumavel-read --base /tmp/wall_40x30 --keep /tmp/campaign
+#include <png.h>
+#include <signal.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <thread>
+#include <tuple>
+#include <vector>
+
+#include "lumavel/host/image_io.hpp"
+#include "recording_fixture.hpp"
+
+namespace fs = std::filesystem;
+using fixture::read_lines;
+using fixture::read_text;
+using fixture::replace_in;
+using fixture::set_field;
+using fixture::write_lines;
+using fixture::write_text;
+
+namespace {
+
+// ---- what a case is ----------------------------------------------------------
+
+enum class Expect {
+  kRefused,   // non-zero exit, the message names `file` and `where`
+  kFlagged,   // exit 0 with a status flag raised, or refused as above
+  kSame,      // exit 0 and the very estimates of the intact input
+};
+
+struct Case {
+  std::string name;
+  std::string tool;  // run, calibrate, import, config, replay
+  std::function<void(const std::string& dir)> damage;  // dir: the copy (REC, the dataset, the file's folder)
+  Expect expect;
+  std::string file;   // a part of the path the message must name
+  std::string where;  // and the line, frame or value ("" for a file-level rule)
+  // The argument the tool gets, from the damaged copy (default: the copy).
+  std::function<std::string(const std::string& dir)> arg;
+  std::vector<std::string> options = {};  // more command-line options
+};
+
+struct Outcome {
+  bool signaled = false, timed_out = false;
+  int code = 0, signal = 0;
+  std::string err;
+};
+
+// Runs argv in `cwd` (stdout to out_path, stderr captured), killed at `timeout_s`.
+Outcome run(const std::vector<std::string>& argv, const std::string& cwd, const std::string& out_path,
+            double timeout_s) {
+  const std::string err_path = cwd + "/stderr.txt";
+  std::fflush(stdout);  // else the child's freopen writes our buffered lines again
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    if (::chdir(cwd.c_str()) != 0) _exit(126);
+    if (!std::freopen(out_path.c_str(), "wb", stdout) || !std::freopen(err_path.c_str(), "wb", stderr)) _exit(126);
+    std::vector<char*> a;
+    for (const std::string& s : argv) a.push_back(const_cast<char*>(s.c_str()));
+    a.push_back(nullptr);
+    ::execv(a[0], a.data());
+    _exit(127);
+  }
+  Outcome o;
+  int status = 0;
+  const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+  for (;;) {
+    if (::waitpid(pid, &status, WNOHANG) == pid) break;
+    if (std::chrono::steady_clock::now() > end) {
+      ::kill(pid, SIGKILL);
+      ::waitpid(pid, &status, 0);
+      o.timed_out = true;
+      break;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  o.signaled = !o.timed_out && WIFSIGNALED(status);
+  o.signal = o.signaled ? WTERMSIG(status) : 0;
+  o.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  o.err = read_text(err_path);
+  return o;
+}
+
+// The status column (5th) of an estimates CSV, OR-ed over its rows.
+unsigned status_flags(const std::string& csv) {
+  unsigned flags = 0;
+  const std::vector<std::string> rows = read_lines(csv);
+  for (size_t i = 1; i < rows.size(); ++i) {
+    size_t at = 0;
+    for (int c = 0; c < 4 && at != std::string::npos; ++c) at = rows[i].find(',', at) + 1;
+    if (at != std::string::npos && at != 0) flags |= static_cast<unsigned>(std::strtoul(rows[i].c_str() + at, nullptr, 10));
+  }
+  return flags;
+}
+
+// ---- damage helpers ------------------------------------------------------------
+
+// Row `k` (0-based, after the header) of a data.csv: its 1-based line.
+size_t line_of_row(size_t k) { return k + 2; }
+
+// The image of row `k` of camera `cam` in REC.
+std::string image_of(const std::string& rec, int cam, size_t k) {
+  const std::string dir = rec + "/mav0/cam" + std::to_string(cam);
+  const std::string row = read_lines(dir + "/data.csv").at(line_of_row(k) - 1);
+  std::string name = row.substr(row.find(',') + 1);
+  while (!name.empty() && (name.back() == '\r' || name.back() == ' ')) name.pop_back();
+  return dir + "/data/" + name;
+}
+
+std::string frame_name(const std::string& rec, int cam, size_t k) {
+  const std::string p = image_of(rec, cam, k);
+  return p.substr(p.find_last_of('/') + 1);
+}
+
+size_t rows_of(const std::string& csv) { return read_lines(csv).size() - 1; }
+
+// A PNG of any colour type and depth, filled with a ramp.
+void write_png(const std::string& path, int w, int h, int depth, int color) {
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png_create_info_struct(png);
+  png_init_io(png, f);
+  png_set_IHDR(png, info, static_cast<png_uint_32>(w), static_cast<png_uint_32>(h), depth, color, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_BASE, PNG_FILTER_TYPE_BASE);
+  std::vector<png_color> palette(256);
+  for (int i = 0; i < 256; ++i) palette[static_cast<size_t>(i)] = {static_cast<png_byte>(i), static_cast<png_byte>(i), static_cast<png_byte>(i)};
+  if (color == PNG_COLOR_TYPE_PALETTE) png_set_PLTE(png, info, palette.data(), 256);
+  png_write_info(png, info);
+  const int channels = color == PNG_COLOR_TYPE_RGB ? 3 : color == PNG_COLOR_TYPE_GRAY_ALPHA ? 2
+                       : color == PNG_COLOR_TYPE_RGB_ALPHA                                  ? 4
+                                                                                            : 1;
+  std::vector<png_byte> row(static_cast<size_t>(w * channels * depth / 8 + 1));
+  for (size_t i = 0; i < row.size(); ++i) row[i] = static_cast<png_byte>(i * 7);
+  for (int y = 0; y < h; ++y) png_write_row(png, row.data());
+  png_write_end(png, nullptr);
+  png_destroy_write_struct(&png, &info);
+  std::fclose(f);
+}
+
+void truncate_file(const std::string& path, size_t keep) {
+  const std::string b = read_text(path);
+  write_text(path, b.substr(0, std::min(keep, b.size())));
+}
+
+void replace_by_folder(const std::string& p) {
+  fs::remove(p);
+  fs::create_directory(p);
+}
+
+// Every line of a text file passed through f.
+void edit_lines(const std::string& path, const std::function<std::string(const std::string&)>& f) {
+  std::vector<std::string> l = read_lines(path);
+  for (std::string& s : l) s = f(s);
+  write_lines(path, l);
+}
+
+// Keeps the header and the first `n` rows of cam0's and cam1's data.csv.
+void keep_frames(const std::string& rec, size_t n) {
+  for (const char* cam : {"cam0", "cam1"}) {
+    const std::string csv = rec + "/mav0/" + cam + "/data.csv";
+    std::vector<std::string> l = read_lines(csv);
+    l.resize(std::min(l.size(), n + 1));
+    write_lines(csv, l);
+  }
+}
+
+// Sets the value of `key:` in a sensor.yaml (its whole line).
+void set_yaml(const std::string& yaml, const std::string& key, const std::string& value) {
+  edit_lines(yaml, [&](const std::string& l) { return l.rfind(key + ":", 0) == 0 ? key + ": " + value : l; });
+}
+
+// Number `i` (0-based, row-major) of T_BS.data in a sensor.yaml: where it starts and ends.
+std::pair<size_t, size_t> tbs_number(const std::string& text, int i) {
+  size_t at = text.find("data: [") + 7;
+  for (int k = 0; k < i; ++k) at = text.find(',', at) + 1;
+  at = text.find_first_not_of(" \n", at);
+  return {at, text.find_first_of(",]", at)};
+}
+
+std::string get_tbs(const std::string& yaml, int i) {
+  const std::string t = read_text(yaml);
+  const auto [a, b] = tbs_number(t, i);
+  return t.substr(a, b - a);
+}
+
+void set_tbs(const std::string& yaml, int i, const std::string& value) {
+  std::string t = read_text(yaml);
+  const auto [a, b] = tbs_number(t, i);
+  write_text(yaml, t.replace(a, b - a, value));
+}
+
+std::string fixture_number(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.17g", v);
+  return b;
+}
+
+// ---- the recording cases -------------------------------------------------------
+
+std::string n(size_t v) { return std::to_string(v); }
+
+std::vector<Case> recording_cases(const std::string& base) {
+  const std::string m = "/mav0/";
+  const size_t frames = rows_of(base + m + "cam0/data.csv");
+  const size_t mid = frames / 2;                                // a frame in the middle
+  const size_t imu_mid = rows_of(base + m + "imu0/data.csv") / 2;
+  const std::string mid_frame = "frame " + n(mid);
+  const std::string mid_line = ":" + n(line_of_row(mid)) + ":";
+  const std::string imu_line = ":" + n(line_of_row(imu_mid)) + ":";
+  const std::string c0 = "cam0/data.csv", imu = "imu0/data.csv", gt = "state_groundtruth_estimate0/data.csv";
+  const std::string y0 = "cam0/sensor.yaml", y1 = "cam1/sensor.yaml", yi = "imu0/sensor.yaml";
+  auto img0 = [mid](const std::string& r) { return image_of(r, 0, mid); };
+  auto img1 = [mid](const std::string& r) { return image_of(r, 1, mid); };
+  auto both_csv = [m](const std::string& r, const std::function<void(const std::string&)>& f) {
+    f(r + m + "cam0/data.csv");
+    f(r + m + "cam1/data.csv");
+  };
+  std::vector<Case> c;
+  auto refused = [&](std::string name, std::function<void(const std::string&)> d, std::string file, std::string where) {
+    c.push_back({std::move(name), "run", std::move(d), Expect::kRefused, std::move(file), std::move(where), {}});
+  };
+  auto same = [&](std::string name, std::function<void(const std::string&)> d) {
+    c.push_back({std::move(name), "run", std::move(d), Expect::kSame, "", "", {}});
+  };
+  auto flagged = [&](std::string name, std::function<void(const std::string&)> d) {
+    c.push_back({std::move(name), "run", std::move(d), Expect::kFlagged, "", "", {}});
+  };
+  auto sensor_size = [m](const std::string& r) {
+    const std::string y = read_text(r + m + "cam0/sensor.yaml");
+    const size_t at = y.find("resolution: [") + 13;
+    return std::pair<int, int>{std::stoi(y.substr(at)), std::stoi(y.substr(y.find(',', at) + 1))};
+  };
+
+  // PNG frames.
+  refused("PNG truncated", [=](const std::string& r) { truncate_file(img0(r), 60); }, img0(base).substr(base.size() + 6), mid_frame);
+  refused("PNG zero bytes", [=](const std::string& r) { truncate_file(img1(r), 0); }, "cam1/data/", mid_frame);
+  refused("not a PNG (text)", [=](const std::string& r) { write_text(img0(r), "hello\n"); }, "cam0/data/", mid_frame);
+  for (const auto& [what, depth, color] : std::vector<std::tuple<std::string, int, int>>{
+           {"16-bit", 16, PNG_COLOR_TYPE_GRAY}, {"1-bit", 1, PNG_COLOR_TYPE_GRAY},
+           {"paletted", 8, PNG_COLOR_TYPE_PALETTE}, {"RGB", 8, PNG_COLOR_TYPE_RGB},
+           {"grayscale+alpha", 8, PNG_COLOR_TYPE_GRAY_ALPHA}, {"RGBA", 8, PNG_COLOR_TYPE_RGB_ALPHA}}) {
+    refused("PNG " + what, [=, depth = depth, color = color](const std::string& r) {
+      const auto [w, h] = sensor_size(r);
+      write_png(img0(r), w, h, depth, color);
+    }, "cam0/data/", mid_frame);
+  }
+  refused("PNG wrong size (mid frame)", [=](const std::string& r) {
+    const auto [w, h] = sensor_size(r);
+    write_png(img1(r), w + 1, h, 8, PNG_COLOR_TYPE_GRAY);
+  }, "cam1/data/", mid_frame);
+  refused("PNG wrong size (first frame)", [=](const std::string& r) {
+    const auto [w, h] = sensor_size(r);
+    write_png(image_of(r, 0, 0), w, h - 1, 8, PNG_COLOR_TYPE_GRAY);
+  }, "cam0/data/", "frame 0");
+  refused("PNG 16000x16000", [=](const std::string& r) { write_png(img0(r), 16000, 16000, 8, PNG_COLOR_TYPE_GRAY); },
+          "cam0/data/", mid_frame);
+  refused("frame file missing", [=](const std::string& r) { fs::remove(img1(r)); }, "cam1/data.csv", mid_line);
+  refused("folder where a frame is", [=](const std::string& r) { replace_by_folder(img0(r)); }, c0, mid_line);
+  refused("frame a symlink loop", [=](const std::string& r) {
+    fs::remove(img0(r));
+    fs::create_symlink(frame_name(r, 0, mid), img0(r));
+  }, c0, mid_line);
+  refused("cam1 at another resolution", [=](const std::string& r) {
+    const auto [w, h] = sensor_size(r);
+    for (size_t k = 0; k < frames; ++k) write_png(image_of(r, 1, k), w / 2, h / 2, 8, PNG_COLOR_TYPE_GRAY);
+    set_yaml(r + m + y1, "resolution", "[" + n(static_cast<size_t>(w / 2)) + ", " + n(static_cast<size_t>(h / 2)) + "]");
+    edit_lines(r + m + y1, [&](const std::string& l) {
+      return l.rfind("intrinsics:", 0) == 0 ? "intrinsics: [" + n(static_cast<size_t>(w / 2)) + ", " +
+                                                  n(static_cast<size_t>(w / 2)) + ", " + n(static_cast<size_t>(w / 4)) +
+                                                  ", " + n(static_cast<size_t>(h / 4)) + "]"
+                                            : l;
+    });
+  }, y1, "resolution");
+  {
+    Case k = c.back();  // at a working size both sensors can give, it ran (E 99.5 %)
+    k.name += ", --width 16 --height 12";
+    k.options = {"--width", "16", "--height", "12"};
+    c.push_back(k);
+  }
+
+  // data.csv.
+  refused("CSV header missing", [=](const std::string& r) { fixture::erase_line(r + m + c0, 1); }, c0, ":1:");
+  refused("CSV extra column", [=](const std::string& r) { fixture::set_line(r + m + c0, line_of_row(mid), read_lines(r + m + c0)[line_of_row(mid) - 1] + ",x"); }, c0, mid_line);
+  refused("CSV missing column", [=](const std::string& r) {
+    const std::string l = read_lines(r + m + imu)[line_of_row(imu_mid) - 1];
+    fixture::set_line(r + m + imu, line_of_row(imu_mid), l.substr(0, l.find_last_of(',')));
+  }, imu, imu_line);
+  refused("CSV non-numeric timestamp", [=](const std::string& r) { set_field(r + m + c0, line_of_row(mid), 0, "abc"); }, c0, mid_line);
+  refused("CSV NaN timestamp", [=](const std::string& r) { set_field(r + m + c0, line_of_row(mid), 0, "nan"); }, c0, mid_line);
+  refused("CSV negative timestamp", [=](const std::string& r) { both_csv(r, [](const std::string& f) { set_field(f, 2, 0, "-1000000000"); }); }, c0, ":2:");
+  refused("CSV timestamp beyond uint64", [=](const std::string& r) { both_csv(r, [&](const std::string& f) { set_field(f, line_of_row(frames - 1), 0, "99999999999999999999"); }); },
+          c0, ":" + n(line_of_row(frames - 1)) + ":");
+  refused("CSV timestamp beyond int64", [=](const std::string& r) { both_csv(r, [&](const std::string& f) { set_field(f, line_of_row(frames - 1), 0, "9300000000000000000"); }); },
+          c0, "9300000000000000000");
+  refused("CSV duplicate timestamp", [=](const std::string& r) { both_csv(r, [&](const std::string& f) { set_field(f, line_of_row(mid), 0, read_lines(f)[line_of_row(mid) - 2].substr(0, read_lines(f)[line_of_row(mid) - 2].find(','))); }); },
+          c0, mid_line);
+  refused("CSV decreasing timestamp", [=](const std::string& r) { set_field(r + m + imu, line_of_row(imu_mid), 0, "1"); }, imu, imu_line);
+  refused("CSV trailing garbage line", [=](const std::string& r) { write_text(r + m + c0, read_text(r + m + c0) + "garbage here"); }, c0, ":" + n(frames + 2) + ":");
+  refused("CSV very long line", [=](const std::string& r) { write_text(r + m + imu, read_text(r + m + imu) + std::string(4 << 20, '7') + "\n"); }, imu, ":" + n(rows_of(base + m + imu) + 2) + ":");
+  refused("CSV very long field", [=](const std::string& r) { set_field(r + m + imu, line_of_row(imu_mid), 3, std::string(1 << 20, 'x')); }, imu, imu_line);
+  refused("CSV empty file", [=](const std::string& r) { write_text(r + m + c0, ""); }, c0, ":1:");
+  refused("CSV semicolons", [=](const std::string& r) { edit_lines(r + m + imu, [](std::string l) { for (char& ch : l) if (ch == ',') ch = ';'; return l; }); }, imu, ":1:");
+  same("CSV CRLF line endings", [=](const std::string& r) { for (const std::string& f : {c0, imu, gt}) edit_lines(r + m + f, [](const std::string& l) { return l + "\r"; }); });
+  same("CSV UTF-8 BOM", [=](const std::string& r) { write_text(r + m + imu, "\xEF\xBB\xBF" + read_text(r + m + imu)); });
+  same("CSV blank lines", [=](const std::string& r) { edit_lines(r + m + c0, [](const std::string& l) { return l + "\n"; }); });
+  same("CSV spaces around fields", [=](const std::string& r) { edit_lines(r + m + imu, [](std::string l) { const size_t at = l.find(','); return l.insert(at, " ").insert(at + 2, " "); }); });
+
+  // The gyro.
+  refused("IMU NaN rate", [=](const std::string& r) { set_field(r + m + imu, line_of_row(imu_mid), 3, "nan"); }, imu, imu_line);
+  refused("IMU inf rate", [=](const std::string& r) { set_field(r + m + imu, line_of_row(imu_mid), 1, "-inf"); }, imu, imu_line);
+  refused("IMU 1e999 rate", [=](const std::string& r) { set_field(r + m + imu, line_of_row(imu_mid), 2, "1e999"); }, imu, imu_line);
+  flagged("IMU 1e30 yaw rate (saturates)", [=](const std::string& r) { set_field(r + m + imu, line_of_row(imu_mid), 3, "1e30"); });
+  flagged("IMU hole of a third", [=](const std::string& r) {
+    std::vector<std::string> l = read_lines(r + m + imu), out;
+    for (size_t i = 0; i < l.size(); ++i) if (i == 0 || i < l.size() / 3 || i > 2 * l.size() / 3) out.push_back(l[i]);
+    write_lines(r + m + imu, out);
+  });
+  refused("IMU out of order", [=](const std::string& r) {
+    std::vector<std::string> l = read_lines(r + m + imu);
+    std::swap(l[line_of_row(imu_mid) - 1], l[line_of_row(imu_mid)]);
+    write_lines(r + m + imu, l);
+  }, imu, ":" + n(line_of_row(imu_mid) + 1) + ":");
+  refused("IMU no samples", [=](const std::string& r) { write_lines(r + m + imu, {read_lines(r + m + imu)[0]}); }, imu, ":2:");
+  flagged("IMU one sample", [=](const std::string& r) { std::vector<std::string> l = read_lines(r + m + imu); l.resize(2); write_lines(r + m + imu, l); });
+
+  // Ground truth.
+  refused("GT zero quaternion", [=](const std::string& r) { for (size_t k = 4; k <= 7; ++k) set_field(r + m + gt, 3, k, "0"); }, gt, ":3:");
+  refused("GT NaN velocity", [=](const std::string& r) { set_field(r + m + gt, 3, 8, "nan"); }, gt, ":3:");
+  refused("GT header only", [=](const std::string& r) { write_lines(r + m + gt, {read_lines(r + m + gt)[0]}); }, gt, ":2:");
+  refused("GT a folder", [=](const std::string& r) { fs::remove(r + m + gt); fs::create_directory(r + m + gt); }, gt, "folder");
+
+  // sensor.yaml.
+  refused("YAML key missing", [=](const std::string& r) { edit_lines(r + m + y0, [](const std::string& l) { return l.rfind("resolution:", 0) == 0 ? "# no resolution" : l; }); }, y0, "resolution");
+  refused("YAML wrong type", [=](const std::string& r) { set_yaml(r + m + y1, "rate_hz", "[fast]"); }, y1, "rate_hz");
+  refused("YAML key given twice", [=](const std::string& r) { write_text(r + m + y0, read_text(r + m + y0) + "T_BS:\n  cols: 4\n  rows: 4\n  data: [1, 0, 0, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 0, 0, 1]\n"); }, y0, "T_BS");
+  refused("YAML binary garbage", [=](const std::string& r) { std::string g(300, '\0'); for (size_t i = 0; i < g.size(); ++i) g[i] = static_cast<char>(i * 37 + 11); write_text(r + m + y0, g); }, y0, "");
+  refused("YAML zero focal length", [=](const std::string& r) { edit_lines(r + m + y0, [](const std::string& l) { return l.rfind("intrinsics:", 0) == 0 ? "intrinsics: [0" + l.substr(l.find(',')) : l; }); }, y0, "fu");
+  refused("YAML negative focal length", [=](const std::string& r) { edit_lines(r + m + y1, [](const std::string& l) { return l.rfind("intrinsics:", 0) == 0 ? "intrinsics: [-40" + l.substr(l.find(',')) : l; }); }, y1, "fu");
+  refused("YAML fv 1e12", [=](const std::string& r) { edit_lines(r + m + y0, [](const std::string& l) { if (l.rfind("intrinsics:", 0) != 0) return l; const size_t a = l.find(',') + 1; return l.substr(0, a) + " 1e12" + l.substr(l.find(',', a)); }); }, y0, "fv");
+  refused("YAML cu outside", [=](const std::string& r) { edit_lines(r + m + y0, [](const std::string& l) { if (l.rfind("intrinsics:", 0) != 0) return l; size_t a = l.find(',') + 1; a = l.find(',', a) + 1; return l.substr(0, a) + " 1e5" + l.substr(l.find(',', a)); }); }, y0, "cu");
+  refused("YAML cv outside", [=](const std::string& r) { edit_lines(r + m + y1, [](const std::string& l) { if (l.rfind("intrinsics:", 0) != 0) return l; const size_t end = l.find(']'); return l.substr(0, l.find_last_of(',', end) + 1) + " -1e5" + l.substr(end); }); }, y1, "cv");
+  refused("YAML resolution unlike the PNGs", [=](const std::string& r) { set_yaml(r + m + y0, "resolution", "[64, 48]"); set_yaml(r + m + y1, "resolution", "[64, 48]"); }, "cam0/data/", "resolution [64, 48]");
+  refused("YAML lens not invertible", [=](const std::string& r) { set_yaml(r + m + y1, "distortion_coefficients", "[-5, 0, 0, 0]"); }, y1, "distortion_coefficients");
+  refused("YAML lens p1 = 3", [=](const std::string& r) { set_yaml(r + m + y0, "distortion_coefficients", "[0, 0, 3, 0]"); }, y0, "distortion_coefficients");
+  // Column 0 of the rotation (numbers 0, 4, 8) doubled, or negated: a mirror.
+  auto scale_column0 = [](const std::string& yaml, double by) {
+    for (int i : {0, 4, 8}) set_tbs(yaml, i, fixture_number(std::stod(get_tbs(yaml, i)) * by));
+  };
+  refused("YAML T_BS scaled", [=](const std::string& r) { scale_column0(r + m + y0, 2); }, y0, "T_BS");
+  refused("YAML T_BS a reflection", [=](const std::string& r) { scale_column0(r + m + y1, -1); }, y1, "T_BS");
+  refused("YAML T_BS 15 numbers", [=](const std::string& r) { replace_in(r + m + yi, "0, 0, 0, 1]", "0, 0, 0]"); }, yi, "T_BS");
+  refused("YAML baseline zero", [=](const std::string& r) { set_tbs(r + m + y0, 3, get_tbs(r + m + y1, 3)); }, y0, "T_BS");
+  refused("YAML baseline 1000 m", [=](const std::string& r) { set_tbs(r + m + y1, 3, "1000"); }, "sensor.yaml", "baseline");
+  refused("YAML baseline along y", [=](const std::string& r) { set_tbs(r + m + y1, 7, "3"); }, y0, "T_BS");
+  refused("cam1 missing entirely", [=](const std::string& r) { fs::remove_all(r + m + "cam1"); }, y1, "");
+  refused("mav0 a file", [=](const std::string& r) { fs::remove_all(r + "/mav0"); write_text(r + "/mav0", "x"); }, "mav0", "file");
+
+  // Recordings of 0, 1 and 2 frames.
+  refused("0 frames", [=](const std::string& r) { keep_frames(r, 0); }, c0, ":2:");
+  flagged("1 frame", [=](const std::string& r) { keep_frames(r, 1); });
+  flagged("2 frames", [=](const std::string& r) { keep_frames(r, 2); });
+
+  // What a user passes.
+  c.push_back({"REC/mav0/cam0 given", "run", nullptr, Expect::kRefused, "mav0/cam0", "sensor", [](const std::string& r) { return r + "/mav0/cam0"; }});
+  c.push_back({"a file given", "run", nullptr, Expect::kRefused, "cam0/data.csv", "file", [](const std::string& r) { return r + "/mav0/cam0/data.csv"; }});
+  c.push_back({"a folder that is no recording", "run", nullptr, Expect::kRefused, "/data", "not a recording", [](const std::string& r) { return r + "/mav0/cam0/data"; }});
+  c.push_back({"REC/mav0 given", "run", nullptr, Expect::kSame, "", "", [](const std::string& r) { return r + "/mav0/"; }});
+  c.push_back({"path with spaces", "run", [](const std::string& r) { fs::rename(r, r + " with spaces"); fs::create_directory(r); }, Expect::kSame, "", "", [](const std::string& r) { return r + " with spaces"; }});
+  c.push_back({"symlink loop as REC", "run", [](const std::string& r) { fs::create_symlink(r + "/loop_b", r + "/loop_a"); fs::create_symlink(r + "/loop_a", r + "/loop_b"); }, Expect::kRefused, "loop_a", "loop", [](const std::string& r) { return r + "/loop_a"; }});
+
+  // calibrate reads the recording the same way.
+  for (const char* name : {"PNG truncated", "YAML key given twice", "cam1 at another resolution", "CSV timestamp beyond int64"})
+    for (const Case& k : std::vector<Case>(c))
+      if (k.name == name) {
+        Case cal = k;
+        cal.name = "calibrate: " + k.name;
+        cal.tool = "calibrate";
+        c.push_back(cal);
+      }
+  return c;
+}
+
+// ---- the slider dataset (import-slider) ------------------------------------------
+
+void write_slider(const std::string& dir) {
+  fs::create_directories(dir + "/images");
+  std::string images, gt;
+  for (int i = 0; i < 12; ++i) {
+    char name[64];
+    std::snprintf(name, sizeof name, "images/frame_%08d.png", i);
+    std::vector<uint8_t> px(48 * 36);
+    for (int v = 0; v < 36; ++v)
+      for (int u = 0; u < 48; ++u) px[static_cast<size_t>(v * 48 + u)] = static_cast<uint8_t>(128 + 90 * std::sin(0.45 * (u + 3 * i)));
+    lumavel::host::write_png_gray(dir + "/" + name, px.data(), 48, 36);
+    char row[96];
+    std::snprintf(row, sizeof row, "%.6f %s\n", 0.01 + 0.04 * i, name);
+    images += row;
+  }
+  for (int k = 0; k <= 50; ++k) {
+    char row[96];
+    std::snprintf(row, sizeof row, "%.6f %.9f 0.0 0.0 0.0 0.0 0.0 1.0\n", 0.01 * k, 0.1 + 0.25 * 0.01 * k);
+    gt += row;
+  }
+  write_text(dir + "/images.txt", images);
+  write_text(dir + "/groundtruth.txt", gt);
+  write_text(dir + "/calib.txt", "50 51 23.5 17.5 -0.1 0.05 0.001 -0.002 0\n");
+}
+
+std::vector<Case> slider_cases() {
+  std::vector<Case> c;
+  auto refused = [&](std::string name, std::function<void(const std::string&)> d, std::string file, std::string where) {
+    c.push_back({"import: " + name, "import", std::move(d), Expect::kRefused, std::move(file), std::move(where), {}});
+  };
+  auto line5 = [](const std::string& path, const std::function<std::string(const std::string&)>& f) {
+    fixture::set_line(path, 5, f(read_lines(path)[4]));
+  };
+  refused("time '0.17abc'", [=](const std::string& d) { line5(d + "/images.txt", [](std::string l) { return l.insert(l.find(' '), "abc"); }); }, "images.txt", ":5:");
+  refused("negative time", [=](const std::string& d) { line5(d + "/images.txt", [](const std::string& l) { return "-5" + l.substr(l.find(' ')); }); }, "images.txt", ":5:");
+  refused("time 1e300 s", [=](const std::string& d) { line5(d + "/groundtruth.txt", [](const std::string& l) { return "1e300" + l.substr(l.find(' ')); }); }, "groundtruth.txt", ":5:");
+  refused("extra ground-truth field", [=](const std::string& d) { line5(d + "/groundtruth.txt", [](const std::string& l) { return l + " 7"; }); }, "groundtruth.txt", ":5:");
+  refused("zero quaternion", [=](const std::string& d) { line5(d + "/groundtruth.txt", [](const std::string& l) { return l.substr(0, l.size() - 3) + "0.0"; }); }, "groundtruth.txt", ":5:");
+  refused("extra calib field", [=](const std::string& d) { write_text(d + "/calib.txt", "50 51 23.5 17.5 0 0 0 0 0 9\n"); }, "calib.txt", ":1:");
+  refused("calib cy 1e6", [=](const std::string& d) { write_text(d + "/calib.txt", "50 51 23.5 1e6 0 0 0 0 0\n"); }, "calib.txt", "cv");
+  refused("calib k1 1e10", [=](const std::string& d) { write_text(d + "/calib.txt", "50 51 23.5 17.5 1e10 0 0 0 0\n"); }, "calib.txt", "distortion");
+  refused("image missing", [=](const std::string& d) { fs::remove(d + "/images/frame_00000004.png"); }, "images.txt", ":5:");
+  refused("image truncated", [=](const std::string& d) { truncate_file(d + "/images/frame_00000004.png", 70); }, "images.txt", ":5:");
+  refused("image of another size", [=](const std::string& d) { write_png(d + "/images/frame_00000004.png", 40, 36, 8, PNG_COLOR_TYPE_GRAY); }, "images.txt", ":5:");
+  refused("image RGB", [=](const std::string& d) { write_png(d + "/images/frame_00000004.png", 48, 36, 8, PNG_COLOR_TYPE_RGB); }, "images.txt", ":5:");
+  refused("empty images.txt", [=](const std::string& d) { write_text(d + "/images.txt", ""); }, "images.txt", "");
+  c.push_back({"import: BOM and CRLF", "import", [](const std::string& d) {
+    write_text(d + "/images.txt", "\xEF\xBB\xBF" + read_text(d + "/images.txt"));
+    edit_lines(d + "/groundtruth.txt", [](const std::string& l) { return l + "\r"; });
+  }, Expect::kSame, "", "", {}});
+  c.push_back({"import: image name with spaces", "import", [](const std::string& d) {
+    fs::rename(d + "/images/frame_00000004.png", d + "/images/frame 4.png");
+    fixture::set_line(d + "/images.txt", 5, read_lines(d + "/images.txt")[4].substr(0, 9) + "images/frame 4.png");
+  }, Expect::kSame, "", "", {}});
+  return c;
+}
+
+// ---- configuration and report files (lumavel-read) -----------------------------------
+
+std::vector<Case> read_cases(const std::string& report) {
+  std::vector<Case> c;
+  auto config = [&](std::string name, std::string text, std::string where) {
+    c.push_back({"config: " + name, "config", [text](const std::string& d) { write_text(d + "/rig.cfg", text); },
+                 Expect::kRefused, "rig.cfg", std::move(where), {}});
+  };
+  config("not a number", "width=40\ntau_us=fast\n", ":2:");
+  config("key twice", "width=40\nwidth=80\n", ":2:");
+  config("NaN", "baseline_m=nan\n", ":1:");
+  config("beyond int64", "tau_us=99999999999999999999999\n", ":1:");
+  config("no KEY=VALUE", "width 40\n", ":1:");
+  config("only comments", "# nothing\n\n", "no KEY=VALUE");
+  config("trailing comment", "width=40 # columns\n", ":1:");
+  config("lens table short", "width=40\nlens_cam0=0,0,0\n", ":2:");
+  auto replay = [&](std::string name, std::function<std::string(const std::string&)> bytes, std::string where) {
+    c.push_back({"replay: " + name, "replay", [bytes, report](const std::string& d) { write_text(d + "/run.hidrep", bytes(read_text(report))); },
+                 Expect::kRefused, "run.hidrep", std::move(where), {}});
+  };
+  replay("truncated", [](const std::string& b) { return b.substr(0, b.size() / 2 + 3); }, "record");
+  replay("bit flipped", [](std::string b) { b[b.size() / 2] = static_cast<char>(b[b.size() / 2] ^ 0x20); return b; }, "record");
+  replay("zero-length record", [](const std::string& b) { return b + std::string(1, '\0'); }, "record");
+  replay("no magic", [](const std::string& b) { return b.substr(8); }, "not a lumavel report file");
+  replay("empty", [](const std::string&) { return std::string(); }, "not a lumavel report file");
+  return c;
+}
+
+// ---- running and judging -----------------------------------------------------------
+
+struct Tools {
+  std::string sim, read;
+  double timeout_s = 60;
+};
+
+std::string one_line(std::string s) {
+  for (char& ch : s)
+    if (ch == '\n' || ch == '\r') ch = ' ';
+  return s.size() > 220 ? s.substr(0, 220) + "..." : s;
+}
+
+// "" when the outcome is as the case expects, else the failure class.
+std::string judge(const Case& k, const Outcome& o, const std::string& csv, const std::string& intact_csv) {
+  if (o.signaled) return "crash (signal " + std::to_string(o.signal) + ")";
+  if (o.timed_out) return "hang";
+  if (o.err.find("Sanitizer") != std::string::npos || o.err.find("runtime error:") != std::string::npos)
+    return "crash (sanitizer report)";
+  const bool refused_clearly =
+      o.code != 0 && o.err.find(k.file) != std::string::npos && o.err.find(k.where) != std::string::npos;
+  switch (k.expect) {
+    case Expect::kRefused:
+      if (o.code == 0) return "silent (exit 0)";
+      return refused_clearly ? "" : "unclear (wants '" + k.file + "' and '" + k.where + "')";
+    case Expect::kFlagged:
+      if (o.code != 0) return o.err.find("error: /") != std::string::npos ? "" : "unclear";
+      return status_flags(csv) != 0 ? "" : "silent (no status flag)";
+    case Expect::kSame:
+      if (o.code != 0) return "refused a harmless variation";
+      if (!intact_csv.empty() && read_text(csv) != read_text(intact_csv)) return "wrong (estimates differ)";
+      return "";
+  }
+  return "?";
+}
+
+std::vector<std::string> command(const Tools& t, const Case& k, const std::string& arg, const std::string& work) {
+  std::vector<std::string> a;
+  if (k.tool == "run") a = {t.sim, "run", arg, "-q", "-o", work + "/out.csv", "--plot", work + "/plot.svg"};
+  if (k.tool == "calibrate") a = {t.sim, "calibrate", arg, "-q"};
+  if (!a.empty()) {
+    a.insert(a.end(), k.options.begin(), k.options.end());
+    return a;
+  }
+  if (k.tool == "import") return {t.sim, "import-slider", arg, work + "/imported", "--baseline", "0.02"};
+  if (k.tool == "config") return {t.read, "config", "check", "--file", arg + "/rig.cfg"};
+  return {t.read, "replay", arg + "/run.hidrep", "-o", work + "/out.csv"};
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Tools t;
+  std::string base, keep;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    const std::string a = argv[i], v = argv[i + 1];
+    if (a == "--sim") t.sim = v;
+    else if (a == "--read") t.read = v;
+    else if (a == "--base") base = v;
+    else if (a == "--keep") keep = v;
+    else if (a == "--timeout") t.timeout_s = std::stod(v);
+    else {
+      std::fprintf(stderr, "usage: cli_campaign --sim LUMAVEL_SIM --read LUMAVEL_READ [--base REC] [--keep DIR] [--timeout S]\n");
+      return 2;
+    }
+  }
+  if (!base.empty() && !fs::is_directory(base)) {
+    std::fprintf(stderr, "cli_campaign: --base %s: not a recording folder\n", base.c_str());
+    return 2;
+  }
+  if (t.sim.empty() || t.read.empty()) {
+    std::fprintf(stderr, "cli_campaign: --sim and --read are needed\n");
+    return 2;
+  }
+  t.sim = fs::absolute(t.sim).string();
+  t.read = fs::absolute(t.read).string();
+  fixture::TempDir tmp;
+  const std::string root = keep.empty() ? tmp.path() : fs::absolute(keep).string();
+  fs::create_directories(root);
+  const std::string intact = root + "/intact", slider = root + "/slider_intact", work = root + "/work";
+  fs::remove_all(intact);
+  if (base.empty()) fixture::write_recording(intact);
+  else fs::copy(base, intact, fs::copy_options::recursive);
+  fs::remove_all(slider);
+  write_slider(slider);
+  fs::create_directories(work);
+
+  // The intact answers, and a report file to damage.
+  const std::string report = root + "/intact.hidrep", intact_csv = root + "/intact.csv", intact_import = root + "/intact_import.csv";
+  Outcome o = run({t.sim, "run", intact, "-q", "-o", intact_csv, "--plot", work + "/plot.svg", "--hid", "file:" + report}, work, work + "/stdout.txt", t.timeout_s);
+  if (o.code != 0) {
+    std::fprintf(stderr, "cli_campaign: the intact recording does not run: %s\n", o.err.c_str());
+    return 1;
+  }
+  fs::remove_all(work + "/imported");
+  o = run({t.sim, "import-slider", slider, work + "/imported", "--baseline", "0.02"}, work, work + "/stdout.txt", t.timeout_s);
+  if (o.code != 0 || run({t.sim, "run", work + "/imported", "-q", "-o", intact_import, "--plot", work + "/plot.svg"}, work, work + "/stdout.txt", t.timeout_s).code != 0) {
+    std::fprintf(stderr, "cli_campaign: the intact slider dataset does not import: %s\n", o.err.c_str());
+    return 1;
+  }
+
+  std::vector<Case> cases = recording_cases(intact);
+  for (Case& k : slider_cases()) cases.push_back(std::move(k));
+  for (Case& k : read_cases(report)) cases.push_back(std::move(k));
+
+  int failures = 0, i = 0;
+  for (const Case& k : cases) {
+    const std::string copy = root + "/case" + std::to_string(i++);
+    fs::remove_all(copy);
+    if (k.tool == "run" || k.tool == "calibrate") fs::copy(intact, copy, fs::copy_options::recursive | fs::copy_options::copy_symlinks);
+    else if (k.tool == "import") fs::copy(slider, copy, fs::copy_options::recursive);
+    else fs::create_directories(copy);
+    std::string judged;
+    try {
+      if (k.damage) k.damage(copy);
+    } catch (const std::exception& e) {
+      judged = std::string("the damage could not be made: ") + e.what();
+    }
+    const std::string arg = k.arg ? k.arg(copy) : copy;
+    fs::remove_all(work + "/imported");
+    fs::remove(work + "/out.csv");
+    o = run(command(t, k, arg, work), work, work + "/stdout.txt", t.timeout_s);
+    std::string csv = work + "/out.csv", reference = k.tool == "run" ? intact_csv : "";
+    if (k.tool == "import" && o.code == 0) {  // judged by the estimates of what it wrote
+      o = run({t.sim, "run", work + "/imported", "-q", "-o", csv, "--plot", work + "/plot.svg"}, work, work + "/stdout.txt", t.timeout_s);
+      reference = intact_import;
+    }
+    if (judged.empty()) judged = judge(k, o, csv, reference);
+    const char* expect = k.expect == Expect::kRefused ? "refused" : k.expect == Expect::kFlagged ? "flagged" : "same";
+    std::printf("%-4s %-44s %-8s exit %-3d %s%s\n", judged.empty() ? "ok" : "FAIL", k.name.c_str(), expect, o.code,
+                judged.empty() ? "" : ("[" + judged + "] ").c_str(), one_line(o.err).c_str());
+    if (!judged.empty()) ++failures;
+    if (keep.empty()) fs::remove_all(copy);
+    if (fs::exists(copy + " with spaces")) fs::remove_all(copy + " with spaces");
+  }
+  std::printf("%zu cases, %d failed\n", cases.size(), failures);
+  return failures == 0 ? 0 : 1;
+}
