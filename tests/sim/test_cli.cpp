@@ -229,6 +229,13 @@ TEST(Cli, OutputFilePlotNextToItAndQuiet) {
   STRCMP_CONTAINS("fixed engine, 40x30 working", r.err.c_str());
 }
 
+TEST(Cli, OutputToADeviceKeepsThePlotInTheCurrentFolder) {
+  rec();
+  Outcome r = sim("run rec -o /dev/null -q");
+  LONGS_EQUAL(0, r.code);
+  CHECK(exists(dir.path() + "/rec_estimates.svg"));
+}
+
 TEST(Cli, NoGroundTruthNoPlotUnlessAsked) {
   fixture::Options o;
   o.groundtruth = false;

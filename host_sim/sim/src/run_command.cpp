@@ -5,6 +5,7 @@
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <thread>
@@ -106,8 +107,12 @@ std::string recording_name(std::string path) {
 
 std::string default_plot_path(const RunArgs& a) {
   std::string dir;
+  // Beside a file only: not beside a device or a pipe (-o /dev/null, /dev/stdout).
+  std::error_code ec;
+  const auto kind = std::filesystem::status(a.output, ec).type();
+  const bool beside = kind == std::filesystem::file_type::not_found || kind == std::filesystem::file_type::regular;
   const size_t s = a.output.find_last_of('/');
-  if (s != std::string::npos) dir = a.output.substr(0, s + 1);
+  if (beside && s != std::string::npos) dir = a.output.substr(0, s + 1);
   return dir + recording_name(a.rec) + "_estimates.svg";
 }
 
@@ -327,7 +332,8 @@ void add_run_command(cli::Tool& tool) {
               "(experimental, off by default: docs/design.md)");
   c->add_option("--plot", a->plot,
                 "plot file (default: REC_estimates.svg next to the -o file,\n"
-                "or in the current folder); written when the recording has\n"
+                "or in the current folder when the output is standard output\n"
+                "or a device such as /dev/null); written when the recording has\n"
                 "ground truth or when --plot is given")
       ->type_name("FILE.svg");
   c->add_option("--hid", a->hid,
