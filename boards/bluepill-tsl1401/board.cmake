@@ -2,4 +2,4 @@
 # capacities shrink to one 128-pixel line, 4 kernels and 16 frames of
 # time-of-flight history so that it fits.
 # Read by cmake/arm-none-eabi.cmake before the compilers are set up.
-set(LUMAVEL_BOARD_FLAGS "-mcpu=cortex-m3 -mthumb -mfloat-abi=soft -DLUMAVEL_MAX_COLS=128 -DLUMAVEL_MAX_ROWS=1 -DLUMAVEL_MAX_KERNELS=4 -DLUMAVEL_TOF_FRAMES=16")
+set(LUMAVEL_BOARD_FLAGS "-mcpu=cortex-m3 -mthumb -mfloat-abi=soft -DLUMAVEL_MAX_COLS=128 -DLUMAVEL_MAX_ROWS=1 -DLUMAVEL_MAX_KERNELS=4 -DLUMAVEL_TOF_FRAMES=16 -DLUMAVEL_MATCH_FRAMES=0")

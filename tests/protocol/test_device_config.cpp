@@ -65,7 +65,7 @@ const Case kCases[] = {
     {"gyro gap", [](DeviceConfig& c) { c.gyro_gap_us = 99; }, ConfigField::kGyroGap},
     {"low texture", [](DeviceConfig& c) { c.low_texture = -1; }, ConfigField::kLowTexture},
     {"saturated", [](DeviceConfig& c) { c.saturated_permille = 1001; }, ConfigField::kSaturatedPermille},
-    {"options", [](DeviceConfig& c) { c.options = 0x10; /* the first bit no option uses */ }, ConfigField::kOptions},
+    {"options", [](DeviceConfig& c) { c.options = 0x20; /* the first bit no option uses */ }, ConfigField::kOptions},
     {"still distance low", [](DeviceConfig& c) { c.still_distance = 1677; }, ConfigField::kStillDistance},
     {"still distance high", [](DeviceConfig& c) { c.still_distance = 1677723; }, ConfigField::kStillDistance},
     {"still duration low", [](DeviceConfig& c) { c.still_min_us = 99999; }, ConfigField::kStillDuration},
@@ -195,7 +195,7 @@ TEST(DeviceConfig, LensTablesReachTheEstimatorOnlyWhenNamed) {
 
 TEST(DeviceConfig, DefaultsCarryTheEstimatorsOwnDefaults) {
   const DeviceConfig c = default_device_config();
-  CHECK_EQUAL(lumavel::kOptionBaselineCorrection | lumavel::kOptionGyroOffsetLearning, c.options);
+  CHECK_EQUAL(lumavel::kOptionBaselineCorrection | lumavel::kOptionGyroOffsetLearning | lumavel::kOptionPhotometricMatch, c.options);
   CHECK_EQUAL(33554, c.still_distance);  // 2 mm
   CHECK_EQUAL(500000u, c.still_min_us);
   CHECK_EQUAL(0, c.lens);

@@ -35,10 +35,11 @@ struct Frame {
 std::vector<Frame> drive(host::EngineKind kind, test::SyntheticRig rig, double secs,
                          const std::function<double(double)>& v, const std::function<double(double)>& w = {},
                          const std::function<bool(int)>& drop = {}, bool photometric_balance = false,
-                         const std::function<bool(double)>& blank = {}) {
+                         const std::function<bool(double)>& blank = {}, bool photometric_match = true) {
   rig.noise = 1.0;
   auto s = rig.settings();
   s.photometric_balance = photometric_balance;
+  s.photometric_match = photometric_match;
   s.frame_period = 1 / kRate;
   auto eng = host::make_engine(kind, s);
   std::vector<Frame> out;
@@ -353,9 +354,10 @@ TEST(PhotometricBalance, MismatchedCamerasAreBalanced) {
   matched.wall = 1.5;
   auto v = [](double t) { return 1.0 + 0.2 * std::sin(t); };
   for (auto kind : kEngines) {
-    const Summary twin = summarise(drive(kind, matched, 10, v, {}, {}, true), matched.baseline, 4.0);
-    const Summary on = summarise(drive(kind, mismatched(), 10, v, {}, {}, true), matched.baseline, 4.0);
-    const Summary off = summarise(drive(kind, mismatched(), 10, v, {}, {}, false), matched.baseline, 4.0);
+    // (the balance alone: the photometric match off)
+    const Summary twin = summarise(drive(kind, matched, 10, v, {}, {}, true, {}, false), matched.baseline, 4.0);
+    const Summary on = summarise(drive(kind, mismatched(), 10, v, {}, {}, true, {}, false), matched.baseline, 4.0);
+    const Summary off = summarise(drive(kind, mismatched(), 10, v, {}, {}, false, {}, false), matched.baseline, 4.0);
     print("matched cameras", kind, twin);
     print("mismatched, balanced", kind, on);
     print("mismatched, balance off", kind, off);
@@ -375,7 +377,7 @@ TEST(PhotometricBalance, StandstillLeavesTheBalanceAlone) {
   rig.column_offset = 1.0;
   auto v = [](double t) { return t < 5 || t > 15 ? 0.8 : 0.0; };
   for (auto kind : kEngines) {
-    const auto run = drive(kind, rig, 20, v, {}, {}, true);
+    const auto run = drive(kind, rig, 20, v, {}, {}, true, {}, false);
     double still_worst = 0, before = 0, after = 0;
     int nb = 0, na = 0;
     for (const Frame& f : run) {
@@ -389,5 +391,83 @@ TEST(PhotometricBalance, StandstillLeavesTheBalanceAlone) {
                 still_worst, 100 * before, 100 * after);
     CHECK(still_worst < 0.02);
     CHECK(after < before + 0.01);
+  }
+}
+
+TEST_GROUP(PhotometricMatch){};
+
+namespace {
+
+// Two cameras of one model that are not twins: cam1 15 % more gain, black
+// level 6 vs 10, corner fall-off 30 vs 38 % (what the match models).
+test::SyntheticRig mismatched_pair() {
+  test::SyntheticRig rig;
+  rig.wall = 1.5;
+  rig.cam_gain[1] = 1.15;
+  rig.cam_black[0] = 6;
+  rig.cam_black[1] = 10;
+  rig.vignetting[0] = -0.30;
+  rig.vignetting[1] = -0.38;
+  return rig;
+}
+
+}  // namespace
+
+// With the match E comes back near the matched rig's; forced off, the
+// difference reads as velocity.
+TEST(PhotometricMatch, MismatchedCamerasAreMatched) {
+  test::SyntheticRig matched;
+  matched.wall = 1.5;
+  auto v = [](double t) { return 1.0 + 0.2 * std::sin(t); };
+  for (auto kind : kEngines) {
+    const Summary twin = summarise(drive(kind, matched, 10, v), matched.baseline, 4.0);
+    const Summary on = summarise(drive(kind, mismatched_pair(), 10, v), matched.baseline, 4.0);
+    const Summary off = summarise(drive(kind, mismatched_pair(), 10, v, {}, {}, false, {}, false), matched.baseline, 4.0);
+    print("matched cameras", kind, twin);
+    print("mismatched, matched by the photometric match", kind, on);
+    print("mismatched, match off", kind, off);
+    CHECK(on.e_fused < twin.e_fused + 0.01);
+    CHECK(on.e_fused < 0.5 * off.e_fused);
+  }
+}
+
+// A standstill and a reversal (the cameras swap roles): standing still
+// teaches nothing and V stays near 0; after the reversal the match still
+// holds (the trailing camera is now cam1).
+TEST(PhotometricMatch, StandstillAndReversal) {
+  auto v = [](double t) { return t < 5 ? 0.8 : (t < 10 ? 0.0 : -0.8); };
+  for (auto kind : kEngines) {
+    const auto on = drive(kind, mismatched_pair(), 16, v);
+    const auto off = drive(kind, mismatched_pair(), 16, v, {}, {}, false, {}, false);
+    auto measure = [](const std::vector<Frame>& run, double& still_worst, double& after) {
+      still_worst = after = 0;
+      int n = 0;
+      for (const Frame& f : run) {
+        if (f.t > 6.5 && f.t < 10) still_worst = std::max(still_worst, std::fabs(f.e.v));
+        if (f.t > 12) after += std::fabs(f.e.v - f.v_true) / std::fabs(f.v_true), ++n;
+      }
+      after /= n;
+    };
+    double still_on, after_on, still_off, after_off;
+    measure(on, still_on, after_on);
+    measure(off, still_off, after_off);
+    std::printf("\n  %s: worst |V| standing still %.4f m/s (match off %.4f); E after the reversal %.2f %% (off %.2f %%)",
+                host::engine_name(kind), still_on, still_off, 100 * after_on, 100 * after_off);
+    CHECK(still_on < 0.02);
+    CHECK(after_on < 0.5 * after_off);
+  }
+}
+
+// Frames dropped now and then: each gap clears the match's history (no
+// interpolation across it) and it keeps learning between them.
+TEST(PhotometricMatch, DroppedFrames) {
+  auto v = [](double t) { return 1.0 + 0.2 * std::sin(t); };
+  auto drop = [](int i) { return i % 23 == 7 || i % 37 == 11; };
+  for (auto kind : kEngines) {
+    const Summary on = summarise(drive(kind, mismatched_pair(), 10, v, {}, drop), 0.08, 4.0);
+    const Summary off = summarise(drive(kind, mismatched_pair(), 10, v, {}, drop, false, {}, false), 0.08, 4.0);
+    print("mismatched, dropped frames, match on", kind, on);
+    print("mismatched, dropped frames, match off", kind, off);
+    CHECK(on.e_fused < 0.5 * off.e_fused);
   }
 }

@@ -6,6 +6,7 @@
 #include "lumavel/core/estimator_params.hpp"
 #include "lumavel/core/fusion_params.hpp"
 #include "lumavel/core/imath.hpp"
+#include "lumavel/core/photometric_params.hpp"
 #include "lumavel/core/status.hpp"
 
 namespace lumavel {
@@ -46,6 +47,8 @@ ConfigError Estimator::configure(const EstimatorConfig& cfg) {
     if (cfg_.kernels[k].sigma < narrowest) narrowest = cfg_.kernels[k].sigma;
   constexpr int64_t kRotationQ16 = fx::q_of(params::kTofMaxRotationSigma, 16);
   tof_max_rotation_ = static_cast<AngleQ28>((kRotationQ16 * narrowest) >> 16);
+  constexpr int64_t kMatchRotationQ16 = fx::q_of(params::kMatchMaxRotationSigma, 16);
+  match_max_rotation_ = static_cast<AngleQ28>((kMatchRotationQ16 * narrowest) >> 16);
   // The lens tables are the caller's: the kernel tables are built from them now.
   cfg_.edge_offsets[0] = cfg_.edge_offsets[1] = nullptr;
   configured_ = true;
@@ -61,6 +64,9 @@ void Estimator::reset() {
   tof_.reset();
   fusion_.reset();
   balance_.reset();
+#if LUMAVEL_MATCH_FRAMES > 0
+  match_.reset();
+#endif
   y_ = 0;
   have_prev_ = false;
   cur_ = 0;
@@ -83,7 +89,19 @@ Estimate Estimator::step(const FramePair& frames) {
     column_profile(frames.cam[i], cfg_.width, cfg_.height, frames.stride, bank_.column_band(), p[i]);
   const int next = have_prev_ ? 1 - cur_ : cur_;
   StereoMeasurement& m = meas_[next];
+  // (on the sums as the cameras gave them: the mapping changes cam1's)
+  const bool no_stereo = same_textured_profile(p[0], p[1], bank_.column_band(), cfg_.height);
+  const bool matching = (cfg_.options & kOptionPhotometricMatch) != 0;  // (validate(): only where built in)
+#if LUMAVEL_MATCH_FRAMES > 0
+  if (matching) match_.apply(p[1], bank_.column_band(), cfg_.height);
+#endif
   stereo_measurement(p[0], p[1], bank_, (cfg_.options & kOptionPhotometricBalance) ? &balance_ : nullptr, m);
+#if LUMAVEL_MATCH_FRAMES > 0
+  MatchJac jac;
+  if (matching) match_.jacobian(p[1], bank_.column_band(), cfg_.height, bank_.cam[1], bank_.count, m.f[1], jac);
+  MatchInput match_in{};
+  match_in.usable = false;
+#endif
 
   uint16_t status = 0;
   const uint32_t sampled = p[0].clip_sampled + p[1].clip_sampled;
@@ -105,7 +123,6 @@ Estimate Estimator::step(const FramePair& frames) {
   const bool gyro_saturated = gyro_.saturated_since(interval_start);
   if (gyro_saturated) status |= kStatusSaturated;
 
-  const bool no_stereo = same_textured_profile(p[0], p[1], bank_.column_band(), cfg_.height);
   if (m.no_light || no_stereo) {
     // Unusable frame: hold V, and pair the next good frame with nothing.
     status |= (m.no_light ? kStatusNoLight : kStatusNoStereo) | kStatusLowTexture | kStatusNoTof;
@@ -180,6 +197,11 @@ Estimate Estimator::step(const FramePair& frames) {
       if (fo.saturated) status |= kStatusSaturated;
       est.tof_ns = tof.ok ? tof.tau_ns : 0;
       distance_ = advance(distance_, fo.v, dt_ns, &distance_rem_);
+#if LUMAVEL_MATCH_FRAMES > 0
+      match_in = {frames.t_ns, heading_, {m.f[0], m.f[1]}, {m.r[0], m.r[1]}, &jac, m.count, fo.v, cfg_.baseline,
+                  match_max_rotation_,
+                  o.updated && !gyro_saturated && !(status & (kStatusSaturated | kStatusGyroGap | kStatusFrameGap))};
+#endif
       // The balance (not where the rotation or the interval is in doubt: the
       // stereo prediction needs both).
       if ((cfg_.options & kOptionPhotometricBalance) && o.updated && !gyro_saturated &&
@@ -188,6 +210,23 @@ Estimate Estimator::step(const FramePair& frames) {
     }
     cur_ = next;
   }
+  // The photometric match learns from every clean interval (an unusable one
+  // clears its history); new parameters move this frame's F1 as if it had
+  // been taken with them, so that the next interval sees no step.
+#if LUMAVEL_MATCH_FRAMES > 0
+  if (matching && match_.learn(match_in)) {
+    for (uint8_t k = 0; k < m.count; ++k) {
+      int64_t jp = 0;
+      for (int j = 0; j < kMatchParams; ++j) jp += int64_t{jac[k][j]} * match_.delta(j);
+      const int64_t df = fx::shr_round(jp, 30);
+      m.f[1][k] = fx::sat32(m.f[1][k] + df);
+      m.mid[k] = fx::sat32(m.mid[k] + fx::shr_round(df, 1));
+      m.diff[k] = fx::sat32(m.diff[k] + df);
+    }
+  }
+#else
+  (void)matching;
+#endif
   if (observer_.converging_now()) status |= kStatusConverging;
   prev_t_ns_ = frames.t_ns;
   prev_gyro_angle_ = angle;

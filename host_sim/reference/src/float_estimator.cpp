@@ -6,6 +6,7 @@
 
 #include "lumavel/core/estimator_params.hpp"
 #include "lumavel/core/fusion_params.hpp"
+#include "lumavel/core/photometric_params.hpp"
 #include "lumavel/core/status.hpp"
 #include "lumavel/host/float_column_profile.hpp"
 
@@ -23,6 +24,7 @@ FloatEstimator::FloatEstimator(const EstimatorSettings& s) : s_(s) {
   double narrowest = s.kernels.empty() ? 0 : s.kernels[0].sigma;
   for (const KernelModel& k : s.kernels) narrowest = std::min(narrowest, k.sigma);
   tof_max_rotation_ = params::kTofMaxRotationSigma * narrowest;
+  match_max_rotation_ = params::kMatchMaxRotationSigma * narrowest;
   bank_ = build_float_kernel_bank(s_);
   balance_ = FloatPhotometricBalance(static_cast<int>(s_.kernels.size()));
 }
@@ -34,8 +36,15 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
   FloatColumnProfile p[2];
   const uint8_t* cam[2] = {cam0, cam1};
   for (int i = 0; i < 2; ++i) p[i] = float_column_profile(bank_.band, cam[i], s_.width, s_.height);
-  const FloatStereoMeasurement m =
+  // (on the sums as the cameras gave them: the mapping changes cam1's)
+  const bool no_stereo = float_same_textured_profile(p[0], p[1], bank_.band);
+  const bool matching = s_.photometric_match;
+  if (matching) p[1] = match_.apply(p[1], bank_.band.rows);
+  FloatStereoMeasurement m =
       float_stereo_measurement(p[0], p[1], bank_, s_.photometric_balance ? &balance_ : nullptr);
+  const Eigen::MatrixXd jac = matching ? match_.jacobian(p[1], bank_.band.rows, bank_.cam[1], m.f[1]) : Eigen::MatrixXd();
+  FloatPhotometricMatch::Input match_in{};
+  match_in.usable = false;
 
   uint16_t status = 0;
   const double sampled = p[0].clip_sampled + p[1].clip_sampled;
@@ -55,7 +64,6 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
   const bool gyro_saturated = gyro_.saturated_since(interval_start);  // V held over the interval
   if (gyro_saturated) status |= kStatusSaturated;
 
-  const bool no_stereo = float_same_textured_profile(p[0], p[1], bank_.band);
   if (m.no_light || no_stereo) {
     status |= (m.no_light ? kStatusNoLight : kStatusNoStereo) | kStatusLowTexture | kStatusNoTof;
     have_prev_ = false;
@@ -126,12 +134,23 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
       if (!fo.used_tof) status |= kStatusNoTof;
       est.tof_s = tof.ok ? tof.tau_ns * 1e-9 : 0;
       distance_ += fo.v * dt;
+      match_in = {t_ns, heading_, {&m.f[0], &m.f[1]}, {&m.r[0], &m.r[1]}, &jac, fo.v, s_.baseline,
+                  match_max_rotation_,
+                  o.updated && !gyro_saturated && !(status & (kStatusSaturated | kStatusGyroGap | kStatusFrameGap))};
       // The balance (not where the rotation or the interval is in doubt).
       if (s_.photometric_balance && o.updated && !gyro_saturated &&
           !(status & (kStatusSaturated | kStatusGyroGap | kStatusFrameGap)))
         balance_.learn(prev_, m, dtheta, s_.baseline);
     }
     prev_ = m;
+  }
+  // The photometric match (as the core: an unusable interval clears its
+  // history; new parameters move this frame's F1 by J dp).
+  if (matching && match_.learn(match_in)) {
+    const Eigen::VectorXd df = jac * match_.delta();
+    prev_.f[1] += df;
+    prev_.mid += 0.5 * df;
+    prev_.diff += df;
   }
   if (observer_.converging_now()) status |= kStatusConverging;
   prev_t_ns_ = t_ns;

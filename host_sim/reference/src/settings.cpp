@@ -138,7 +138,8 @@ void to_fixed_config(const EstimatorSettings& s, FixedConfig& out) {
   c.options = static_cast<uint8_t>((s.baseline_correction ? kOptionBaselineCorrection : 0) |
                                    (s.gyro_offset_learning ? kOptionGyroOffsetLearning : 0) |
                                    (s.photometric_balance ? kOptionPhotometricBalance : 0) |
-                                   (s.elevation_band ? kOptionElevationBand : 0));
+                                   (s.elevation_band ? kOptionElevationBand : 0) |
+                                   (s.photometric_match ? kOptionPhotometricMatch : 0));
   c.still_distance = static_cast<LengthQ24>(quantise(s.still_distance, fx::kLengthFrac, {"still distance", "still_distance", "m"}));
   c.still_min_us = micros(s.still_min, {"still duration", "still_min", "s"});
   for (int i = 0; i < 2; ++i) {

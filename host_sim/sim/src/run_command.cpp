@@ -57,6 +57,7 @@ struct RunArgs {
   bool ignore_distortion = false;
   bool no_gyro_offset_learning = false;
   bool photometric_balance = false;
+  bool no_photometric_match = false;
   bool elevation_band = false;
 };
 
@@ -204,6 +205,7 @@ int run(const RunArgs& a) {
   options.ignore_distortion = a.ignore_distortion;
   options.gyro_offset_learning = !a.no_gyro_offset_learning;
   options.photometric_balance = a.photometric_balance;
+  options.photometric_match = !a.no_photometric_match;
   options.elevation_band = a.elevation_band;
 
   std::unique_ptr<HidSender> hid;
@@ -321,6 +323,11 @@ void add_run_command(cli::Tool& tool) {
               "take the gyro as it reads: do not learn its zero-rate\n"
               "offset while the images show the rig standing still\n"
               "(learned by default); for comparisons");
+  c->add_flag("--no-photometric-match", a->no_photometric_match,
+              "take the two cameras as photometric twins: do not learn\n"
+              "cam1's black level and vignetting against cam0's (learned\n"
+              "by default where one camera stands where the other stood:\n"
+              "docs/design.md); for comparisons");
   c->add_flag("--photometric-balance", a->photometric_balance,
               "learn cam1's offset against cam0 per kernel over the\n"
               "first 4 m of travel and correct it (for cameras that are\n"

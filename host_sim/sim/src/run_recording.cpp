@@ -87,6 +87,7 @@ EstimatorSettings run_settings(const Recording& rec, const RunOptions& options) 
     for (CameraModel& c : s.cam) c.edges.clear();  // no edge table: the engines use the pinhole columns
   s.gyro_offset_learning = options.gyro_offset_learning;
   s.photometric_balance = options.photometric_balance;
+  s.photometric_match = options.photometric_match;
   s.elevation_band = options.elevation_band;
   return s;
 }

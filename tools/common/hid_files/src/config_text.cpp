@@ -156,7 +156,8 @@ const char* config_keys_help() {
          "  frame_period_us, max_gap_us, gyro_gap_us   timing, us\n"
          "  low_texture              rms of F1-F0 below which V is held\n"
          "  saturated_permille       clipped pixels that raise SATURATED, per mille\n"
-         "  baseline_correction, gyro_offset_learning, photometric_balance, elevation_band\n"
+         "  baseline_correction, gyro_offset_learning, photometric_balance, elevation_band,\n"
+         "  photometric_match\n"
          "                           estimator options, 0 | 1\n"
          "  still_distance_m         image change below which the rig counts as still, m\n"
          "  still_min_us             stillness before the gyro offset is taken, us\n"
@@ -191,6 +192,7 @@ std::string format_setup(const DeviceSetup& d) {
   line("gyro_offset_learning", (c.options & kOptionGyroOffsetLearning) ? "1" : "0");
   line("photometric_balance", (c.options & kOptionPhotometricBalance) ? "1" : "0");
   line("elevation_band", (c.options & kOptionElevationBand) ? "1" : "0");
+  line("photometric_match", (c.options & kOptionPhotometricMatch) ? "1" : "0");
   line("still_distance_m", num_q(c.still_distance, fx::kLengthFrac));
   line("still_min_us", std::to_string(c.still_min_us));
   line("lens_cam0", format_lens(d.lens[0]));
@@ -278,6 +280,7 @@ void apply_value(DeviceSetup& d, const std::string& k, const std::string& v) {
   else if (k == "gyro_offset_learning") option(kOptionGyroOffsetLearning);
   else if (k == "photometric_balance") option(kOptionPhotometricBalance);
   else if (k == "elevation_band") option(kOptionElevationBand);
+  else if (k == "photometric_match") option(kOptionPhotometricMatch);
   else if (k == "still_distance_m") c.still_distance = to_q(v, fx::kLengthFrac);
   else if (k == "still_min_us") c.still_min_us = static_cast<uint32_t>(parse_int(v, 0, u32));
   else if (k == "lens_cam0") d.lens[0] = parse_lens(k, v);
@@ -397,7 +400,8 @@ std::string rule_of_key(const std::string& key) {
     return "kernels are ORDER:SIGMA_RAD[,...], 1.." + std::to_string(proto::kWireKernels) +
            " of them, orders 0..3, sigmas 0.0087..0.785 rad (0.5..45 deg)";
   if (key == "cam0_upside_down" || key == "cam1_upside_down" || key == "baseline_correction" ||
-      key == "gyro_offset_learning" || key == "photometric_balance" || key == "elevation_band")
+      key == "gyro_offset_learning" || key == "photometric_balance" || key == "elevation_band" ||
+      key == "photometric_match")
     return key + " must be 0 or 1";
   // The field each key sets first (fu and cu before the width their rules involve).
   for (F f : {F::kWidth, F::kHeight, F::kBaseline, F::kMisalignment, F::kFocalLength, F::kPrincipalPoint,

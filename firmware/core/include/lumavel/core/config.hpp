@@ -61,9 +61,11 @@ enum ConfigOption : uint8_t {
   kOptionGyroOffsetLearning = 1u << 1,  // learn the gyro offset at standstill, see gyro_offset.hpp
   kOptionPhotometricBalance = 1u << 2,  // learn and correct cam1's response to cam0's, see photometric_balance.hpp
   kOptionElevationBand = 1u << 3,       // every column sums one elevation band (kernel_bank.hpp); experimental, off
+  kOptionPhotometricMatch = 1u << 4,    // map cam1's black level and vignetting onto cam0's, see photometric_match.hpp
 };
-constexpr uint8_t kKnownOptions =
-    kOptionBaselineCorrection | kOptionGyroOffsetLearning | kOptionPhotometricBalance | kOptionElevationBand;
+// (the photometric match only where it is built in: limits.hpp)
+constexpr uint8_t kKnownOptions = kOptionBaselineCorrection | kOptionGyroOffsetLearning | kOptionPhotometricBalance |
+                                  kOptionElevationBand | (kHavePhotometricMatch ? kOptionPhotometricMatch : 0);
 
 enum class ConfigError : uint8_t {
   kOk = 0,

@@ -9,6 +9,7 @@
 #include "lumavel/core/gyro_offset.hpp"
 #include "lumavel/core/kernel_bank.hpp"
 #include "lumavel/core/measurement.hpp"
+#include "lumavel/core/photometric_match.hpp"
 #include "lumavel/core/time_of_flight.hpp"
 #include "lumavel/core/velocity_fusion.hpp"
 #include "lumavel/core/velocity_observer.hpp"
@@ -64,8 +65,12 @@ class Estimator {
   VelocityObserver observer_{};
   TimeOfFlight tof_{};
   PhotometricBalance balance_{};
+#if LUMAVEL_MATCH_FRAMES > 0
+  PhotometricMatch match_{};
+#endif
   VelocityFusion fusion_{};
   AngleQ28 tof_max_rotation_ = 0;  // rotation allowed between the two sightings
+  AngleQ28 match_max_rotation_ = 0;  // ... of a photometric match's sample
   TravelQ16Ns y_ = 0;              // integral of the differential observer's direct values
   StereoMeasurement meas_[2]{};  // previous and current frame
   int cur_ = 0;

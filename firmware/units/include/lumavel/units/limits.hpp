@@ -15,6 +15,10 @@
 #define LUMAVEL_TOF_FRAMES 64  // frames of history for the time of flight (time_of_flight.hpp)
 #endif
 
+#ifndef LUMAVEL_MATCH_FRAMES
+#define LUMAVEL_MATCH_FRAMES 16  // frames of history for the photometric match (photometric_match.hpp); 0: not built in
+#endif
+
 namespace lumavel {
 constexpr int kMinColumns = 16;
 constexpr int kMaxColumns = LUMAVEL_MAX_COLS;
@@ -23,6 +27,11 @@ constexpr int kMaxKernels = LUMAVEL_MAX_KERNELS;
 constexpr int kMaxKernelOrder = 3;
 constexpr int kTofFrames = LUMAVEL_TOF_FRAMES;
 static_assert(kTofFrames >= 4, "the time of flight needs a few frames of history");
+constexpr int kMatchFrames = LUMAVEL_MATCH_FRAMES;
+static_assert(kMatchFrames == 0 || kMatchFrames >= 2, "the photometric match interpolates between frames");
+static_assert(kMatchFrames == 0 || kMaxRows > 1,
+              "the photometric match maps to Q8 (32-bit) column sums: a line-scan build sets LUMAVEL_MATCH_FRAMES=0");
+constexpr bool kHavePhotometricMatch = kMatchFrames > 0;
 // The default working resolution: 40x30 (plenty for the method, cheap on a
 // microcontroller), or the sensor's own size on an axis where it is smaller
 // (a 20x15 sensor works at 20x15, a line scan at height 1). The one rule for

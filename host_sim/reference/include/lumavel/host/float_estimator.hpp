@@ -3,7 +3,7 @@
 // out file for file like the core (float_column_profile, float_kernel_bank,
 // float_measurement, float_velocity_observer, float_gyro_integrator,
 // float_gyro_offset, float_time_of_flight, float_velocity_fusion,
-// float_photometric_balance). Used to bound the fixed-point error and as
+// float_photometric_balance, float_photometric_match). Used to bound the fixed-point error and as
 // `--engine float`.
 #pragma once
 #include <cstdint>
@@ -14,6 +14,7 @@
 #include "lumavel/host/float_kernel_bank.hpp"
 #include "lumavel/host/float_measurement.hpp"
 #include "lumavel/host/float_photometric_balance.hpp"
+#include "lumavel/host/float_photometric_match.hpp"
 #include "lumavel/host/float_time_of_flight.hpp"
 #include "lumavel/host/float_velocity_fusion.hpp"
 #include "lumavel/host/float_velocity_observer.hpp"
@@ -36,8 +37,10 @@ class FloatEstimator {
   FloatVelocityObserver observer_;
   FloatTimeOfFlight tof_;
   FloatPhotometricBalance balance_;
+  FloatPhotometricMatch match_;
   FloatVelocityFusion fusion_;
   double tof_max_rotation_ = 0;  // rotation allowed between the two sightings, rad
+  double match_max_rotation_ = 0;  // ... of a photometric match's sample, rad
   double y_ = 0;                 // integral of the differential observer's direct values, m
   FloatStereoMeasurement prev_;  // the previous frame's
   bool have_prev_ = false;

@@ -51,6 +51,9 @@ struct EstimatorSettings {
   // default: on, the day soak's twin splits the time of flight on 88 frames
   // (it allows 52) and leaves the V allowance on 42 (docs/design.md).
   bool photometric_balance = false;
+  // Map cam1's black level and vignetting onto cam0's, learned where one
+  // camera stands where the other stood (photometric_match.hpp).
+  bool photometric_match = true;
   // kOptionElevationBand: every column sums one elevation band (experimental,
   // off: see docs/design.md, "Column profile").
   bool elevation_band = false;

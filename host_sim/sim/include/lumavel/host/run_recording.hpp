@@ -34,6 +34,7 @@ struct RunOptions {
   // Learn and correct cam1's offset against cam0 (run --photometric-balance);
   // off by default: the cameras are taken as twins.
   bool photometric_balance = false;
+  bool photometric_match = true;
   bool elevation_band = false;
 };
 

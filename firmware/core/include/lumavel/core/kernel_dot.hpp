@@ -1,0 +1,97 @@
+// The kernel bank's dot products with a column profile, and the one
+// division per camera that turns them into ratios (measurement.cpp, and the
+// photometric match's Jacobian, photometric_match.cpp). Inline: they are the
+// per-frame inner loops.
+#pragma once
+#include <cstdint>
+
+#include "lumavel/core/column_profile.hpp"
+#include "lumavel/core/fixed.hpp"
+#include "lumavel/core/kernel_bank.hpp"
+
+namespace lumavel::kdot {
+
+// sum_u w[u] * c[u]: q31 weights times sums of at most 23 bits (Q8 with a
+// band), 32 x 32 -> 64 products (|sum| < 2^31 * 2^23 * 160 < 2^62).
+inline int64_t dot(const KernelTable& t, const ColumnProfile& p) {
+#if defined(__ARM_ARCH_6M__)
+  // No 32 x 32 -> 64 multiply (M0/M0+: a library call per column). Plain sums
+  // are in [0, 2^15): w = hi 2^16 + lo, lo in [0, 2^16), gives two exact 32-bit
+  // products, |hi s| < 2^30 and lo s < 2^31; the same sum, bit for bit.
+  if (!p.q8) {
+    int64_t acc_hi = 0, acc_lo = 0;
+    for (uint16_t u = 0; u < p.width; ++u) {
+      const int32_t s = p.sum[u];
+      acc_hi += (t.w[u] >> 16) * s;
+      acc_lo += static_cast<uint32_t>(static_cast<uint32_t>(t.w[u]) & 0xFFFFu) * static_cast<uint32_t>(s);
+    }
+    return acc_hi * 65536 + acc_lo;
+  }
+#endif
+  int64_t acc = 0;
+  for (uint16_t u = 0; u < p.width; ++u) acc += int64_t{t.w[u]} * p.sum[u];
+  return acc;
+}
+
+inline int64_t dot(const KernelTable16& t, const ColumnProfile& p) {
+  int64_t acc = 0;
+#if defined(__ARM_ARCH_6M__)
+  // No 32 x 32 -> 64 multiply (M0/M0+): plain 15-bit sums keep 32-bit products.
+  if (!p.q8) {
+    for (uint16_t u = 0; u < p.width; ++u) acc += t.w[u] * p.sum[u];
+    return acc;
+  }
+#endif
+  // 16-bit weights times sums of at most 23 bits: |sum| < 2^15 * 2^23 * 160 < 2^46.
+  for (uint16_t u = 0; u < p.width; ++u) acc += int64_t{t.w[u]} * p.sum[u];
+  return acc;
+}
+
+// sum_u w[u] * v[u] for the edge-row profile (|v| < 2^23, as a banded sum).
+inline int64_t dot_values(const KernelTable& t, const int32_t* v, uint16_t width) {
+  int64_t acc = 0;
+  for (uint16_t u = 0; u < width; ++u) acc += int64_t{t.w[u]} * v[u];
+  return acc;
+}
+
+// 1/N as a 31-bit mantissa and a power of two, so that each ratio X/N is
+// one 32x32->64 multiply instead of a 64-bit division (no divider on M0, a
+// slow library routine on M3).
+struct Reciprocal {
+  int64_t mant;  // 2^61 / N_norm, in (2^30, 2^31]
+  int exp;       // N = N_norm * 2^exp, N_norm in [2^30, 2^31)
+};
+
+// Bits of v > 0 (CLZ on cores that have it, a short libgcc routine on M0+):
+// the normalisations below in one step instead of a shift per bit.
+inline int bit_length(uint64_t v) { return 64 - __builtin_clzll(v); }
+
+inline Reciprocal reciprocal(int64_t n) {  // n > 0
+  // N_norm: n shifted to 31 bits (truncated, as halving it would).
+  const int e = bit_length(static_cast<uint64_t>(n)) - 31;
+  n = e >= 0 ? n >> e : n << -e;
+  return {(int64_t{1} << 61) / n, e};
+}
+
+// round(x / N * 2^q), saturated to int32; relative error ~1e-9.
+inline int32_t ratio(int64_t x, const Reciprocal& r, int q, bool* sat) {
+  // x / 2^sx (truncated towards zero) in [-2^31, 2^31), sx the least that fits.
+  int sx = 0;
+  if (x >= (int64_t{1} << 31) || x < -(int64_t{1} << 31)) {
+    const uint64_t a = x < 0 ? 0 - static_cast<uint64_t>(x) : static_cast<uint64_t>(x);
+    sx = bit_length(a) - 31;
+    if (x < 0 && (a >> (sx - 1)) == (uint64_t{1} << 31)) --sx;  // -2^31 fits
+    x = x < 0 ? -static_cast<int64_t>(a >> sx) : static_cast<int64_t>(a >> sx);
+  }
+  // x * 2^sx * mant / 2^61 / 2^exp * 2^q
+  const int shift = 61 + r.exp - sx - q;
+  const int64_t p = x * r.mant;  // < 2^62
+  if (shift <= 0) {
+    if (shift < -30) return fx::sat32(p >= 0 ? (int64_t{1} << 40) : -(int64_t{1} << 40), sat);
+    return fx::sat32(fx::sat32(p, sat) * (int64_t{1} << -shift), sat);
+  }
+  if (shift >= 63) return 0;
+  return fx::sat32(fx::shr_round(p, shift), sat);
+}
+
+}  // namespace lumavel::kdot

@@ -1,0 +1,291 @@
+#include "lumavel/core/photometric_match.hpp"
+
+#if LUMAVEL_MATCH_FRAMES > 0  // (a line-scan build leaves it out: limits.hpp)
+
+#include "lumavel/core/imath.hpp"
+#include "lumavel/core/kernel_dot.hpp"
+
+
+namespace lumavel {
+namespace {
+
+using namespace params;
+
+constexpr int kQ = 30;  // p and the column coordinates
+constexpr int64_t kOne = int64_t{1} << kQ;
+constexpr int kMemoryLog2 = kMatchMemoryLog2;
+constexpr int32_t kMemorySamples = int32_t{1} << kMemoryLog2;
+constexpr int64_t kMinSpeedQ16 = fx::q_of(kMatchMinSpeed, fx::kSpeedFrac);
+// The prior's precision per unit of parameter (beta in kMatchOffsetUnitDn).
+constexpr int64_t kInvPrior2[kMatchParams] = {
+    fx::q_of(kMatchSampleCorrelation / (kMatchPriorTilt * kMatchPriorTilt), 0),
+    fx::q_of(kMatchSampleCorrelation / (kMatchPriorVignetting * kMatchPriorVignetting), 0),
+    fx::q_of(kMatchSampleCorrelation * kMatchOffsetUnitDn * kMatchOffsetUnitDn / (kMatchPriorOffsetDn * kMatchPriorOffsetDn), 0)};
+constexpr int64_t kMaxParamQ30[kMatchParams] = {fx::q_of(kMatchMaxShape, kQ), fx::q_of(kMatchMaxShape, kQ),
+                                                fx::q_of(kMatchMaxOffsetDn / kMatchOffsetUnitDn, kQ)};
+static_assert(fx::q_of(kMatchOffsetUnitDn, 8) == 64 << 8, "beta in Q30 units of 64 DN is beta in Q24 DN");
+constexpr int kBetaDnFrac = 24;
+constexpr int64_t kExplainedNoneQ16 = fx::q_of(kMatchExplainedNone, 16);
+constexpr int64_t kExplainedSpanQ16 = fx::q_of(kMatchExplainedAll - kMatchExplainedNone, 16);
+constexpr int64_t kOffsetUnitDn = fx::q_of(kMatchOffsetUnitDn, 0);
+constexpr int64_t kHeld = int64_t{1} << 22;  // |J|, |z| <= 4 in Q20
+// A Q8 column sum stays below 2^23 (the dot products' bound, kernel_dot.hpp).
+constexpr int64_t kMaxQ8Sum = (int64_t{1} << 23) - 1;
+static_assert(sizeof(ColumnSum) == 4, "the mapped profile is Q8: 32-bit sums");
+
+int64_t abs64(int64_t v) { return v < 0 ? -v : v; }
+int64_t hold(int64_t v) { return v > kHeld ? kHeld : (v < -kHeld ? -kHeld : v); }
+
+// x_u = (2u + 1 - W) / W in Q30: the column's centre across the image.
+int64_t column_x(uint16_t u, uint16_t width) {
+  return (static_cast<int64_t>(2 * u + 1 - width) * kOne) / width;
+}
+
+// The rows column u sums, in the profile's units (a uniform image of value
+// 1 sums to this).
+int64_t rows_in_sum(const ColumnProfile& p, const ColumnBand* band, uint16_t height, uint16_t u) {
+  return p.q8 ? int64_t{band_rows_q8(band, height, u)} : int64_t{height};
+}
+
+int64_t gain_q30(const int32_t* p, int64_t x) {
+  return kOne + fx::shr_round(int64_t{p[0]} * x, kQ) + fx::shr_round(int64_t{p[1]} * fx::shr_round(x * x, kQ), kQ);
+}
+
+int64_t lerp(int64_t a, int64_t b, int64_t u_q16) { return a + fx::shr_round((b - a) * u_q16, 16); }
+
+}  // namespace
+
+void PhotometricMatch::reset() { *this = PhotometricMatch{}; }
+
+void PhotometricMatch::apply(ColumnProfile& p1, const ColumnBand* band, uint16_t height) {
+  // The mapped sums keep 8 fractional bits (a plain profile becomes Q8): a
+  // whole-number rounding would add noise that the twin does not have.
+  const int up = p1.q8 ? 0 : 8;
+  for (uint16_t u = 0; u < p1.width; ++u) {
+    const int64_t x = column_x(u, p1.width);
+    const int64_t g = gain_q30(p_, x);
+    // (sum - rows beta) in Q8 units of the mapped profile, then times g: < 2^31 * 2^31
+    const int64_t t = fx::shr_round((int64_t{p1.sum[u]} << kBetaDnFrac) - rows_in_sum(p1, band, height, u) * p_[2],
+                                    kBetaDnFrac - up);
+    int64_t s = fx::shr_round(t * g, kQ);
+    s = s < 0 ? 0 : (s > kMaxQ8Sum ? kMaxQ8Sum : s);
+    p1.sum[u] = static_cast<ColumnSum>(s);
+    if (p1.edges && u < kBandColumns)
+      p1.edge4[u] = static_cast<int32_t>(fx::shr_round((int64_t{p1.edge4[u]} << up) * g, kQ));
+  }
+  p1.q8 = true;
+}
+
+void PhotometricMatch::jacobian(const ColumnProfile& p1, const ColumnBand* band, uint16_t height,
+                                const CameraKernels& ck, uint8_t count, const ValueQ28* f1, MatchJac& jac) const {
+  const int64_t n = kdot::dot(ck.norm, p1);
+  for (uint8_t k = 0; k < count; ++k)
+    for (int j = 0; j < kMatchParams; ++j) jac[k][j] = 0;
+  if (n <= 0) return;
+  const kdot::Reciprocal inv = kdot::reciprocal(n);
+  bool sat = false;
+  int32_t du[kMaxColumns];  // d sum' / d p_j per column, in the sums' units
+  for (int j = 0; j < kMatchParams; ++j) {
+    for (uint16_t u = 0; u < p1.width; ++u) {
+      const int64_t x = column_x(u, p1.width);
+      if (j == 0) du[u] = static_cast<int32_t>(fx::shr_round(int64_t{p1.sum[u]} * x, kQ));
+      if (j == 1) du[u] = static_cast<int32_t>(fx::shr_round(int64_t{p1.sum[u]} * fx::shr_round(x * x, kQ), kQ));
+      if (j == 2)
+        du[u] = static_cast<int32_t>(-fx::shr_round(rows_in_sum(p1, band, height, u) * kOffsetUnitDn * gain_q30(p_, x), kQ));
+    }
+    // dF/dp = (dB/dp - F dN/dp) / N
+    const int64_t dn = kdot::ratio(kdot::dot_values(ck.norm, du, p1.width), inv, fx::kValueFrac, &sat);
+    for (uint8_t k = 0; k < count; ++k) {
+      const int64_t db =
+          kdot::ratio(kdot::dot_values(ck.k[k], du, p1.width), inv, fx::kValueFrac + ck.norm.exp - ck.k[k].exp, &sat);
+      jac[k][j] = fx::sat32(db - fx::shr_round(int64_t{f1[k]} * dn, fx::kValueFrac));
+    }
+  }
+}
+
+bool PhotometricMatch::learn(const MatchInput& in) {
+  for (int j = 0; j < kMatchParams; ++j) p_before_[j] = p_[j];
+  if (!in.usable) {
+    n_hist_ = 0;
+    return false;
+  }
+  // The frame on the history, cam1's F linearised at p = 0.
+  const int slot = n_hist_ < kMatchFrames ? (head_ + n_hist_) % kMatchFrames : head_;
+  if (n_hist_ < kMatchFrames)
+    ++n_hist_;
+  else
+    head_ = (head_ + 1) % kMatchFrames;
+  Frame& fr = hist_[slot];
+  fr.t_ns = in.t_ns;
+  fr.heading = in.heading;
+  for (uint8_t k = 0; k < in.count; ++k) {
+    int64_t jp = 0;
+    for (int j = 0; j < kMatchParams; ++j) {
+      fr.jac[k][j] = (*in.jac)[k][j];
+      jp += int64_t{(*in.jac)[k][j]} * p_[j];
+    }
+    fr.f[0][k] = in.f[0][k];
+    fr.f[1][k] = fx::sat32(int64_t{in.f[1][k]} - fx::shr_round(jp, kQ));
+    fr.r[0][k] = in.r[0][k];
+    fr.r[1][k] = in.r[1][k];
+  }
+  const int64_t v = in.v, h = in.baseline;
+  if (abs64(v) < kMinSpeedQ16 || h == 0 || n_hist_ < 2) return false;
+  // tau = |h| / |V|: h Q24 m, V Q16 m/s -> ns
+  const uint64_t tau_ns = static_cast<uint64_t>((abs64(h) * 1000000000) / (abs64(v) * 256));
+  const int lead = (v > 0) == (h > 0) ? 1 : 0;
+  const int newest = n_hist_ - 1;
+  // A: the trail camera now against the lead tau ago; B: the newest lead
+  // frame whose tau later lies in the history, against the trail then.
+  if (in.t_ns >= tau_ns) sample(newest, 1 - lead, in.t_ns - tau_ns, lead, in.count, in.max_rotation);
+  for (int i = newest - 1; i >= 0; --i) {
+    const Frame& f = hist_[(head_ + i) % kMatchFrames];
+    if (f.t_ns + tau_ns <= in.t_ns) {
+      sample(i, lead, f.t_ns + tau_ns, lead, in.count, in.max_rotation);
+      break;
+    }
+  }
+  if (samples_ < kMatchFirstSamples) return false;
+  return solve();
+}
+
+void PhotometricMatch::sample(int fixed, int fixed_cam, uint64_t t_other, int lead, uint8_t count,
+                              AngleQ28 max_rotation) {
+  const Frame& fx_ = hist_[(head_ + fixed) % kMatchFrames];
+  for (int i = 1; i < n_hist_; ++i) {
+    const Frame& a = hist_[(head_ + i - 1) % kMatchFrames];
+    const Frame& b = hist_[(head_ + i) % kMatchFrames];
+    if (t_other < a.t_ns || t_other > b.t_ns) continue;
+    const int64_t u = static_cast<int64_t>(((t_other - a.t_ns) << 16) / (b.t_ns - a.t_ns));  // Q16
+    const int other = 1 - fixed_cam;
+    const bool fixed_leads = fixed_cam == lead;
+    const int64_t ho = lerp(a.heading, b.heading, u);
+    const int64_t dth = fixed_leads ? ho - fx_.heading : fx_.heading - ho;
+    if (abs64(dth) > max_rotation) return;
+    int64_t z[kMaxKernels], d[kMaxKernels], jj[kMaxKernels][kMatchParams];
+    for (uint8_t k = 0; k < count; ++k) {
+      const int64_t fo = lerp(a.f[other][k], b.f[other][k], u);
+      const int64_t ro = lerp(a.r[other][k], b.r[other][k], u);
+      // lead turned to the trail's heading
+      const int64_t rl = fixed_leads ? fx_.r[lead][k] : ro;
+      const int64_t fl = (fixed_leads ? int64_t{fx_.f[lead][k]} : fo) + fx::shr_round(dth * rl, fx::kSlopeFrac);
+      const int64_t ft = fixed_leads ? fo : int64_t{fx_.f[1 - lead][k]};
+      const int64_t f1 = lead == 1 ? fl : ft, f0 = lead == 1 ? ft : fl;
+      z[k] = hold(fx::shr_round(f0 - f1, 8));  // Q20: J p, cam1's F being linearised at 0
+      d[k] = hold(fx::shr_round(int64_t{b.f[other][k]} - a.f[other][k], 8));
+      for (int j = 0; j < kMatchParams; ++j)
+        jj[k][j] = hold(fx::shr_round(fixed_cam == 1 ? int64_t{fx_.jac[k][j]} : lerp(a.jac[k][j], b.jac[k][j], u), 8));
+    }
+    // What a timing error adds (the interpolated side's change over its
+    // frame) is projected out of the sample: d^ = d / |d| in Q30. (Projecting
+    // out the lead's dF/dtheta as well, against a heading error, left two
+    // of four rows and doubled the matched walls' error: not done.)
+    int64_t dd = 0;
+    for (uint8_t k = 0; k < count; ++k) dd += d[k] * d[k];
+    int rows = count;
+    if (dd > 16) {
+      const int64_t norm = fx::isqrt64(static_cast<uint64_t>(dd));  // Q20
+      int64_t dh[kMaxKernels];
+      for (uint8_t k = 0; k < count; ++k) dh[k] = fx::div_q(d[k], norm, kQ);
+      auto project = [&](int64_t* v, int stride) {
+        int64_t c = 0;
+        for (uint8_t k = 0; k < count; ++k) c += dh[k] * v[k * stride];
+        c = fx::shr_round(c, kQ);
+        for (uint8_t k = 0; k < count; ++k) v[k * stride] -= fx::shr_round(dh[k] * c, kQ);
+      };
+      project(z, 1);
+      for (int j = 0; j < kMatchParams; ++j) project(&jj[0][j], kMatchParams);
+      --rows;
+    }
+    if (samples_ >= kMemorySamples) {
+      for (int i2 = 0; i2 < kMatchParams; ++i2) {
+        for (int j = 0; j < kMatchParams; ++j) a_[i2][j] -= fx::shr_round(a_[i2][j], kMemoryLog2);
+        b_[i2] -= fx::shr_round(b_[i2], kMemoryLog2);
+      }
+      ee_ -= fx::shr_round(ee_, kMemoryLog2);
+      zz_ -= fx::shr_round(zz_, kMemoryLog2);
+      dof_ -= fx::shr_round(dof_, kMemoryLog2);
+    } else {
+      ++samples_;
+    }
+    for (uint8_t k = 0; k < count; ++k) {
+      int64_t e = z[k];
+      for (int j = 0; j < kMatchParams; ++j) e -= fx::shr_round(jj[k][j] * est_[j], kQ);
+      ee_ += e * e;
+      zz_ += z[k] * z[k];
+      for (int i2 = 0; i2 < kMatchParams; ++i2) {
+        for (int j = 0; j < kMatchParams; ++j) a_[i2][j] += jj[k][i2] * jj[k][j];
+        b_[i2] += jj[k][i2] * z[k];
+      }
+    }
+    dof_ += rows;
+    return;
+  }
+}
+
+bool PhotometricMatch::solve() {
+  // The samples' residual variance per row sets the prior's weight.
+  const int64_t free_rows = dof_ > kMatchParams + 1 ? dof_ - kMatchParams : 1;
+  int64_t s2 = ee_ / free_rows;  // Q40
+  if (s2 > (int64_t{1} << 50)) s2 = int64_t{1} << 50;
+  int64_t m[kMatchParams][kMatchParams];
+  int64_t s[kMatchParams];  // sqrt of the diagonal, Q20
+  for (int i = 0; i < kMatchParams; ++i) {
+    for (int j = 0; j < kMatchParams; ++j) m[i][j] = a_[i][j];
+    m[i][i] += s2 * kInvPrior2[i];
+    if (m[i][i] <= 0) return false;
+    s[i] = fx::isqrt64(static_cast<uint64_t>(m[i][i]));
+    if (s[i] == 0) return false;
+  }
+  // Unit diagonal (Q30), then L D L^T.
+  int64_t q[kMatchParams][kMatchParams];
+  for (int i = 0; i < kMatchParams; ++i)
+    for (int j = 0; j < kMatchParams; ++j) q[i][j] = fx::div_q(m[i][j], s[i] * s[j], kQ);
+  const int64_t d1 = q[0][0];
+  if (d1 <= 0) return false;
+  const int64_t l21 = fx::div_q(q[1][0], d1, kQ), l31 = fx::div_q(q[2][0], d1, kQ);
+  const int64_t d2 = q[1][1] - fx::shr_round(fx::shr_round(l21 * l21, kQ) * d1, kQ);
+  constexpr int64_t kMinPivot = int64_t{1} << (kQ - 20);  // 1e-6: the prior keeps the pivots far above it
+  if (d2 < kMinPivot) return false;
+  const int64_t l32 = fx::div_q(q[2][1] - fx::shr_round(fx::shr_round(l31 * l21, kQ) * d1, kQ), d2, kQ);
+  const int64_t d3 = q[2][2] - fx::shr_round(fx::shr_round(l31 * l31, kQ) * d1, kQ) -
+                     fx::shr_round(fx::shr_round(l32 * l32, kQ) * d2, kQ);
+  if (d3 < kMinPivot) return false;
+  int64_t w[kMatchParams];
+  for (int i = 0; i < kMatchParams; ++i) w[i] = fx::div_q(b_[i], s[i], 0);  // Q20
+  w[1] -= fx::shr_round(l21 * w[0], kQ);
+  w[2] -= fx::shr_round(l31 * w[0], kQ) + fx::shr_round(l32 * w[1], kQ);
+  int64_t y[kMatchParams] = {fx::div_q(w[0], d1, kQ), fx::div_q(w[1], d2, kQ), fx::div_q(w[2], d3, kQ)};
+  y[1] -= fx::shr_round(l32 * y[2], kQ);
+  y[0] -= fx::shr_round(l21 * y[1] + l31 * y[2], kQ);
+  int32_t p[kMatchParams];
+  for (int i = 0; i < kMatchParams; ++i) {
+    const int64_t pi = fx::div_q(y[i], s[i], kQ);
+    if (abs64(pi) > kMaxParamQ30[i]) return false;
+    p[i] = static_cast<int32_t>(pi);
+  }
+  // R^2 = p^T b / z^T z, both Q40 (p >> 10 times b >> 20: < 2^21 * 2^41);
+  // the weight it gives, never less than it was (Q16).
+  int64_t explained = 0;
+  for (int i = 0; i < kMatchParams; ++i) {
+    est_[i] = p[i];
+    explained += fx::shr_round(p[i], 10) * fx::shr_round(b_[i], 20);
+  }
+  if (zz_ > 0 && explained > 0) {
+    const int64_t r2 = fx::div_q(explained, zz_, 16);
+    const int64_t share = fx::div_q((r2 - kExplainedNoneQ16) << 16, kExplainedSpanQ16, 0);
+    const int32_t wc = static_cast<int32_t>(share < 0 ? 0 : (share > 65536 ? 65536 : share));
+    if (wc > weight_) weight_ = wc;
+  }
+  bool changed = false;
+  for (int i = 0; i < kMatchParams; ++i) {
+    const int32_t applied = static_cast<int32_t>(fx::shr_round(int64_t{p[i]} * weight_, 16));
+    changed = changed || applied != p_[i];
+    p_[i] = applied;
+  }
+  return changed;
+}
+
+}  // namespace lumavel
+
+#endif  // LUMAVEL_MATCH_FRAMES > 0
