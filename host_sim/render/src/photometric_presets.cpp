@@ -24,6 +24,24 @@ std::array<PhotometricSpec, 2> cheap_pair() {
   return {c0, c1};
 }
 
+// The differences issue 10's wall names and nothing else: cam1 15 % less
+// gain, black level 10 vs 12, corner fall-off 30 vs 36 %; no fixed pattern
+// (what a photometric mapping of smooth responses can learn, without the
+// patterns and the brighter camera's clipping that cheap_pair adds).
+std::array<PhotometricSpec, 2> differing_pair() {
+  PhotometricSpec c0;
+  c0.gain = 1.0;
+  c0.black_level = 10;
+  c0.vignetting[0] = -0.36;
+  c0.vignetting[1] = 0.06;
+  PhotometricSpec c1 = c0;
+  c1.gain = 0.85;
+  c1.black_level = 12;
+  c1.vignetting[0] = -0.43;
+  c1.vignetting[1] = 0.07;
+  return {c0, c1};
+}
+
 std::array<PhotometricSpec, 2> cheap_pair_auto_exposure() {
   auto cams = cheap_pair();
   for (auto& c : cams) {
@@ -39,6 +57,9 @@ const PhotometricPreset kPresets[] = {
      "cam1 gain x1.20, black level 10 vs 12, corner fall-off 30 vs 36 %,\n"
      "                   PRNU 1 %, DSNU 1.5, column FPN 0.5 % and 0.7",
      cheap_pair()},
+    {"differing_pair", "cam1 gain x0.85, black level 10 vs 12, corner fall-off 30 vs 36 %,\n"
+                       "                   no fixed pattern",
+     differing_pair()},
     {"cheap_pair_ae", "cheap_pair with a free-running auto-exposure per camera\n"
                       "                   (5 % rms, new value every 1.5 s)",
      cheap_pair_auto_exposure()},

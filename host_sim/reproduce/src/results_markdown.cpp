@@ -215,11 +215,14 @@ std::string results_markdown(const std::vector<StudyResult>& results, const std:
           if (v)
             targets.push_back({c.c.label + ", E against the VO's", fmt("< %.2f %% (VO)", v->metrics.e_percent),
                                fmt("%.2f %%", m.e_percent), m.e_percent < v->metrics.e_percent});
-        } else if (c.c.id == "wall_mismatched") {
+        } else if (c.c.id == "wall_mismatched" || c.c.id == "wall_differing") {
           const CaseResult* matched = find(sr, "wall_matched", c.work, F);
           if (matched) {
             const double gap = m.e_percent - matched->metrics.e_percent;
-            targets.push_back({"photo wall, mismatched cameras against matched, E at " + size_name(c.work),
+            targets.push_back({std::string(c.c.id == "wall_mismatched"
+                                               ? "photo wall, mismatched cameras (cheap_pair) against matched, E at "
+                                               : "photo wall, gain, black level and vignetting 15-20 % apart, against matched, E at ") +
+                                   size_name(c.work),
                                fmt("within 0.5 points of %.2f %%", matched->metrics.e_percent),
                                fmt("%.2f %%", m.e_percent) + fmt(" (%+.2f)", gap), std::fabs(gap) <= 0.5});
           }

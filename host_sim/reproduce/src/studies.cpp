@@ -92,7 +92,9 @@ Study real_rig_study(bool quick) {
            "standstills. All with gyro offset and noise, pixel noise, and flicker where lamps are. \"mismatched\": "
            "the two cameras are the `cheap_pair` preset (gain 1.00 vs 1.20, black level 10 vs 12, corner "
            "fall-off 30 vs 36 %, per-pixel and per-column fixed pattern). The photo wall of Table I (14 m in "
-           "4 s at 4 m) runs with matched and with mismatched cameras.",
+           "4 s at 4 m) runs with matched and with mismatched cameras, and with cameras that differ only in "
+           "gain, black level and vignetting (`differing_pair`: gain 1.00 vs 0.85, black level 10 vs 12, corner "
+           "fall-off 30 vs 36 %).",
            "E", {}};
   const double len = quick ? 4 : -1;
   struct Scene {
@@ -111,6 +113,9 @@ Study real_rig_study(bool quick) {
                           mismatched ? "cheap_pair" : ""});
     }
   }
+  st.cases.push_back({"wall_differing", "robustness_wall.yaml", 160, 120, -1, len, {{40, 30}},
+                      "photo wall, gain, black level and vignetting differ", -1, "differing_pair"});
+  if (quick) st.cases.pop_back();
   return st;
 }
 
