@@ -36,10 +36,14 @@ static_assert(sizeof(ColumnSum) == 4, "the mapped profile is Q8: 32-bit sums");
 int64_t abs64(int64_t v) { return v < 0 ? -v : v; }
 int64_t hold(int64_t v) { return v > kHeld ? kHeld : (v < -kHeld ? -kHeld : v); }
 
-// x_u = (2u + 1 - W) / W in Q30: the column's centre across the image.
-int64_t column_x(uint16_t u, uint16_t width) {
-  return (static_cast<int64_t>(2 * u + 1 - width) * kOne) / width;
-}
+// x_u = (2u + 1 - W) / W in Q30: the column's centre across the image, as
+// (2u + 1 - W) times one step 2^30 / W (one 32-bit division a call instead
+// of one 64-bit division per column; within W / 2 of 2^-30 of the exact x).
+struct ColumnX {
+  int64_t step;
+  explicit ColumnX(uint16_t width) : step(static_cast<int64_t>(static_cast<uint32_t>(kOne) / width)) {}
+  int64_t operator()(uint16_t u, uint16_t width) const { return static_cast<int64_t>(2 * u + 1 - width) * step; }
+};
 
 // The rows column u sums, in the profile's units (a uniform image of value
 // 1 sums to this).
@@ -61,6 +65,7 @@ void PhotometricMatch::apply(ColumnProfile& p1, const ColumnBand* band, uint16_t
   // The mapped sums keep 8 fractional bits (a plain profile becomes Q8): a
   // whole-number rounding would add noise that the twin does not have.
   const int up = p1.q8 ? 0 : 8;
+  const ColumnX column_x(p1.width);
   for (uint16_t u = 0; u < p1.width; ++u) {
     const int64_t x = column_x(u, p1.width);
     const int64_t g = gain_q30(p_, x);
@@ -85,6 +90,7 @@ void PhotometricMatch::jacobian(const ColumnProfile& p1, const ColumnBand* band,
   const kdot::Reciprocal inv = kdot::reciprocal(n);
   bool sat = false;
   int32_t du[kMaxColumns];  // d sum' / d p_j per column, in the sums' units
+  const ColumnX column_x(p1.width);
   for (int j = 0; j < kMatchParams; ++j) {
     for (uint16_t u = 0; u < p1.width; ++u) {
       const int64_t x = column_x(u, p1.width);
@@ -145,7 +151,8 @@ bool PhotometricMatch::learn(const MatchInput& in) {
       break;
     }
   }
-  if (samples_ < kMatchFirstSamples) return false;
+  if (samples_ < kMatchFirstSamples || unsolved_ < kMatchSolveSamples) return false;
+  unsolved_ = 0;
   return solve();
 }
 
@@ -186,7 +193,9 @@ void PhotometricMatch::sample(int fixed, int fixed_cam, uint64_t t_other, int le
     if (dd > 16) {
       const int64_t norm = fx::isqrt64(static_cast<uint64_t>(dd));  // Q20
       int64_t dh[kMaxKernels];
-      for (uint8_t k = 0; k < count; ++k) dh[k] = fx::div_q(d[k], norm, kQ);
+      // (one division: inv = 2^52 / |d| in Q20 is 2^32 / |d|; |d_k| <= |d| keeps d_k inv <= 2^52)
+      const int64_t inv = (int64_t{1} << 52) / norm;
+      for (uint8_t k = 0; k < count; ++k) dh[k] = fx::shr_round(d[k] * inv, 52 - kQ);
       auto project = [&](int64_t* v, int stride) {
         int64_t c = 0;
         for (uint8_t k = 0; k < count; ++k) c += dh[k] * v[k * stride];
@@ -208,6 +217,7 @@ void PhotometricMatch::sample(int fixed, int fixed_cam, uint64_t t_other, int le
     } else {
       ++samples_;
     }
+    ++unsolved_;
     for (uint8_t k = 0; k < count; ++k) {
       int64_t e = z[k];
       for (int j = 0; j < kMatchParams; ++j) e -= fx::shr_round(jj[k][j] * est_[j], kQ);
@@ -238,9 +248,9 @@ bool PhotometricMatch::solve() {
     if (s[i] == 0) return false;
   }
   // Unit diagonal (Q30), then L D L^T.
-  int64_t q[kMatchParams][kMatchParams];
+  int64_t q[kMatchParams][kMatchParams];  // symmetric: the lower triangle is used
   for (int i = 0; i < kMatchParams; ++i)
-    for (int j = 0; j < kMatchParams; ++j) q[i][j] = fx::div_q(m[i][j], s[i] * s[j], kQ);
+    for (int j = 0; j <= i; ++j) q[i][j] = i == j ? kOne : fx::div_q(m[i][j], s[i] * s[j], kQ);
   const int64_t d1 = q[0][0];
   if (d1 <= 0) return false;
   const int64_t l21 = fx::div_q(q[1][0], d1, kQ), l31 = fx::div_q(q[2][0], d1, kQ);

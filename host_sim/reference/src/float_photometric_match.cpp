@@ -77,7 +77,8 @@ bool FloatPhotometricMatch::learn(const Input& in) {
       break;
     }
   }
-  if (samples_ < kMatchFirstSamples) return false;
+  if (samples_ < kMatchFirstSamples || unsolved_ < kMatchSolveSamples) return false;
+  unsolved_ = 0;
   return solve();
 }
 
@@ -118,6 +119,7 @@ void FloatPhotometricMatch::sample(size_t fixed, int fixed_cam, double t_other, 
     } else {
       ++samples_;
     }
+    ++unsolved_;
     const Eigen::VectorXd e = z - jj * est_;
     ee_ += e.squaredNorm();
     zz_ += z.squaredNorm();

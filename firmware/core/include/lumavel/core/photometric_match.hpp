@@ -103,6 +103,7 @@ class PhotometricMatch {
   int32_t weight_ = 0;                   // Q16, from R^2, never lowered
   int64_t dof_ = 0;                      // rows in those sums
   int32_t samples_ = 0;                  // held at kMatchMemorySamples
+  int32_t unsolved_ = 0;                 // samples since the last solution
 };
 
 }  // namespace lumavel

@@ -32,6 +32,9 @@ constexpr double kBalanceMaxCurvature = 0.05;
 constexpr double kMatchMinSpeed = 0.1;
 // p is solved from this many samples on (before, cam1 is taken as it is) ...
 constexpr int kMatchFirstSamples = 16;
+// ... and again after every kMatchSolveSamples new ones (each solution
+// moves cam1's F, and costs the M3 about 5000 instructions) ...
+constexpr int kMatchSolveSamples = 8;
 // ... and the samples are forgotten over this many (a power of two: the
 // forgetting is a shift); at 60 Hz, about a minute of travel.
 constexpr int kMatchMemoryLog2 = 12;

@@ -55,7 +55,7 @@ class FloatPhotometricMatch {
   Eigen::Matrix<double, kParams, kParams> a_ = Eigen::Matrix<double, kParams, kParams>::Zero();
   Params b_ = Params::Zero();
   double ee_ = 0, zz_ = 0, dof_ = 0;
-  int samples_ = 0;
+  int samples_ = 0, unsolved_ = 0;
 };
 
 }  // namespace lumavel::host
