@@ -212,6 +212,7 @@ TEST(Cli, RunWritesCsvSummaryAndPlot) {
   const std::string svg = fixture::read_text(dir.path() + "/rec_estimates.svg");
   CHECK(svg.rfind("<svg", 0) == 0);
   STRCMP_CONTAINS("plot: rec_estimates.svg", r.err.c_str());
+  STRCMP_CONTAINS("photometric match: the cameras taken as twins", r.err.c_str());  // the fixture's twins
 }
 
 TEST(Cli, OutputFilePlotNextToItAndQuiet) {
@@ -227,6 +228,13 @@ TEST(Cli, OutputFilePlotNextToItAndQuiet) {
   LONGS_EQUAL(0, r.code);
   CHECK(exists(dir.path() + "/mine.svg"));
   STRCMP_CONTAINS("fixed engine, 40x30 working", r.err.c_str());
+}
+
+TEST(Cli, PhotometricMatchCanBeTurnedOff) {
+  rec();
+  Outcome r = sim("run rec -o est.csv --no-photometric-match");
+  LONGS_EQUAL(0, r.code);
+  STRCMP_CONTAINS("photometric match: off (--no-photometric-match)", r.err.c_str());
 }
 
 TEST(Cli, OutputToADeviceKeepsThePlotInTheCurrentFolder) {

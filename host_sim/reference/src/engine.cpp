@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "lumavel/core/estimator.hpp"
+#include "lumavel/core/photometric_params.hpp"
 #include "lumavel/host/float_estimator.hpp"
 #include "lumavel/units/si.hpp"
 
@@ -35,6 +36,10 @@ class FixedEngine final : public Engine {
     o.v_differential = si::Speed::to_si(e.v_differential);
     o.tof_s = static_cast<double>(e.tof_ns) * 1e-9;
     o.scale = si::Scale::to_si(e.scale);
+    int32_t p[kMatchParams];
+    est_->photometric_params(p);
+    for (int j = 0; j < kMatchParams; ++j) o.photometric[j] = static_cast<double>(p[j]) / 1073741824.0;
+    o.photometric[2] *= params::kMatchOffsetUnitDn;
     return o;
   }
 

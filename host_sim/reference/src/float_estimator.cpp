@@ -162,6 +162,8 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
   est.distance = distance_;
   est.status = status;
   est.gyro_offset = gyro_offset_.offset();
+  for (int j = 0; j < FloatPhotometricMatch::kParams; ++j) est.photometric[j] = match_.params()[j];
+  est.photometric[2] *= params::kMatchOffsetUnitDn;
   return est;
 }
 

@@ -36,8 +36,9 @@ const char* const kRunDescription =
     "each status flag was raised on, whether the lens distortion was corrected or\n"
     "ignored and, with ground truth (state_groundtruth_estimate0), the paper's error\n"
     "E (eq. 22), L1 and RMS errors, worst and mean error after the first second (or\n"
-    "why there is no figure); last, the gyro zero-rate offset learned at standstill\n"
-    "(or why none was).";
+    "why there is no figure); the gyro zero-rate offset learned at standstill\n"
+    "(or why none was); last, what the photometric match learned of how cam1's\n"
+    "black level and vignetting differ from cam0's (docs/design.md).";
 
 // The vo engine's native-resolution path: the recording's sensor size bounds
 // it further (run_settings).
@@ -151,6 +152,23 @@ std::string gyro_offset_line(EngineKind engine, bool learning, const std::vector
   return buf;
 }
 
+// What the photometric match mapped cam1 onto cam0 with at the end (it
+// multiplies cam1's column sums by 1 + a1 x + a2 x^2 after removing its black
+// level): cam1's black level over cam0's, and its response against cam0's at
+// the image's left and right edges (x = -1, +1), the centre's taken as equal.
+std::string photometric_line(EngineKind engine, bool matching, const double p[3]) {
+  if (engine == EngineKind::kVo) return "photometric match: none (the vo engine matches features)";
+  if (!matching) return "photometric match: off (--no-photometric-match): the cameras taken as twins";
+  if (p[0] == 0 && p[1] == 0 && p[2] == 0)
+    return "photometric match: the cameras taken as twins (no difference found that the match explains)";
+  char buf[220];
+  std::snprintf(buf, sizeof buf,
+                "photometric match: cam1's black level %+.2f DN over cam0's; its response at the left / right "
+                "edge %+.1f / %+.1f %% of cam0's",
+                p[2], 100 * (1 / (1 + p[1] - p[0]) - 1), 100 * (1 / (1 + p[1] + p[0]) - 1));
+  return buf;
+}
+
 volatile std::sig_atomic_t g_stop_linger = 0;
 void on_linger_signal(int) { g_stop_linger = 1; }
 
@@ -221,8 +239,10 @@ int run(const RunArgs& a) {
   }
 
   double last_offset = 0;  // for the summary
-  options.sink = [&last_offset, hid_sink = options.sink](const EngineEstimate& e) {
+  EngineEstimate last{};
+  options.sink = [&last_offset, &last, hid_sink = options.sink](const EngineEstimate& e) {
     last_offset = e.gyro_offset;
+    last = e;
     if (hid_sink) hid_sink(e);
   };
 
@@ -271,6 +291,7 @@ int run(const RunArgs& a) {
     if (result.has_truth) std::fprintf(stderr, "%s\n", format_metrics(compute_metrics(result.track)).c_str());
     else std::fprintf(stderr, "no ground truth (state_groundtruth_estimate0/data.csv): no error figures\n");
     std::fprintf(stderr, "%s\n", gyro_offset_line(options.engine, !a.no_gyro_offset_learning, result.track, last_offset).c_str());
+    std::fprintf(stderr, "%s\n", photometric_line(options.engine, !a.no_photometric_match, last.photometric).c_str());
     if (want_plot) std::fprintf(stderr, "plot: %s\n", plot.c_str());
     if (hid) std::fprintf(stderr, "hid: %u reports sent through %s, %u overruns\n", hid->sent(), a.hid.c_str(), hid->overruns());
     if (hid && a.hid_linger_s != 0) {

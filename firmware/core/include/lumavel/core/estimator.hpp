@@ -53,6 +53,14 @@ class Estimator {
 
   const EstimatorConfig& config() const { return cfg_; }
   const KernelBank& bank() const { return bank_; }
+  // The photometric match's mapping in use (Q30: a1, a2, beta in 64 DN;
+  // photometric_match.hpp); all 0 where it is not built in or not learned.
+  void photometric_params(int32_t out[kMatchParams]) const {
+    for (int j = 0; j < kMatchParams; ++j) out[j] = 0;
+#if LUMAVEL_MATCH_FRAMES > 0
+    for (int j = 0; j < kMatchParams; ++j) out[j] = match_.params()[j];
+#endif
+  }
   // The index the next frame gets (tests: the wrap at 2^32, 2.3 years at
   // 60 Hz, 50 days at 1 kHz, must change nothing but the index).
   void set_next_frame_index(uint32_t index) { frame_index_ = index; }
