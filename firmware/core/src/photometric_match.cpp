@@ -70,13 +70,13 @@ void PhotometricMatch::apply(ColumnProfile& p1, const ColumnBand* band, uint16_t
     const int64_t x = column_x(u, p1.width);
     const int64_t g = gain_q30(p_, x);
     // (sum - rows beta) in Q8 units of the mapped profile, then times g: < 2^31 * 2^31
-    const int64_t t = fx::shr_round((int64_t{p1.sum[u]} << kBetaDnFrac) - rows_in_sum(p1, band, height, u) * p_[2],
+    const int64_t t = fx::shr_round(int64_t{p1.sum[u]} * (int64_t{1} << kBetaDnFrac) - rows_in_sum(p1, band, height, u) * p_[2],
                                     kBetaDnFrac - up);
     int64_t s = fx::shr_round(t * g, kQ);
     s = s < 0 ? 0 : (s > kMaxQ8Sum ? kMaxQ8Sum : s);
     p1.sum[u] = static_cast<ColumnSum>(s);
     if (p1.edges && u < kBandColumns)
-      p1.edge4[u] = static_cast<int32_t>(fx::shr_round((int64_t{p1.edge4[u]} << up) * g, kQ));
+      p1.edge4[u] = static_cast<int32_t>(fx::shr_round(int64_t{p1.edge4[u]} * (int64_t{1} << up) * g, kQ));
   }
   p1.q8 = true;
 }
@@ -283,7 +283,7 @@ bool PhotometricMatch::solve() {
   }
   if (zz_ > 0 && explained > 0) {
     const int64_t r2 = fx::div_q(explained, zz_, 16);
-    const int64_t share = fx::div_q((r2 - kExplainedNoneQ16) << 16, kExplainedSpanQ16, 0);
+    const int64_t share = fx::div_q((r2 - kExplainedNoneQ16) * 65536, kExplainedSpanQ16, 0);
     const int32_t wc = static_cast<int32_t>(share < 0 ? 0 : (share > 65536 ? 65536 : share));
     if (wc > weight_) weight_ = wc;
   }
