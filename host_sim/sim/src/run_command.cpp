@@ -238,10 +238,8 @@ int run(const RunArgs& a) {
     options.sink = [&hid](const EngineEstimate& e) { hid->send(e.t_ns, e.v, e.distance, e.heading, e.status, e.gyro_offset); };
   }
 
-  double last_offset = 0;  // for the summary
-  EngineEstimate last{};
-  options.sink = [&last_offset, &last, hid_sink = options.sink](const EngineEstimate& e) {
-    last_offset = e.gyro_offset;
+  EngineEstimate last{};  // for the summary
+  options.sink = [&last, hid_sink = options.sink](const EngineEstimate& e) {
     last = e;
     if (hid_sink) hid_sink(e);
   };
@@ -290,7 +288,7 @@ int run(const RunArgs& a) {
       std::fprintf(stderr, "%s\n", lens_line(result.lens_distorted, a.ignore_distortion));
     if (result.has_truth) std::fprintf(stderr, "%s\n", format_metrics(compute_metrics(result.track)).c_str());
     else std::fprintf(stderr, "no ground truth (state_groundtruth_estimate0/data.csv): no error figures\n");
-    std::fprintf(stderr, "%s\n", gyro_offset_line(options.engine, !a.no_gyro_offset_learning, result.track, last_offset).c_str());
+    std::fprintf(stderr, "%s\n", gyro_offset_line(options.engine, !a.no_gyro_offset_learning, result.track, last.gyro_offset).c_str());
     std::fprintf(stderr, "%s\n", photometric_line(options.engine, !a.no_photometric_match, last.photometric).c_str());
     if (want_plot) std::fprintf(stderr, "plot: %s\n", plot.c_str());
     if (hid) std::fprintf(stderr, "hid: %u reports sent through %s, %u overruns\n", hid->sent(), a.hid.c_str(), hid->overruns());

@@ -20,19 +20,20 @@
 // second-order interpolation errors have opposite signs); the direction the
 // interpolated side moved over its frame is projected out of each sample,
 // so that an error of tau (V is the fused estimate) teaches nothing. The
-// samples' normal equations (forgotten over kMatchMemory samples) are solved
-// every frame with a prior on p (cameras of one model differ by about the
-// kMatchPrior* widths), weighted by the samples' own residual variance. The
-// solution is applied once it explains kMatchDetectExplained of the samples
-// (twins' samples hold what the sampling itself gets wrong, a few tenths of
-// them at most, which a mapping must not chase), and from then on.
+// samples' normal equations (forgotten over 2^kMatchMemoryLog2 samples) are
+// solved every kMatchSolveSamples samples with a prior on p (cameras of one
+// model differ by about the kMatchPrior* widths), weighted by the samples'
+// own residual variance. The solution is applied in the measure that it
+// explains the samples (R^2 from kMatchExplainedNone to kMatchExplainedAll,
+// never less than it once was): twins' samples hold what the sampling itself
+// gets wrong, a few tenths of them at most, which a mapping must not chase.
 // New parameters change cam1's F: the estimator moves the previous frame's
 // F1 by J dp so that the next interval sees no step (estimator.cpp).
 //
 // Formats: a1, a2 in Q30; beta in units of kMatchOffsetUnit DN, Q30 (so
 // that the three columns of J have like sizes); J in Q28 per unit of
 // parameter; the normal equations in Q40 (J and the samples in Q20, |J| <= 4
-// held, kMatchMemory samples of at most kMaxKernels rows: < 2^61).
+// held, 2^kMatchMemoryLog2 samples of at most kMaxKernels rows: < 2^61).
 #pragma once
 #include <cstdint>
 
