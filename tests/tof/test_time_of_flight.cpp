@@ -228,9 +228,11 @@ TEST(TimeOfFlight, DroppedFramesKeepTheTimeOfFlight) {
 // within 10 ms, less than a frame; the match lies between the last two frames.
 // The wall's finest texture (0.23 m) then moves more than half its period per
 // frame: interpolating between frames is off by up to 12 % (a quadratic
-// through three frames was tried and did worse), but without bias, while
-// the differential reads 14 % high. The scale filter takes that jitter
-// slowly: the fused V is held to the truth once it has settled (5 s).
+// through three frames was tried and did worse), but without bias. The
+// differential read 14 % high there until the finite-step correction
+// (velocity_observer.hpp); the time of flight must not pull the fused V off it
+// now: windows shorter than a few frame steps teach the scale little
+// (kFusionScaleShortFrames; at full weight the fused V was 1.5 % low).
 TEST(TimeOfFlight, FasterThanAFrame) {
   test::SyntheticRig rig;
   rig.wall = 3.0;
@@ -240,8 +242,8 @@ TEST(TimeOfFlight, FasterThanAFrame) {
     print("8 m/s, wall at 3 m, after 5 s", kind, s);
     CHECK(s.tof_share > 0.5);
     CHECK(std::fabs(s.tof_bias) < 0.02);
-    CHECK(s.e_fused < 0.02);
-    CHECK(s.e_fused < 0.25 * s.e_diff);
+    CHECK(s.e_diff < 0.01);
+    CHECK(s.e_fused < 0.01);
   }
 }
 

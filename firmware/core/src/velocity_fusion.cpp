@@ -37,6 +37,7 @@ constexpr int64_t kScaleTermMaxSpeedQ16 = fx::q_of(kFusionScaleTermMaxSpeed, fx:
 static_assert(kFusionScaleTermMaxSpeed <= 64, "held speed^2 in Q16 below 2^28");
 constexpr int kGainFrac = 24;  // the scale filter's gain, Q24
 constexpr int64_t kSoftCutQ16 = fx::q_of(kFusionScaleSoftCut, 16);
+constexpr int64_t kShortFramesQ16 = fx::q_of(kFusionScaleShortFrames, 16);
 
 int64_t abs64(int64_t v) { return v < 0 ? -v : v; }
 int64_t clamp64(int64_t v, int64_t lo, int64_t hi) { return v < lo ? lo : (v > hi ? hi : v); }
@@ -60,8 +61,8 @@ FusionOutput VelocityFusion::update(const FusionInput& in) {
     residual_ = static_cast<FracQ16>(residual_ + fx::shr_round(kResidualGainQ16 * (int64_t{in.residual} - residual_), 16));
 
   // The differential's scale, from its distance over the window against h,
-  // where it is clean and V is steady over the window. Both conditions weigh
-  // the measurement smoothly (its variance grows with their fourth power) up
+  // where it is clean, V is steady over the window and the window spans
+  // frames (not a fraction of one). The conditions weigh the measurement smoothly (its variance grows with their fourth power) up
   // to kFusionScaleSoftCut times their limit: an engine a bit off either way
   // of a limit then learns almost the same scale as its twin.
   if (scale_started_ && dt_us > 0)
@@ -74,7 +75,10 @@ FusionOutput VelocityFusion::update(const FusionInput& in) {
         change_limit > 0 ? fx::div_q(abs64(accel_) * tau_us, change_limit * 1000000, 16) : fx::kInt32Max;
     // The window [t - tau, t] and the frame interval holding its start measured throughout.
     const bool whole_window = measured_us_ >= tau_us + dt_us;
-    if (whole_window && q_res < kSoftCutQ16 && q_change < kSoftCutQ16) learn_scale(in, dt_us, q_res, q_change);
+    // q_short = kFusionScaleShortFrames dt / tau (tau_us > 0: tau >= 1 us)
+    const int64_t q_short = fx::div_q(kShortFramesQ16 * dt_us, tau_us > 0 ? tau_us : 1, 0);
+    if (whole_window && q_res < kSoftCutQ16 && q_change < kSoftCutQ16 && q_short < kSoftCutQ16)
+      learn_scale(in, dt_us, q_res, q_change, q_short);
   }
 
   const int64_t vd = fx::shr_round(int64_t{in.v_differential} * inv_scale_, fx::kScaleFrac);  // Q16
@@ -134,8 +138,8 @@ FusionOutput VelocityFusion::update(const FusionInput& in) {
   return out;
 }
 
-void VelocityFusion::learn_scale(const FusionInput& in, int64_t dt_us, int64_t q_res,
-                                 int64_t q_change) {
+void VelocityFusion::learn_scale(const FusionInput& in, int64_t dt_us, int64_t q_res, int64_t q_change,
+                                 int64_t q_short) {
   const TofResult& tof = *in.tof;
   const int64_t disp = int64_t{tof.direction} * in.baseline;  // Q24 m
   // travel (Q16 m/s x ns) over h (Q24 m) in Q24: travel 2^8 / (h 1e9); travel < 2^50 over the window
@@ -153,9 +157,9 @@ void VelocityFusion::learn_scale(const FusionInput& in, int64_t dt_us, int64_t q
   const int64_t frames =
       dt_us > 0 ? static_cast<int64_t>((static_cast<uint32_t>(tof.tau_ns) + dt32 - 1) / dt32) : 1;
   const int64_t r = ((sig * sig * 4) << 8) * (frames > 1 ? frames : 1);  // Q32 -> Q40, < 2^48
-  // 1 + q_res^4 + q_change^4 in Q16, < 163 with q < 3
-  const int64_t qr2 = (q_res * q_res) >> 16, qc2 = (q_change * q_change) >> 16;
-  const int64_t penalty = kOneQ16 + ((qr2 * qr2) >> 16) + ((qc2 * qc2) >> 16);
+  // 1 + q_res^4 + q_change^4 + q_short^4 in Q16, < 244 with q < 3
+  const int64_t qr2 = (q_res * q_res) >> 16, qc2 = (q_change * q_change) >> 16, qs2 = (q_short * q_short) >> 16;
+  const int64_t penalty = kOneQ16 + ((qr2 * qr2) >> 16) + ((qc2 * qc2) >> 16) + ((qs2 * qs2) >> 16);
   const int64_t r_weighed = (r >> 16) * penalty;  // < 2^56
   // The gain in Q24 and rounded steps: the gain falls to 1e-4 and below
   // once the scale is known, where Q16 and truncation drift the scale by

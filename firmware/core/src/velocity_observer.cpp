@@ -56,6 +56,37 @@ FracQ16 residual_ratio(const int32_t* e, const int32_t* a, uint8_t count, int32_
   return static_cast<FracQ16>(q > (int64_t{1} << fx::kFracFrac) ? (int64_t{1} << fx::kFracFrac) : q);
 }
 
+// The finite step in time (header): the ratio d / h that explains e once each
+// kernel's innovation is scaled by y / tan(y), y = x_k d / h. One evaluation
+// of that map at `ratio` (Q28), over the products' common denominator.
+int32_t step_corrected_ratio(const int32_t* e, const int32_t* a, const int32_t* half, uint8_t count, int32_t ratio,
+                             int64_t den, bool* sat) {
+  int64_t num = 0;  // Q56
+  for (uint8_t k = 0; k < count; ++k) {
+    const int64_t y = fx::shr_round(int64_t{half[k]} * ratio, fx::kValueFrac);
+    num += fx::shr_round(int64_t{e[k]} * x_over_tan_q30(y), 30) * a[k];
+  }
+  return fx::div_q(num, den, fx::kValueFrac, sat);
+}
+
+// Its fixed point: two evaluations and Aitken's extrapolation. The map falls
+// as the ratio grows (a longer step, a stronger correction), so its iterates
+// alternate about the fixed point, which lies between the last two: the
+// extrapolation is taken only then (else the second iterate).
+int32_t solve_step_correction(const int32_t* e, const int32_t* a, const int32_t* half, uint8_t count, int32_t r0,
+                              int64_t den, bool* sat) {
+  const int32_t r1 = step_corrected_ratio(e, a, half, count, r0, den, sat);
+  const int32_t r2 = step_corrected_ratio(e, a, half, count, r1, den, sat);
+  const int64_t d1 = int64_t{r1} - r0, d2 = int64_t{r2} - r1;
+  if ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) {
+    // |d2 - d1| > |d2|: the step d2^2 / (d2 - d1) is below |d2| (|d2| < 2^32: d2^2 < 2^64 as unsigned).
+    const uint64_t ad2 = static_cast<uint64_t>(d2 < 0 ? -d2 : d2), ad = static_cast<uint64_t>(d2 > d1 ? d2 - d1 : d1 - d2);
+    const int64_t step = static_cast<int64_t>((ad2 * ad2 + ad / 2) / ad);
+    return static_cast<int32_t>(d2 > 0 ? int64_t{r2} - step : int64_t{r2} + step);
+  }
+  return r2;
+}
+
 }  // namespace
 
 void VelocityObserver::reset() { *this = VelocityObserver{}; }
@@ -85,11 +116,12 @@ ObserverOutput VelocityObserver::update(const ObserverInput& in) {
   out.texture = count ? static_cast<ValueQ28>(fx::isqrt64(static_cast<uint64_t>(ss_min / count))) : 0;
   int64_t num = 0, den = 0;  // Q56
   int32_t a_used[kMaxKernels];
+  int32_t half[kMaxKernels];  // x_k, Q28
   for (uint8_t k = 0; k < count; ++k) {
     int32_t a = s_bar[k];
     if (in.baseline_correction) {
-      const int64_t x = fx::shr_round(int64_t{in.cur->half_phase[k]} + in.prev->half_phase[k], 1);
-      a = static_cast<int32_t>(fx::shr_round(int64_t{a} * x_over_tan_q30(x), 30));
+      half[k] = static_cast<int32_t>(fx::shr_round(int64_t{in.cur->half_phase[k]} + in.prev->half_phase[k], 1));
+      a = static_cast<int32_t>(fx::shr_round(int64_t{a} * x_over_tan_q30(half[k]), 30));
     }
     a_used[k] = a;
     num += int64_t{e[k]} * a;
@@ -102,7 +134,14 @@ ObserverOutput VelocityObserver::update(const ObserverInput& in) {
     return out;
   }
   // Distance over the interval: d = h * num / den.
-  const int32_t ratio = fx::div_q(num, den, fx::kValueFrac, &sat);                            // Q28
+  int32_t ratio = fx::div_q(num, den, fx::kValueFrac, &sat);  // Q28
+  if (in.baseline_correction) {
+    ratio = solve_step_correction(e, a_used, half, count, ratio, den, &sat);
+    // (the residual of the model as corrected)
+    for (uint8_t k = 0; k < count; ++k)
+      e[k] = static_cast<int32_t>(
+          fx::shr_round(int64_t{e[k]} * x_over_tan_q30(fx::shr_round(int64_t{half[k]} * ratio, fx::kValueFrac)), 30));
+  }
   const int64_t d_q24 = fx::shr_round(int64_t{ratio} * in.baseline, fx::kValueFrac);       // Q24 m
   const SpeedQ16 v_direct = fx::div_q(d_q24 * 1000000000, in.dt_ns * 256, 0, &sat);       // Q16 m/s
   out.v_direct = v_direct;

@@ -28,7 +28,9 @@ FloatFusionOutput FloatVelocityFusion::update(const FloatFusionInput& in) {
   const double change_limit = kFusionScaleMaxChange * std::fabs(tof.v);
   const double q_res = std::max(residual_, 0.0) / kFusionScaleMaxResidual;
   const double q_change = change_limit > 0 ? change / change_limit : HUGE_VAL;
-  if (use_tof && whole_window && q_res < kFusionScaleSoftCut && q_change < kFusionScaleSoftCut) {
+  const double q_short = kFusionScaleShortFrames * static_cast<double>(dt_us) / static_cast<double>(std::max<int64_t>(tau_us, 1));
+  if (use_tof && whole_window && q_res < kFusionScaleSoftCut && q_change < kFusionScaleSoftCut &&
+      q_short < kFusionScaleSoftCut) {
     const double ratio = (in.y - tof.y_then) / (tof.direction * in.baseline);
     if (ratio > 0) {
       const double measured = std::clamp(ratio, kFusionScaleMin, kFusionScaleMax);
@@ -39,7 +41,7 @@ FloatFusionOutput FloatVelocityFusion::update(const FloatFusionInput& in) {
       }
       const double sig = std::clamp(tof.sig, kFusionTofFloor, 1.0);
       const double frames = std::max(1.0, std::ceil(tof.tau_ns / (dt * 1e9)));
-      const double penalty = 1 + std::pow(q_res, 4) + std::pow(q_change, 4);
+      const double penalty = 1 + std::pow(q_res, 4) + std::pow(q_change, 4) + std::pow(q_short, 4);
       const double k = scale_var_ / (scale_var_ + 4 * sig * sig * frames * penalty);
       scale_ = std::clamp(scale_ + k * (measured - scale_), kFusionScaleMin, kFusionScaleMax);
       scale_var_ *= 1 - k;

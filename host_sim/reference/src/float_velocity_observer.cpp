@@ -16,6 +16,26 @@ double x_over_tan(double x) {
   return std::fabs(x) > 1e-12 ? x / std::tan(x) : 1.0;
 }
 
+// The finite step in time: the ratio d / h that explains e once each kernel's
+// innovation is scaled by y / tan(y), y = x_k d / h (velocity_observer.cpp).
+double step_corrected_ratio(const Eigen::VectorXd& e, const Eigen::VectorXd& a, const Eigen::VectorXd& half,
+                            double ratio, double den) {
+  double num = 0;
+  for (Eigen::Index k = 0; k < e.size(); ++k) num += e[k] * x_over_tan(half[k] * ratio) * a[k];
+  return num / den;
+}
+
+// Its fixed point: two evaluations and Aitken's extrapolation where the
+// iterates alternate (else the second iterate), as the core.
+double solve_step_correction(const Eigen::VectorXd& e, const Eigen::VectorXd& a, const Eigen::VectorXd& half,
+                             double r0, double den) {
+  const double r1 = step_corrected_ratio(e, a, half, r0, den);
+  const double r2 = step_corrected_ratio(e, a, half, r1, den);
+  const double d1 = r1 - r0, d2 = r2 - r1;
+  if ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) return r2 - d2 * d2 / (d2 - d1);
+  return r2;
+}
+
 }  // namespace
 
 FloatVelocityObserver::FloatVelocityObserver(uint32_t tau_us)
@@ -28,10 +48,11 @@ FloatObserverOutput FloatVelocityObserver::update(const FloatObserverInput& in) 
   const Eigen::VectorXd s_bar = (cur.diff + prev.diff) / 2;
   const Eigen::VectorXd r_bar = (cur.rot + prev.rot) / 2;
   // Innovation with the rotation term removed.
-  const Eigen::VectorXd e = (cur.mid - prev.mid) - in.dtheta * r_bar;
+  Eigen::VectorXd e = (cur.mid - prev.mid) - in.dtheta * r_bar;
   Eigen::VectorXd a = s_bar;
+  const Eigen::VectorXd half = (cur.half_phase + prev.half_phase) / 2;
   if (in.baseline_correction)
-    for (Eigen::Index k = 0; k < a.size(); ++k) a[k] *= x_over_tan((cur.half_phase[k] + prev.half_phase[k]) / 2);
+    for (Eigen::Index k = 0; k < a.size(); ++k) a[k] *= x_over_tan(half[k]);
   // Observability of the interval: the weaker of its two frames.
   const double ss_min = std::min(cur.diff.squaredNorm(), prev.diff.squaredNorm());
   out.texture = s_bar.size() ? std::sqrt(ss_min / static_cast<double>(s_bar.size())) : 0;
@@ -41,7 +62,11 @@ FloatObserverOutput FloatVelocityObserver::update(const FloatObserverInput& in) 
     return out;
   }
   // Distance over the interval: d = h e.A / A.A.
-  const double d = in.baseline * e.dot(a) / den;
+  double d = in.baseline * e.dot(a) / den;
+  if (in.baseline_correction) {
+    d = in.baseline * solve_step_correction(e, a, half, d / in.baseline, den);
+    for (Eigen::Index k = 0; k < e.size(); ++k) e[k] *= x_over_tan(half[k] * d / in.baseline);  // (the residual as corrected)
+  }
   out.v_direct = d / in.dt;
   const double ee = e.squaredNorm();
   out.residual = ee > 0 ? std::min((e - (d / in.baseline) * a).squaredNorm() / ee, 1.0) : 0.0;

@@ -76,7 +76,7 @@ class VelocityFusion {
   FracQ16 residual_ = 0;           // tracked residual ratio of the differential
   int32_t tof_inflation_ = int32_t{1} << 16;  // Q16, >= 1: the time of flight's variance factor
   int64_t measured_us_ = 0;        // how long the observer has measured without a break (us, capped)
-  void learn_scale(const FusionInput& in, int64_t dt_us, int64_t q_res, int64_t q_change);
+  void learn_scale(const FusionInput& in, int64_t dt_us, int64_t q_res, int64_t q_change, int64_t q_short);
 
   ScaleQ24 scale_ = int32_t{1} << fx::kScaleFrac;
   ScaleQ24 inv_scale_ = int32_t{1} << fx::kScaleFrac;  // 1 / scale_

@@ -20,6 +20,15 @@
 // (measurement.hpp) and the least squares uses A_k = Sbar_k x_k / tan(x_k).
 // (A second-order version through kappa^3 d3F/dtheta3 over-corrected by 2 %:
 // its own inputs carry the same finite-baseline factors.)
+//
+// Finite-step correction: the frame-to-frame difference is as finite as the
+// stereo one. Over a step d, dM carries sin(kd/2) and the trapezoid Sbar
+// cos(kd/2), so dM / A = tan(y) / x and h dM / A = d tan(y) / y, y = k d / 2
+// = x d / h (the same depth divides both: y needs no depth). At 8 cm and 60 Hz
+// that is +1 % at 5 m/s past a car and +5-10 % at 12 m/s. Each innovation is
+// scaled by y / tan(y) with y from the solution itself: two evaluations of
+// that map and Aitken's extrapolation reach its fixed point (one evaluation
+// over-corrects by half the bias again: the first d is the biased one).
 #pragma once
 #include <cstdint>
 
