@@ -186,6 +186,7 @@ Estimate Estimator::step(const FramePair& frames) {
       FusionInput fin{};
       fin.dt_ns = dt_ns;
       fin.v_differential = o.v;
+      fin.observer_tau_us = cfg_.tau_us;
       fin.direct = o.updated;
       fin.v_direct = o.v_direct;
       fin.residual = o.residual;

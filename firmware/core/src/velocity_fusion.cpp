@@ -37,6 +37,8 @@ constexpr int64_t kScaleTermMaxSpeedQ16 = fx::q_of(kFusionScaleTermMaxSpeed, fx:
 static_assert(kFusionScaleTermMaxSpeed <= 64, "held speed^2 in Q16 below 2^28");
 constexpr int kGainFrac = 24;  // the scale filter's gain, Q24
 constexpr int64_t kSoftCutQ16 = fx::q_of(kFusionScaleSoftCut, 16);
+constexpr int64_t kLagSigmas2Q8 = fx::q_of(kFusionLagSigmas * kFusionLagSigmas, 8);
+constexpr int64_t kLagMaxQ16 = int64_t{1} << 24;  // speed differences held to 256 m/s
 constexpr int64_t kShortFramesQ16 = fx::q_of(kFusionScaleShortFrames, 16);
 
 int64_t abs64(int64_t v) { return v < 0 ? -v : v; }
@@ -81,7 +83,7 @@ FusionOutput VelocityFusion::update(const FusionInput& in) {
       learn_scale(in, dt_us, q_res, q_change, q_short);
   }
 
-  const int64_t vd = fx::shr_round(int64_t{in.v_differential} * inv_scale_, fx::kScaleFrac);  // Q16
+  const int64_t vd = fx::shr_round(int64_t{in.v_differential} * inv_scale_, fx::kScaleFrac) + lag_compensation(in, dt_us);  // Q16
   if (!in.direct) {  // nothing measured: V held
     out.v = v_;
     out.saturated = sat;
@@ -136,6 +138,37 @@ FusionOutput VelocityFusion::update(const FusionInput& in) {
   out.used_tof = use_tof;
   out.saturated = sat;
   return out;
+}
+
+int64_t VelocityFusion::lag_compensation(const FusionInput& in, int64_t dt_us) {
+  if (!in.direct || dt_us <= 0) return 0;
+  if (!have_direct_) {  // (re)start: from the observer's V, no lag known
+    half_ = in.v_differential;
+    prev_direct_ = in.v_direct;
+    have_direct_ = true;
+    return 0;
+  }
+  const int64_t tau_us = in.observer_tau_us;
+  // The scatter of the direct values: half the mean square of their differences.
+  const int64_t dv = clamp64(int64_t{in.v_direct} - prev_direct_, -kLagMaxQ16, kLagMaxQ16);
+  direct_var_ += ((dv * dv - direct_var_) * fx::fraction_q16(dt_us, kAccelTauUs + dt_us)) >> 16;  // Q32 < 2^48
+  prev_direct_ = in.v_direct;
+  // The lag from the fused rate, c = tau A, weighed by how far it stands out
+  // of its noise: A is the innovation smoothed over tau_a, so var_c =
+  // sigma^2 dt / (2 tau_a + dt), sigma^2 = var / 2.
+  const int64_t c = clamp64(int64_t{accel_} * tau_us / 1000000, -kLagMaxQ16, kLagMaxQ16);  // Q16
+  const int64_t var_c = ((direct_var_ >> 1) * fx::fraction_q16(dt_us, 2 * kAccelTauUs + dt_us)) >> 16;  // Q32
+  const int64_t c2 = c * c;  // Q32, < 2^48
+  const int64_t den = c2 + ((kLagSigmas2Q8 * var_c) >> 8);
+  const int64_t weighed = den > 0 ? fx::shr_round(fx::fraction_q16(c2, den) * c, 16) : 0;
+  // ... and never beyond the lag the observer shows now, 2 (V_half - V) with
+  // V_half the same observer at half its time constant (velocity_observer.cpp):
+  // A outlasts a step by tau_a, the observer's lag does not.
+  bool sat = false;
+  half_ = fx::sat32(half_ + int64_t{fx::div_q((int64_t{in.v_direct} - half_) * dt_us, tau_us / 2 + dt_us, 0, &sat)});
+  const int64_t shown = clamp64(2 * (int64_t{half_} - in.v_differential), -kLagMaxQ16, kLagMaxQ16);
+  if ((weighed > 0) != (shown > 0) || weighed == 0 || shown == 0) return 0;
+  return abs64(weighed) < abs64(shown) ? weighed : shown;
 }
 
 void VelocityFusion::learn_scale(const FusionInput& in, int64_t dt_us, int64_t q_res, int64_t q_change,

@@ -47,7 +47,7 @@ FloatFusionOutput FloatVelocityFusion::update(const FloatFusionInput& in) {
       scale_var_ *= 1 - k;
     }
   }
-  const double vd = in.v_differential / scale_;
+  const double vd = in.v_differential / scale_ + lag_compensation(in, dt);
   if (!in.direct) {  // nothing measured: V held
     out.v = v_;
     return out;
@@ -88,6 +88,29 @@ FloatFusionOutput FloatVelocityFusion::update(const FloatFusionInput& in) {
   out.v = v_;
   out.used_tof = use_tof;
   return out;
+}
+
+// The observer's lag on a ramp, added back where it stands out of its noise
+// and no further than the observer shows it (the core's comments).
+double FloatVelocityFusion::lag_compensation(const FloatFusionInput& in, double dt) {
+  if (!in.direct || dt <= 0) return 0;
+  if (!have_direct_) {
+    half_ = in.v_differential;
+    prev_direct_ = in.v_direct;
+    have_direct_ = true;
+    return 0;
+  }
+  const double dv = std::clamp(in.v_direct - prev_direct_, -256.0, 256.0);
+  direct_var_ += (dv * dv - direct_var_) * dt / (kFusionAccelTau + dt);
+  prev_direct_ = in.v_direct;
+  const double c = std::clamp(accel_ * in.observer_tau, -256.0, 256.0);
+  const double var_c = direct_var_ / 2 * dt / (2 * kFusionAccelTau + dt);
+  const double den = c * c + kFusionLagSigmas * kFusionLagSigmas * var_c;
+  const double weighed = den > 0 ? c * c / den * c : 0;
+  half_ += (in.v_direct - half_) * dt / (in.observer_tau / 2 + dt);
+  const double shown = std::clamp(2 * (half_ - in.v_differential), -256.0, 256.0);
+  if ((weighed > 0) != (shown > 0) || weighed == 0 || shown == 0) return 0;
+  return std::fabs(weighed) < std::fabs(shown) ? weighed : shown;
 }
 
 }  // namespace lumavel::host

@@ -20,6 +20,9 @@
 //   found for a while. Only over a window the observer measured throughout:
 //   over a hold (low texture, a gap, no light) the differential's integral
 //   stands still or carries the held V, which would read as a scale.
+// - The observer's first-order V lags a ramp by tau_obs A: added back as
+//   twice the gap to the same observer at half its time constant, where that
+//   stands out of its noise (fusion_params.hpp, kFusionLagSigmas).
 // - Without a time of flight (standstill, too slow for the history, turning,
 //   reversing, lost), the output follows the differential, more slowly the
 //   less it can be trusted; the caller flags the frame (kStatusNoTof).
@@ -39,6 +42,7 @@ namespace lumavel {
 struct FusionInput {
   int64_t dt_ns;
   SpeedQ16 v_differential;  // the observer's V
+  uint32_t observer_tau_us;  // the observer's time constant (its lag on a ramp)
   bool direct;              // the observer measured this interval ...
   SpeedQ16 v_direct;        // ... this value ...
   FracQ16 residual;         // ... with this residual ratio
@@ -62,6 +66,7 @@ class VelocityFusion {
   void restart() {
     started_ = false;
     measured_us_ = 0;
+    have_direct_ = false;
   }
   FusionOutput update(const FusionInput& in);
   // The fused V: held over frames without an update (no light, gaps, low
@@ -75,7 +80,12 @@ class VelocityFusion {
   AccelQ16 accel_ = 0;
   FracQ16 residual_ = 0;           // tracked residual ratio of the differential
   int32_t tof_inflation_ = int32_t{1} << 16;  // Q16, >= 1: the time of flight's variance factor
-  int64_t measured_us_ = 0;        // how long the observer has measured without a break (us, capped)
+  int64_t measured_us_ = 0;
+  SpeedQ16 half_ = 0;              // the observer at half its time constant
+  SpeedQ16 prev_direct_ = 0;       // the last direct value, for the scatter ...
+  int64_t direct_var_ = 0;         // ... of their differences (Q32 (m/s)^2, smoothed over kFusionAccelTau)
+  bool have_direct_ = false;
+  int64_t lag_compensation(const FusionInput& in, int64_t dt_us);        // how long the observer has measured without a break (us, capped)
   void learn_scale(const FusionInput& in, int64_t dt_us, int64_t q_res, int64_t q_change, int64_t q_short);
 
   ScaleQ24 scale_ = int32_t{1} << fx::kScaleFrac;

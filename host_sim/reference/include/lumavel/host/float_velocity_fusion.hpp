@@ -10,6 +10,7 @@ namespace lumavel::host {
 struct FloatFusionInput {
   double dt = 0;              // s
   double v_differential = 0;  // m/s
+  double observer_tau = 0;    // s
   bool direct = false;
   double v_direct = 0;
   double residual = 0;        // [0, 1]
@@ -29,6 +30,7 @@ class FloatVelocityFusion {
   void restart() {
     started_ = false;
     measured_us_ = 0;
+    have_direct_ = false;
   }
   FloatFusionOutput update(const FloatFusionInput& in);
   double v() const { return v_; }
@@ -42,6 +44,10 @@ class FloatVelocityFusion {
   // How long the observer has measured without a hold: counted as the core
   // counts it (whole microseconds), so that both gate the same frames.
   int64_t measured_us_ = 0;
+  double half_ = 0;                          // the observer at half its time constant (m/s)
+  double prev_direct_ = 0, direct_var_ = 0;  // the direct values' scatter (m/s, (m/s)^2)
+  bool have_direct_ = false;
+  double lag_compensation(const FloatFusionInput& in, double dt);
 };
 
 }  // namespace lumavel::host
