@@ -155,9 +155,13 @@ int64_t VelocityFusion::lag_compensation(const FusionInput& in, int64_t dt_us) {
   prev_direct_ = in.v_direct;
   // The lag from the fused rate, c = tau A, weighed by how far it stands out
   // of its noise: A is the innovation smoothed over tau_a, so var_c =
-  // sigma^2 dt / (2 tau_a + dt), sigma^2 = var / 2.
+  // sigma^2 dt / (2 tau_a + dt), sigma^2 = var / 2; and of the differential's
+  // own floor (kFusionDiffFloor of the speed: a lag below it is not one the
+  // differential can tell from its texture's slow errors).
   const int64_t c = clamp64(int64_t{accel_} * tau_us / 1000000, -kLagMaxQ16, kLagMaxQ16);  // Q16
-  const int64_t var_c = ((direct_var_ >> 1) * fx::fraction_q16(dt_us, 2 * kAccelTauUs + dt_us)) >> 16;  // Q32
+  const int64_t floor = (kDiffFloorQ16 * std::min(abs64(in.v_differential), kLagMaxQ16)) >> 16;  // Q16
+  const int64_t var_c =
+      (((direct_var_ >> 1) * fx::fraction_q16(dt_us, 2 * kAccelTauUs + dt_us)) >> 16) + floor * floor;  // Q32
   const int64_t c2 = c * c;  // Q32, < 2^48
   const int64_t den = c2 + ((kLagSigmas2Q8 * var_c) >> 8);
   const int64_t weighed = den > 0 ? fx::shr_round(fx::fraction_q16(c2, den) * c, 16) : 0;

@@ -104,7 +104,8 @@ double FloatVelocityFusion::lag_compensation(const FloatFusionInput& in, double 
   direct_var_ += (dv * dv - direct_var_) * dt / (kFusionAccelTau + dt);
   prev_direct_ = in.v_direct;
   const double c = std::clamp(accel_ * in.observer_tau, -256.0, 256.0);
-  const double var_c = direct_var_ / 2 * dt / (2 * kFusionAccelTau + dt);
+  const double floor = kFusionDiffFloor * std::min(std::fabs(in.v_differential), 256.0);
+  const double var_c = direct_var_ / 2 * dt / (2 * kFusionAccelTau + dt) + floor * floor;
   const double den = c * c + kFusionLagSigmas * kFusionLagSigmas * var_c;
   const double weighed = den > 0 ? c * c / den * c : 0;
   half_ += (in.v_direct - half_) * dt / (in.observer_tau / 2 + dt);

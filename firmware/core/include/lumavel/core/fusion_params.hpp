@@ -93,8 +93,8 @@ constexpr double kFusionSlowResidual = 0.05;
 // The observer's V lags a ramp by its time constant times the rate A: that
 // lag, c = tau_obs A from the fused V's rate, is added back to the
 // differential in the measure it stands out of its own noise (weight
-// c^2 / (c^2 + n^2 var_c), var_c from the direct values' scatter, n this many
-// sigmas) and never beyond the lag the observer shows, 2 (V_half - V) with
+// c^2 / (c^2 + n^2 var_c), var_c from the direct values' scatter and the
+// differential's floor kFusionDiffFloor, n this many sigmas) and never beyond the lag the observer shows, 2 (V_half - V) with
 // V_half the same observer at half its time constant (A outlasts a step by
 // tau_a; the observer's lag does not). Trolley L1 6.19 -> 4.20 %, back and
 // forth E 26.71 -> 23.98 % at 40x30; added in full, without the weight, the

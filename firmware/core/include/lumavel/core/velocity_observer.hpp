@@ -29,6 +29,8 @@
 // scaled by y / tan(y) with y from the solution itself: two evaluations of
 // that map and Aitken's extrapolation reach its fixed point (one evaluation
 // over-corrects by half the bias again: the first d is the biased one).
+// (y from the observer's V instead gave the same figures for one evaluation,
+// but split the day soak's twin on 10 frames: it was not kept.)
 #pragma once
 #include <cstdint>
 
