@@ -38,7 +38,7 @@ static_assert(kFusionScaleTermMaxSpeed <= 64, "held speed^2 in Q16 below 2^28");
 constexpr int kGainFrac = 24;  // the scale filter's gain, Q24
 constexpr int64_t kSoftCutQ16 = fx::q_of(kFusionScaleSoftCut, 16);
 constexpr int64_t kLagSigmas2Q8 = fx::q_of(kFusionLagSigmas * kFusionLagSigmas, 8);
-constexpr int64_t kLagMaxQ16 = int64_t{1} << 24;  // speed differences held to 256 m/s
+constexpr int64_t kLagMaxQ16 = int64_t{1} << 23;  // speed differences held to 128 m/s: squares x a Q16 gain < 2^62
 constexpr int64_t kShortFramesQ16 = fx::q_of(kFusionScaleShortFrames, 16);
 
 int64_t abs64(int64_t v) { return v < 0 ? -v : v; }
@@ -64,9 +64,10 @@ FusionOutput VelocityFusion::update(const FusionInput& in) {
 
   // The differential's scale, from its distance over the window against h,
   // where it is clean, V is steady over the window and the window spans
-  // frames (not a fraction of one). The conditions weigh the measurement smoothly (its variance grows with their fourth power) up
-  // to kFusionScaleSoftCut times their limit: an engine a bit off either way
-  // of a limit then learns almost the same scale as its twin.
+  // frames (not a fraction of one). The conditions weigh the measurement
+  // smoothly (its variance grows with their fourth power) up to
+  // kFusionScaleSoftCut times their limit: an engine a bit off either way of
+  // a limit then learns almost the same scale as its twin.
   if (scale_started_ && dt_us > 0)
     scale_var_ = std::min<int64_t>(scale_var_ + fx::shr_round(kScaleWalkPerUsQ48 * dt_us, 8), kScaleStartVarQ40);
   if (use_tof) {
@@ -151,7 +152,7 @@ int64_t VelocityFusion::lag_compensation(const FusionInput& in, int64_t dt_us) {
   const int64_t tau_us = in.observer_tau_us;
   // The scatter of the direct values: half the mean square of their differences.
   const int64_t dv = clamp64(int64_t{in.v_direct} - prev_direct_, -kLagMaxQ16, kLagMaxQ16);
-  direct_var_ += ((dv * dv - direct_var_) * fx::fraction_q16(dt_us, kAccelTauUs + dt_us)) >> 16;  // Q32 < 2^48
+  direct_var_ += ((dv * dv - direct_var_) * fx::fraction_q16(dt_us, kAccelTauUs + dt_us)) >> 16;  // Q32 <= 2^46
   prev_direct_ = in.v_direct;
   // The lag from the fused rate, c = tau A, weighed by how far it stands out
   // of its noise: A is the innovation smoothed over tau_a, so var_c =
@@ -159,10 +160,10 @@ int64_t VelocityFusion::lag_compensation(const FusionInput& in, int64_t dt_us) {
   // own floor (kFusionDiffFloor of the speed: a lag below it is not one the
   // differential can tell from its texture's slow errors).
   const int64_t c = clamp64(int64_t{accel_} * tau_us / 1000000, -kLagMaxQ16, kLagMaxQ16);  // Q16
-  const int64_t floor = (kDiffFloorQ16 * std::min(abs64(in.v_differential), kLagMaxQ16)) >> 16;  // Q16
+  const int64_t floor_sd = (kDiffFloorQ16 * std::min(abs64(in.v_differential), kLagMaxQ16)) >> 16;  // Q16
   const int64_t var_c =
-      (((direct_var_ >> 1) * fx::fraction_q16(dt_us, 2 * kAccelTauUs + dt_us)) >> 16) + floor * floor;  // Q32
-  const int64_t c2 = c * c;  // Q32, < 2^48
+      (((direct_var_ >> 1) * fx::fraction_q16(dt_us, 2 * kAccelTauUs + dt_us)) >> 16) + floor_sd * floor_sd;  // Q32
+  const int64_t c2 = c * c;  // Q32, <= 2^46
   const int64_t den = c2 + ((kLagSigmas2Q8 * var_c) >> 8);
   const int64_t weighed = den > 0 ? fx::shr_round(fx::fraction_q16(c2, den) * c, 16) : 0;
   // ... and never beyond the lag the observer shows now, 2 (V_half - V) with

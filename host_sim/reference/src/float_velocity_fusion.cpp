@@ -100,16 +100,16 @@ double FloatVelocityFusion::lag_compensation(const FloatFusionInput& in, double 
     have_direct_ = true;
     return 0;
   }
-  const double dv = std::clamp(in.v_direct - prev_direct_, -256.0, 256.0);
+  const double dv = std::clamp(in.v_direct - prev_direct_, -128.0, 128.0);
   direct_var_ += (dv * dv - direct_var_) * dt / (kFusionAccelTau + dt);
   prev_direct_ = in.v_direct;
-  const double c = std::clamp(accel_ * in.observer_tau, -256.0, 256.0);
-  const double floor = kFusionDiffFloor * std::min(std::fabs(in.v_differential), 256.0);
-  const double var_c = direct_var_ / 2 * dt / (2 * kFusionAccelTau + dt) + floor * floor;
+  const double c = std::clamp(accel_ * in.observer_tau, -128.0, 128.0);
+  const double floor_sd = kFusionDiffFloor * std::min(std::fabs(in.v_differential), 128.0);
+  const double var_c = direct_var_ / 2 * dt / (2 * kFusionAccelTau + dt) + floor_sd * floor_sd;
   const double den = c * c + kFusionLagSigmas * kFusionLagSigmas * var_c;
   const double weighed = den > 0 ? c * c / den * c : 0;
   half_ += (in.v_direct - half_) * dt / (in.observer_tau / 2 + dt);
-  const double shown = std::clamp(2 * (half_ - in.v_differential), -256.0, 256.0);
+  const double shown = std::clamp(2 * (half_ - in.v_differential), -128.0, 128.0);
   if ((weighed > 0) != (shown > 0) || weighed == 0 || shown == 0) return 0;
   return std::fabs(weighed) < std::fabs(shown) ? weighed : shown;
 }
