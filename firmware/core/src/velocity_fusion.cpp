@@ -4,6 +4,7 @@
 
 #include "lumavel/core/fusion_params.hpp"
 #include "lumavel/core/imath.hpp"
+#include "lumavel/core/velocity_observer.hpp"
 
 namespace lumavel {
 namespace {
@@ -167,10 +168,10 @@ int64_t VelocityFusion::lag_compensation(const FusionInput& in, int64_t dt_us) {
   const int64_t den = c2 + ((kLagSigmas2Q8 * var_c) >> 8);
   const int64_t weighed = den > 0 ? fx::shr_round(fx::fraction_q16(c2, den) * c, 16) : 0;
   // ... and never beyond the lag the observer shows now, 2 (V_half - V) with
-  // V_half the same observer at half its time constant (velocity_observer.cpp):
-  // A outlasts a step by tau_a, the observer's lag does not.
-  bool sat = false;
-  half_ = fx::sat32(half_ + int64_t{fx::div_q((int64_t{in.v_direct} - half_) * dt_us, tau_us / 2 + dt_us, 0, &sat)});
+  // V_half the same observer at half its time constant: A outlasts a step by
+  // tau_a, the observer's lag does not.
+  bool sat = false;  // (the term is held to kLagMaxQ16 below)
+  half_ = observer_step(half_, in.v_direct, dt_us, tau_us / 2, &sat);
   const int64_t shown = clamp64(2 * (int64_t{half_} - in.v_differential), -kLagMaxQ16, kLagMaxQ16);
   if ((weighed > 0) != (shown > 0) || weighed == 0 || shown == 0) return 0;
   return abs64(weighed) < abs64(shown) ? weighed : shown;

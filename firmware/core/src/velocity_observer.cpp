@@ -151,10 +151,7 @@ ObserverOutput VelocityObserver::update(const ObserverInput& in) {
     started_ = true;
     since_start_ns_ = 0;
   } else {
-    // Implicit Euler of dV/dt = (v_direct - V) / tau: V += (v_direct - V) dt / (tau + dt).
-    const int64_t dt_us = in.dt_ns / 1000;
-    const int64_t step = fx::div_q((int64_t{v_direct} - v_) * dt_us, int64_t{in.tau_us} + dt_us, 0, &sat);
-    v_ = fx::sat32(int64_t{v_} + step, &sat);
+    v_ = observer_step(v_, v_direct, in.dt_ns / 1000, in.tau_us, &sat);
     since_start_ns_ += in.dt_ns;
   }
   out.v = v_;

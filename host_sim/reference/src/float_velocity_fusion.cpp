@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "lumavel/core/fusion_params.hpp"
+#include "lumavel/host/float_velocity_observer.hpp"
 
 namespace lumavel::host {
 
@@ -108,7 +109,7 @@ double FloatVelocityFusion::lag_compensation(const FloatFusionInput& in, double 
   const double var_c = direct_var_ / 2 * dt / (2 * kFusionAccelTau + dt) + floor_sd * floor_sd;
   const double den = c * c + kFusionLagSigmas * kFusionLagSigmas * var_c;
   const double weighed = den > 0 ? c * c / den * c : 0;
-  half_ += (in.v_direct - half_) * dt / (in.observer_tau / 2 + dt);
+  half_ = observer_step(half_, in.v_direct, dt, in.observer_tau / 2);
   const double shown = std::clamp(2 * (half_ - in.v_differential), -128.0, 128.0);
   if ((weighed > 0) != (shown > 0) || weighed == 0 || shown == 0) return 0;
   return std::fabs(weighed) < std::fabs(shown) ? weighed : shown;

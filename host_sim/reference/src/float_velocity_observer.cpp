@@ -76,7 +76,7 @@ FloatObserverOutput FloatVelocityObserver::update(const FloatObserverInput& in) 
     since_start_ns_ = 0;
   } else {
     // Implicit Euler of dV/dt = (v_direct - V) / tau.
-    v_ += (out.v_direct - v_) * in.dt / (in.tau + in.dt);
+    v_ = observer_step(v_, out.v_direct, in.dt, in.tau);
     since_start_ns_ += in.dt_ns;
   }
   out.v = v_;

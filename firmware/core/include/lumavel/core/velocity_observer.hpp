@@ -65,6 +65,13 @@ struct ObserverOutput {
   bool converging;
 };
 
+// One step of the observer's law over an interval: implicit Euler of
+// dV/dt = (v_direct - V) / tau, V + (v_direct - V) dt / (tau + dt) (Q16 m/s;
+// dt below 2^31 us so that the product stays in int64).
+inline SpeedQ16 observer_step(SpeedQ16 v, SpeedQ16 v_direct, int64_t dt_us, int64_t tau_us, bool* sat) {
+  return fx::sat32(int64_t{v} + fx::div_q((int64_t{v_direct} - v) * dt_us, tau_us + dt_us, 0, sat), sat);
+}
+
 class VelocityObserver {
  public:
   void reset();

@@ -8,6 +8,9 @@
 
 namespace lumavel::host {
 
+// One step of the observer's law (velocity_observer.hpp): V + (v_direct - V) dt / (tau + dt).
+inline double observer_step(double v, double v_direct, double dt, double tau) { return v + (v_direct - v) * dt / (tau + dt); }
+
 struct FloatObserverInput {
   const FloatStereoMeasurement* prev = nullptr;
   const FloatStereoMeasurement* cur = nullptr;
