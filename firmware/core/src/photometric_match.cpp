@@ -65,6 +65,15 @@ void PhotometricMatch::apply(ColumnProfile& p1, const ColumnBand* band, uint16_t
   // The mapped sums keep 8 fractional bits (a plain profile becomes Q8): a
   // whole-number rounding would add noise that the twin does not have.
   const int up = p1.q8 ? 0 : 8;
+  if (p_[0] == 0 && p_[1] == 0 && p_[2] == 0) {  // twins (the usual case): the same bits as below, g = 1
+    for (uint16_t u = 0; u < p1.width; ++u) {
+      const int64_t s = int64_t{p1.sum[u]} * (int64_t{1} << up);
+      p1.sum[u] = static_cast<ColumnSum>(s < 0 ? 0 : (s > kMaxQ8Sum ? kMaxQ8Sum : s));
+      if (p1.edges && u < kBandColumns) p1.edge4[u] = static_cast<int32_t>(int64_t{p1.edge4[u]} * (int64_t{1} << up));
+    }
+    p1.q8 = true;
+    return;
+  }
   const ColumnX column_x(p1.width);
   for (uint16_t u = 0; u < p1.width; ++u) {
     const int64_t x = column_x(u, p1.width);
@@ -82,28 +91,42 @@ void PhotometricMatch::apply(ColumnProfile& p1, const ColumnBand* band, uint16_t
 }
 
 void PhotometricMatch::jacobian(const ColumnProfile& p1, const ColumnBand* band, uint16_t height,
-                                const CameraKernels& ck, uint8_t count, const ValueQ28* f1, MatchJac& jac) const {
+                                const CameraKernels& ck, uint8_t count, const ValueQ28* f1, MatchJac& jac) {
   const int64_t n = kdot::dot(ck.norm, p1);
   for (uint8_t k = 0; k < count; ++k)
     for (int j = 0; j < kMatchParams; ++j) jac[k][j] = 0;
   if (n <= 0) return;
   const kdot::Reciprocal inv = kdot::reciprocal(n);
   bool sat = false;
-  int32_t du[kMaxColumns];  // d sum' / d p_j per column, in the sums' units
+  // d sum' / d p_j per column, in the sums' units: a1 and a2 from the image,
+  // beta's from the rows alone (its dot products kept while p and the
+  // geometry stay: for twins p stays 0, so they are taken once).
+  int32_t du[2][kMaxColumns];
   const ColumnX column_x(p1.width);
+  for (uint16_t u = 0; u < p1.width; ++u) {
+    const int64_t x = column_x(u, p1.width);
+    du[0][u] = static_cast<int32_t>(fx::shr_round(int64_t{p1.sum[u]} * x, kQ));
+    du[1][u] = static_cast<int32_t>(fx::shr_round(int64_t{p1.sum[u]} * fx::shr_round(x * x, kQ), kQ));
+  }
+  const bool beta_kept = beta_dots_.valid && beta_dots_.width == p1.width && beta_dots_.height == height &&
+                         beta_dots_.q8 == p1.q8 && beta_dots_.count == count && beta_dots_.p[0] == p_[0] &&
+                         beta_dots_.p[1] == p_[1] && beta_dots_.p[2] == p_[2];
+  if (!beta_kept) {
+    int32_t db[kMaxColumns];
+    for (uint16_t u = 0; u < p1.width; ++u)
+      db[u] = static_cast<int32_t>(
+          -fx::shr_round(rows_in_sum(p1, band, height, u) * kOffsetUnitDn * gain_q30(p_, column_x(u, p1.width)), kQ));
+    beta_dots_ = BetaDots{true, p1.q8, count, p1.width, height, {p_[0], p_[1], p_[2]},
+                          kdot::dot_values(ck.norm, db, p1.width), {}};
+    for (uint8_t k = 0; k < count; ++k) beta_dots_.k[k] = kdot::dot_values(ck.k[k], db, p1.width);
+  }
   for (int j = 0; j < kMatchParams; ++j) {
-    for (uint16_t u = 0; u < p1.width; ++u) {
-      const int64_t x = column_x(u, p1.width);
-      if (j == 0) du[u] = static_cast<int32_t>(fx::shr_round(int64_t{p1.sum[u]} * x, kQ));
-      if (j == 1) du[u] = static_cast<int32_t>(fx::shr_round(int64_t{p1.sum[u]} * fx::shr_round(x * x, kQ), kQ));
-      if (j == 2)
-        du[u] = static_cast<int32_t>(-fx::shr_round(rows_in_sum(p1, band, height, u) * kOffsetUnitDn * gain_q30(p_, x), kQ));
-    }
     // dF/dp = (dB/dp - F dN/dp) / N
-    const int64_t dn = kdot::ratio(kdot::dot_values(ck.norm, du, p1.width), inv, fx::kValueFrac, &sat);
+    const int64_t dot_norm = j < 2 ? kdot::dot_values(ck.norm, du[j], p1.width) : beta_dots_.norm;
+    const int64_t dn = kdot::ratio(dot_norm, inv, fx::kValueFrac, &sat);
     for (uint8_t k = 0; k < count; ++k) {
-      const int64_t db =
-          kdot::ratio(kdot::dot_values(ck.k[k], du, p1.width), inv, fx::kValueFrac + ck.norm.exp - ck.k[k].exp, &sat);
+      const int64_t dot_k = j < 2 ? kdot::dot_values(ck.k[k], du[j], p1.width) : beta_dots_.k[k];
+      const int64_t db = kdot::ratio(dot_k, inv, fx::kValueFrac + ck.norm.exp - ck.k[k].exp, &sat);
       jac[k][j] = fx::sat32(db - fx::shr_round(int64_t{f1[k]} * dn, fx::kValueFrac));
     }
   }

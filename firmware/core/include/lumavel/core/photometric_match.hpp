@@ -68,9 +68,11 @@ class PhotometricMatch {
   void apply(ColumnProfile& p1, const ColumnBand* band, uint16_t height);
   // cam1's dF/dp from the profile apply() gave and its outputs f1 (to first
   // order: d sum'/d a_j taken as sum' x^j, not sum' x^j / (1 + a1 x + a2 x^2);
-  // an error of J slows the learning, it does not move where it ends).
+  // an error of J slows the learning, it does not move where it ends). The
+  // black level's column does not depend on the image: its dot products are
+  // kept until p or the geometry changes (reset() on a new configuration).
   void jacobian(const ColumnProfile& p1, const ColumnBand* band, uint16_t height, const CameraKernels& ck,
-                uint8_t count, const ValueQ28* f1, MatchJac& jac) const;
+                uint8_t count, const ValueQ28* f1, MatchJac& jac);
   // One frame; true when p changed (by delta(), Q30 per parameter).
   bool learn(const MatchInput& in);
   const int32_t* params() const { return p_; }
@@ -105,6 +107,16 @@ class PhotometricMatch {
   int64_t dof_ = 0;                      // rows in those sums
   int32_t samples_ = 0;                  // held at kMatchMemorySamples
   int32_t unsolved_ = 0;                 // samples since the last solution
+  struct BetaDots {                      // the black level's dot products, for this p and geometry
+    bool valid;
+    bool q8;
+    uint8_t count;
+    uint16_t width, height;
+    int32_t p[kMatchParams];
+    int64_t norm;
+    int64_t k[kMaxKernels];
+  };
+  BetaDots beta_dots_ = {};
 };
 
 }  // namespace lumavel
