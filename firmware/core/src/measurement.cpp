@@ -105,6 +105,15 @@ AngleQ28 half_phase(const CameraOutputs& c0, const CameraOutputs& c1, ValueQ28 d
   const int64_t a0 = clamp30(int64_t{c0.f[k]} - dc0), a1 = clamp30(int64_t{c1.f[k]} - dc1);
   const int64_t b0 = clamp30(-fx::shr_round(r0 * inv_w, 16)), b1 = clamp30(-fx::shr_round(r1 * inv_w, 16));
   int64_t re = a1 * a0 + b1 * b0, im = b1 * a0 - a1 * b0;  // Q56, |.| < 2^61
+  // Halved (toward zero) until both fit 32 bits: the bulk in one shift of the
+  // magnitudes (k halvings toward zero are one truncated division by 2^k), the
+  // last one or two as before.
+  const uint64_t mag = static_cast<uint64_t>(re < 0 ? -re : re) | static_cast<uint64_t>(im < 0 ? -im : im);
+  if (mag >> 32) {
+    const int halvings = kdot::bit_length(mag) - 32;
+    re = re < 0 ? -((-re) >> halvings) : re >> halvings;
+    im = im < 0 ? -((-im) >> halvings) : im >> halvings;
+  }
   while (re >= (int64_t{1} << 31) || re < -(int64_t{1} << 31) || im >= (int64_t{1} << 31) || im < -(int64_t{1} << 31)) {
     re /= 2;
     im /= 2;
