@@ -1,6 +1,72 @@
 #include "lumavel/units/fixed.hpp"
 
+#include <cstdint>
+
 namespace lumavel::fx {
+namespace {
+
+// Where a 32-bit divider is in hardware and a 64-bit one is not, div_q's
+// divisions by a 32-bit denominator go through udivmod64_32.
+#if defined(__ARM_FEATURE_IDIV) || (defined(__riscv) && defined(__riscv_div) && __riscv_xlen == 32)
+constexpr bool kDivide64By32 = true;
+#else
+constexpr bool kDivide64By32 = false;
+#endif
+
+// a / b truncated toward zero and a % b with the sign of a, as the built-in
+// operators (b > 0).
+int64_t div_trunc(int64_t a, int64_t b, int64_t* r = nullptr) {
+  if (!kDivide64By32 || b > int64_t{0xFFFFFFFF} || a == INT64_MIN) {
+    if (r) *r = a % b;
+    return a / b;
+  }
+  uint32_t rm = 0;
+  const uint64_t m = static_cast<uint64_t>(a < 0 ? -a : a);
+  const int64_t q = static_cast<int64_t>(udivmod64_32(m, static_cast<uint32_t>(b), &rm));  // < 2^63
+  if (r) *r = a < 0 ? -int64_t{rm} : int64_t{rm};
+  return a < 0 ? -q : q;
+}
+
+}  // namespace
+
+uint64_t udivmod64_32(uint64_t n, uint32_t d, uint32_t* rem) {
+  const uint32_t hi = static_cast<uint32_t>(n >> 32);
+  if (hi == 0) {  // one 32-bit division
+    const uint32_t q = static_cast<uint32_t>(n) / d;
+    *rem = static_cast<uint32_t>(n) - q * d;
+    return q;
+  }
+  const uint32_t q_hi = hi / d;
+  const uint32_t r = hi - q_hi * d;  // < d: the rest's quotient fits 32 bits
+  const uint32_t lo = static_cast<uint32_t>(n);
+  // Normalise d to its top bit set; r:lo shifts along (r < d keeps it in 32 bits).
+  const int s = __builtin_clz(d);
+  const uint32_t dn = d << s;
+  const uint32_t vn1 = dn >> 16, vn0 = dn & 0xFFFFu;
+  const uint32_t un32 = s == 0 ? r : (r << s) | (lo >> (32 - s));
+  const uint32_t un10 = lo << s;
+  const uint32_t un1 = un10 >> 16, un0 = un10 & 0xFFFFu;
+  constexpr uint32_t b = 0x10000u;
+  // Each digit: estimate from the top halves, at most two corrections
+  // (q <= 2^16 + 1 and vn0 < 2^16: q vn0 stays below 2^32).
+  uint32_t q1 = un32 / vn1;
+  uint32_t rhat = un32 - q1 * vn1;
+  while (q1 >= b || q1 * vn0 > ((rhat << 16) | un1)) {
+    --q1;
+    rhat += vn1;
+    if (rhat >= b) break;
+  }
+  const uint32_t un21 = (un32 << 16) + un1 - q1 * dn;  // modulo 2^32: the exact partial remainder
+  uint32_t q0 = un21 / vn1;
+  rhat = un21 - q0 * vn1;
+  while (q0 >= b || q0 * vn0 > ((rhat << 16) | un0)) {
+    --q0;
+    rhat += vn1;
+    if (rhat >= b) break;
+  }
+  *rem = ((un21 << 16) + un0 - q0 * dn) >> s;
+  return (uint64_t{q_hi} << 32) | ((q1 << 16) + q0);
+}
 
 int32_t div_q(int64_t num, int64_t den, int q, bool* saturated) {
   if (den == 0) {
@@ -38,15 +104,15 @@ int32_t div_q(int64_t num, int64_t den, int q, bool* saturated) {
     num /= 2;
   }
   const int64_t one = int64_t{1} << q;
-  const int64_t ip = num / den;
-  const int64_t rem = num % den;  // same sign as num
+  int64_t rem = 0;  // same sign as num
+  const int64_t ip = div_trunc(num, den, &rem);
   const int64_t bound = int64_t{1} << (31 - q);
   if (ip >= bound || ip <= -bound) {
     if (saturated) *saturated = true;
     return num > 0 ? kInt32Max : kInt32Min;
   }
   const int64_t half = den / 2;
-  const int64_t frac = (rem * one + (rem >= 0 ? half : -half)) / den;
+  const int64_t frac = div_trunc(rem * one + (rem >= 0 ? half : -half), den);
   return sat32(ip * one + frac, saturated);
 }
 

@@ -126,6 +126,13 @@ constexpr int64_t shr_round(int64_t v, int s) {
   return v >= 0 ? (v + half) >> s : -((-v + half) >> s);
 }
 
+// n / d and n % d (*rem) for d in [1, 2^32), from 32-bit divisions only: the
+// high word, then the remaining 64 / 32 bits in two 16-bit digits (Hacker's
+// Delight, divlu). On cores with a 32-bit divider and none for 64 bits
+// (Cortex-M3/M4, RV32IM) this replaces the generic 64-bit library division;
+// the quotient and remainder are the same, bit for bit.
+uint64_t udivmod64_32(uint64_t n, uint32_t d, uint32_t* rem);
+
 // Rounded, saturated quotient num/den in Q(q) (0 <= q <= 62; beyond 31 the
 // scale moves into num or den). A zero
 // denominator saturates toward the sign of num and sets *saturated.
