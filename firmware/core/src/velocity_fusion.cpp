@@ -126,8 +126,12 @@ FusionOutput VelocityFusion::update(const FusionInput& in) {
           clamp64(tof_inflation_ + fx::shr_round(kInflationGainQ16 * (g - tof_inflation_), 16), kOneQ16, kInflationMaxQ16));
     }
   }
-  // Smoothing, slower without a time of flight when the differential is doubtful.
-  const int64_t teff_us = use_tof ? kTauUs : kTauUs + ((kSlowUsPerResidual * residual_) >> 16);
+  // Smoothing, slower without a time of flight when the differential is doubtful,
+  // but never longer than the output has measured since it (re)started: until
+  // then it is the mean of what came since (gain 1/n), not the first value held.
+  since_start_us_ = std::min<int64_t>(since_start_us_ + dt_us, kInt31);
+  const int64_t teff_us = std::min<int64_t>(
+      use_tof ? kTauUs : kTauUs + ((kSlowUsPerResidual * residual_) >> 16), since_start_us_);
   const int64_t nv = v_ + fx::div_q((target - v_) * dt_us, teff_us + dt_us, 0, &sat);
   if (dt_us > 0) {
     // accel += (rate - accel) dt / (tau_a + dt), with rate = (nv - v) / dt: one division.

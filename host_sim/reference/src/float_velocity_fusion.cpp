@@ -79,7 +79,9 @@ FloatFusionOutput FloatVelocityFusion::update(const FloatFusionInput& in) {
                                   kFusionTofInflationMax);
     }
   }
-  const double teff = use_tof ? kFusionTau : kFusionTau * (1 + residual_ / kFusionSlowResidual);
+  since_start_us_ = std::min<int64_t>(since_start_us_ + dt_us, int64_t{1} << 31);
+  const double teff = std::min(use_tof ? kFusionTau : kFusionTau * (1 + residual_ / kFusionSlowResidual),
+                               static_cast<double>(since_start_us_) * 1e-6);
   const double nv = v_ + (target - v_) * dt / (teff + dt);
   if (dt > 0) {
     accel_ = std::clamp(accel_ + ((nv - v_) / dt - accel_) * dt / (kFusionAccelTau + dt), -kFusionAccelMax,

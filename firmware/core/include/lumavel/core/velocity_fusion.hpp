@@ -25,7 +25,9 @@
 //   stands out of its noise (fusion_params.hpp, kFusionLagSigmas).
 // - Without a time of flight (standstill, too slow for the history, turning,
 //   reversing, lost), the output follows the differential, more slowly the
-//   less it can be trusted; the caller flags the frame (kStatusNoTof).
+//   less it can be trusted; the caller flags the frame (kStatusNoTof). Never
+//   more slowly than the time since the output (re)started: until then it is
+//   the mean of the values since (a start is one noisy value, not a prior).
 // - Where the differential cannot see motion (low texture), V is held, as the
 //   observer holds it.
 //
@@ -66,6 +68,7 @@ class VelocityFusion {
   void restart() {
     started_ = false;
     measured_us_ = 0;
+    since_start_us_ = 0;
     have_direct_ = false;
   }
   FusionOutput update(const FusionInput& in);
@@ -81,6 +84,7 @@ class VelocityFusion {
   FracQ16 residual_ = 0;           // tracked residual ratio of the differential
   int32_t tof_inflation_ = int32_t{1} << 16;  // Q16, >= 1: the time of flight's variance factor
   int64_t measured_us_ = 0;
+  int64_t since_start_us_ = 0;     // measured time since the output (re)started, capped
   SpeedQ16 half_ = 0;              // the observer at half its time constant
   SpeedQ16 prev_direct_ = 0;       // the last direct value, for the scatter ...
   int64_t direct_var_ = 0;         // ... of their differences (Q32 (m/s)^2, smoothed over kFusionAccelTau)

@@ -30,6 +30,7 @@ class FloatVelocityFusion {
   void restart() {
     started_ = false;
     measured_us_ = 0;
+    since_start_us_ = 0;
     have_direct_ = false;
   }
   FloatFusionOutput update(const FloatFusionInput& in);
@@ -44,6 +45,7 @@ class FloatVelocityFusion {
   // How long the observer has measured without a hold: counted as the core
   // counts it (whole microseconds), so that both gate the same frames.
   int64_t measured_us_ = 0;
+  int64_t since_start_us_ = 0;  // measured time since the output (re)started (the core's units)
   double half_ = 0;                          // the observer at half its time constant (m/s)
   double prev_direct_ = 0, direct_var_ = 0;  // the direct values' scatter (m/s, (m/s)^2)
   bool have_direct_ = false;
