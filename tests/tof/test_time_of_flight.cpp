@@ -356,6 +356,39 @@ TEST(VelocityFusion, ADifferentialAgainstTheTimeOfFlightIsOutvoted) {
 
 namespace {
 
+// One frame of plain data into both fusions, without a time of flight (h 8 cm,
+// 60 Hz, the observer's tau 0.1 s); returns the fixed and the double V.
+struct FusedPair {
+  double fixed, dbl;
+};
+FusedPair update_both(VelocityFusion& fixed, host::FloatVelocityFusion& dbl, double v_differential, double v_direct,
+                      double residual, double y) {
+  constexpr double kH = 0.08, kDt = 1.0 / 60, kTauObs = 0.1;
+  TofResult tf{};
+  FusionInput in{};
+  in.dt_ns = std::llround(kDt * 1e9);
+  in.v_differential = static_cast<SpeedQ16>(std::lround(v_differential * 65536));
+  in.v_direct = static_cast<SpeedQ16>(std::lround(v_direct * 65536));
+  in.residual = static_cast<FracQ16>(std::lround(residual * 65536));
+  in.observer_tau_us = static_cast<uint32_t>(kTauObs * 1e6);
+  in.direct = true;
+  in.tof = &tf;
+  in.y = static_cast<TravelQ16Ns>(std::llround(y * 65536 * 1e9));
+  in.baseline = static_cast<LengthQ24>(std::lround(kH * (1 << 24)));
+  host::FloatTofResult tfd;
+  host::FloatFusionInput ind;
+  ind.dt = kDt;
+  ind.v_differential = v_differential;
+  ind.v_direct = v_direct;
+  ind.residual = residual;
+  ind.observer_tau = kTauObs;
+  ind.direct = true;
+  ind.tof = &tfd;
+  ind.y = y;
+  ind.baseline = kH;
+  return {fixed.update(in).v / 65536.0, dbl.update(ind).v};
+}
+
 // Plain data into both fusions without a time of flight: the observer
 // emulated as the first-order lag it is (tau 0.1 s) over direct values
 // v_true(t) + noise(t). Returns the fused and the differential's errors
@@ -366,7 +399,7 @@ struct LagRun {
 
 template <class Truth, class Noise>
 LagRun run_without_tof(Truth v_true, Noise noise, double secs, double from) {
-  constexpr double kH = 0.08, kDt = 1.0 / 60, kTauObs = 0.1;
+  constexpr double kDt = 1.0 / 60, kTauObs = 0.1;
   VelocityFusion fixed;
   host::FloatVelocityFusion dbl;
   LagRun r;
@@ -376,28 +409,8 @@ LagRun run_without_tof(Truth v_true, Noise noise, double secs, double from) {
     const double t = i * kDt, direct = v_true(t - kDt / 2) + noise(i);
     v_obs += (direct - v_obs) * kDt / (kTauObs + kDt);
     y += direct * kDt;
-    TofResult tf{};
-    FusionInput in{};
-    in.dt_ns = std::llround(kDt * 1e9);
-    in.v_differential = static_cast<SpeedQ16>(std::lround(v_obs * 65536));
-    in.v_direct = static_cast<SpeedQ16>(std::lround(direct * 65536));
-    in.observer_tau_us = static_cast<uint32_t>(kTauObs * 1e6);
-    in.direct = true;
-    in.tof = &tf;
-    in.y = static_cast<TravelQ16Ns>(std::llround(y * 65536 * 1e9));
-    in.baseline = static_cast<LengthQ24>(std::lround(kH * (1 << 24)));
-    const double vf = fixed.update(in).v / 65536.0;
-    host::FloatTofResult tfd;
-    host::FloatFusionInput ind;
-    ind.dt = kDt;
-    ind.v_differential = v_obs;
-    ind.v_direct = direct;
-    ind.observer_tau = kTauObs;
-    ind.direct = true;
-    ind.tof = &tfd;
-    ind.y = y;
-    ind.baseline = kH;
-    const double vdbl = dbl.update(ind).v;
+    const FusedPair out = update_both(fixed, dbl, v_obs, direct, 0, y);
+    const double vf = out.fixed, vdbl = out.dbl;
     if (t < from) continue;
     const double truth = v_true(t);
     ++n;
@@ -475,36 +488,15 @@ TEST(VelocityFusion, WildDirectValuesStayInRange) {
 // after the restart V must be within 0.06 of 0.6 (the mean of the six values
 // since is 0.65; held from 0.9 through the slowed smoothing it was 0.75).
 TEST(VelocityFusion, AStartIsAveragedNotHeld) {
-  constexpr double kH = 0.08, kDt = 1.0 / 60, kTauObs = 0.1, kResidual = 0.3;
+  constexpr double kDt = 1.0 / 60, kResidual = 0.3;
   VelocityFusion fixed;
   host::FloatVelocityFusion dbl;
   double y = 0, vf = 0, vd = 0;
   const auto feed = [&](double v) {
     y += v * kDt;
-    TofResult tf{};
-    FusionInput in{};
-    in.dt_ns = std::llround(kDt * 1e9);
-    in.v_differential = static_cast<SpeedQ16>(std::lround(v * 65536));
-    in.v_direct = in.v_differential;
-    in.residual = static_cast<FracQ16>(std::lround(kResidual * 65536));
-    in.observer_tau_us = static_cast<uint32_t>(kTauObs * 1e6);
-    in.direct = true;
-    in.tof = &tf;
-    in.y = static_cast<TravelQ16Ns>(std::llround(y * 65536 * 1e9));
-    in.baseline = static_cast<LengthQ24>(std::lround(kH * (1 << 24)));
-    vf = fixed.update(in).v / 65536.0;
-    host::FloatTofResult tfd;
-    host::FloatFusionInput ind;
-    ind.dt = kDt;
-    ind.v_differential = v;
-    ind.v_direct = v;
-    ind.residual = kResidual;
-    ind.observer_tau = kTauObs;
-    ind.direct = true;
-    ind.tof = &tfd;
-    ind.y = y;
-    ind.baseline = kH;
-    vd = dbl.update(ind).v;
+    const FusedPair out = update_both(fixed, dbl, v, v, kResidual, y);
+    vf = out.fixed;
+    vd = out.dbl;
   };
   for (int i = 0; i < 60; ++i) feed(0.6);
   fixed.restart();
