@@ -178,7 +178,11 @@ int64_t VelocityFusion::lag_compensation(const FusionInput& in, int64_t dt_us) {
   half_ = observer_step(half_, in.v_direct, dt_us, tau_us / 2, &sat);
   const int64_t shown = clamp64(2 * (int64_t{half_} - in.v_differential), -kLagMaxQ16, kLagMaxQ16);
   if ((weighed > 0) != (shown > 0) || weighed == 0 || shown == 0) return 0;
-  return abs64(weighed) < abs64(shown) ? weighed : shown;
+  const int64_t lag = abs64(weighed) < abs64(shown) ? weighed : shown;
+  // The same ramp lags twice more downstream: the direct values stand for the
+  // middle of their interval (dt / 2), and the output's own smoothing (kFusionTau).
+  // |lag| <= 2^23 times < 2^32 us: < 2^55
+  return fx::div_q(lag * (tau_us + dt_us / 2 + kTauUs), tau_us, 0);
 }
 
 void VelocityFusion::learn_scale(const FusionInput& in, int64_t dt_us, int64_t q_res, int64_t q_change,

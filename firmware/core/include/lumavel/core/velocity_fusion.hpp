@@ -22,7 +22,9 @@
 //   stands still or carries the held V, which would read as a scale.
 // - The observer's first-order V lags a ramp by tau_obs A: added back as
 //   twice the gap to the same observer at half its time constant, where that
-//   stands out of its noise (fusion_params.hpp, kFusionLagSigmas).
+//   stands out of its noise (fusion_params.hpp, kFusionLagSigmas), scaled to
+//   the ramp's two other lags, the direct values' half interval and the
+//   output's own smoothing: (tau_obs + dt/2 + kFusionTau) A.
 // - Without a time of flight (standstill, too slow for the history, turning,
 //   reversing, lost), the output follows the differential, more slowly the
 //   less it can be trusted; the caller flags the frame (kStatusNoTof). Never
