@@ -116,8 +116,7 @@ double FloatVelocityFusion::lag_compensation(const FloatFusionInput& in, double 
   if ((weighed > 0) != (shown > 0) || weighed == 0 || shown == 0) return 0;
   const double lag = std::fabs(weighed) < std::fabs(shown) ? weighed : shown;
   // The same ramp lags twice more downstream: the half interval and the output's smoothing.
-  const double dt_us = static_cast<double>(static_cast<int64_t>(dt * 1e6));
-  return lag * (in.observer_tau + dt_us / 2 * 1e-6 + kFusionTau) / in.observer_tau;
+  return lag * (in.observer_tau + dt / 2 + kFusionTau) / in.observer_tau;
 }
 
 }  // namespace lumavel::host
