@@ -14,12 +14,13 @@ namespace lumavel::host::lens_test {
 namespace {
 
 Variant run_variant(const std::string& rec_dir, EngineKind engine, int w, int h, bool ignore_distortion,
-                    bool elevation_band) {
+                    bool elevation_band, bool by_columns = false) {
   const Recording rec = load_recording(rec_dir);
   RunOptions o;
   o.engine = engine;
   o.size = {w, h};
   o.ignore_distortion = ignore_distortion;
+  o.lens_by_columns = by_columns;
   o.elevation_band = elevation_band;
   Variant v;
   v.track = run_recording(rec, o, nullptr).track;
@@ -79,22 +80,25 @@ Comparison compare(const RenderedPair& p, EngineKind engine, int work_width, int
   c.undistorted = run_variant(p.undistorted, engine, work_width, work_height, false, elevation_band);
   c.corrected = run_variant(p.distorted, engine, work_width, work_height, false, elevation_band);
   c.ignored = run_variant(p.distorted, engine, work_width, work_height, true, elevation_band);
+  c.columns = run_variant(p.distorted, engine, work_width, work_height, false, elevation_band, true);
   fit(c.undistorted, c.corrected, p.scenario, c.corrected_slope, c.corrected_rms);
+  fit(c.undistorted, c.columns, p.scenario, c.columns_slope, c.columns_rms);
   fit(c.undistorted, c.ignored, p.scenario, c.ignored_slope, c.ignored_rms);
   return c;
 }
 
 std::string describe(const Comparison& c) {
-  char b[512], e[64] = "E undefined (V < 0.05 m/s)";
+  char b[640], e[80] = "E undefined (V < 0.05 m/s)";
   if (c.undistorted.metrics.samples > c.undistorted.metrics.excluded_slow)
-    std::snprintf(e, sizeof e, "E %.2f / %.2f / %.2f %%", c.undistorted.metrics.e_percent,
-                  c.corrected.metrics.e_percent, c.ignored.metrics.e_percent);
+    std::snprintf(e, sizeof e, "E %.2f / %.2f / %.2f / %.2f %%", c.undistorted.metrics.e_percent,
+                  c.corrected.metrics.e_percent, c.columns.metrics.e_percent, c.ignored.metrics.e_percent);
   std::snprintf(b, sizeof b,
-                "%s, mean err after 1 s %+.4f / %+.4f / %+.4f m/s "
-                "(undistorted / corrected / ignored); vs undistorted: slope on yaw rate %+.4f / %+.4f m/s per rad/s, "
-                "rms %.4f / %.4f m/s (corrected / ignored)",
-                e, c.undistorted.metrics.mean_after, c.corrected.metrics.mean_after, c.ignored.metrics.mean_after,
-                c.corrected_slope, c.ignored_slope, c.corrected_rms, c.ignored_rms);
+                "%s, mean err after 1 s %+.4f / %+.4f / %+.4f / %+.4f m/s "
+                "(undistorted / corrected / column tables / ignored); vs undistorted: slope on yaw rate %+.4f / "
+                "%+.4f / %+.4f m/s per rad/s, rms %.4f / %.4f / %.4f m/s (corrected / column tables / ignored)",
+                e, c.undistorted.metrics.mean_after, c.corrected.metrics.mean_after, c.columns.metrics.mean_after,
+                c.ignored.metrics.mean_after, c.corrected_slope, c.columns_slope, c.ignored_slope, c.corrected_rms,
+                c.columns_rms, c.ignored_rms);
   return b;
 }
 

@@ -1,6 +1,7 @@
 // One scenario rendered twice from the same seed (through its lens, and with
-// the lens removed), then estimated three ways: undistorted, distorted with
-// the correction, distorted read as pinhole (--ignore-distortion).
+// the lens removed), then estimated four ways: undistorted, distorted with
+// the correction (frames undistorted, the default), distorted with column
+// tables only (--lens-columns), distorted read as pinhole (--ignore-distortion).
 #pragma once
 #include <string>
 #include <vector>
@@ -30,12 +31,12 @@ struct Variant {
 };
 
 struct Comparison {
-  Variant undistorted, corrected, ignored;
+  Variant undistorted, corrected, columns, ignored;
   // Per-frame difference from the undistorted estimate after the first
   // second, fitted as slope * yaw rate: the spurious V a lens error leaves
   // in the rotation term (m/s per rad/s), and the rms of the difference.
-  double corrected_slope = 0, ignored_slope = 0;
-  double corrected_rms = 0, ignored_rms = 0;
+  double corrected_slope = 0, columns_slope = 0, ignored_slope = 0;
+  double corrected_rms = 0, columns_rms = 0, ignored_rms = 0;
 };
 // elevation_band: run with kOptionElevationBand (off by default).
 Comparison compare(const RenderedPair& p, EngineKind engine, int work_width, int work_height,

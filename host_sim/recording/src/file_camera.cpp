@@ -5,10 +5,12 @@
 #include "lumavel/core/binning.hpp"
 #include "lumavel/host/image_io.hpp"
 #include "lumavel/host/recording_layout.hpp"
+#include "lumavel/host/rig.hpp"
 
 namespace lumavel::host {
 
-FileStereoCamera::FileStereoCamera(const Recording& rec, int width, int height, int threads, int lookahead)
+FileStereoCamera::FileStereoCamera(const Recording& rec, int width, int height, int threads, int lookahead,
+                                   bool undistort)
     : rec_(rec), width_(static_cast<uint16_t>(width)), height_(static_cast<uint16_t>(height)) {
   for (int c = 0; c < 2; ++c)
     if (width < 1 || height < 1 || width > rec.cam[c].width || height > rec.cam[c].height || width > 2048)
@@ -16,6 +18,11 @@ FileStereoCamera::FileStereoCamera(const Recording& rec, int width, int height, 
                                "cannot bin " + std::to_string(rec.cam[c].width) + "x" +
                                    std::to_string(rec.cam[c].height) + " frames to " + std::to_string(width) + "x" +
                                    std::to_string(height));
+  for (int c = 0; c < 2; ++c) {
+    const CameraSensor& s = rec.cam[c];
+    if (undistort && lens_applies(s))
+      remap_[c] = std::make_unique<LensRemap>(s.width, s.height, PinholeIntrinsics{s.fu, s.fv, s.cu, s.cv}, lens_of(s));
+  }
   if (threads < 1) threads = 1;
   if (lookahead < threads) lookahead = threads;
   slots_.resize(static_cast<size_t>(lookahead));
@@ -59,6 +66,11 @@ void FileStereoCamera::decode_into(size_t index, Slot& slot) const {
       throw RecordingError(frame + f.path[c] + ": image is " + std::to_string(img.width) + "x" +
                            std::to_string(img.height) + ", sensor.yaml says resolution [" + std::to_string(s.width) +
                            ", " + std::to_string(s.height) + "]");
+    if (remap_[c]) {
+      std::vector<uint8_t> pinhole(img.px.size());
+      remap_[c]->apply(img.px.data(), pinhole.data());
+      img.px.swap(pinhole);
+    }
     const ImageView view{img.px.data(), static_cast<uint16_t>(img.width), static_cast<uint16_t>(img.height),
                          static_cast<uint32_t>(img.width)};
     if (!bin_area(view, slot.px[c].data(), width_, height_))

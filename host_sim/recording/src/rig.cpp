@@ -54,20 +54,18 @@ CameraModel derive_camera(const CameraSensor& c, int work_width, const std::stri
   return m;
 }
 
-namespace {
-
-// The sensor's radial-tangential distortion applies: a coefficient is not 0.
 bool lens_applies(const CameraSensor& c) {
   const std::vector<double>& d = c.distortion;
   return c.distortion_model == "radial-tangential" && std::any_of(d.begin(), d.end(), [](double k) { return k != 0; });
 }
 
-// k1, k2, p1, p2 of the sensor (missing ones 0).
 LensDistortion lens_of(const CameraSensor& c) {
   LensDistortion lens;
   for (size_t i = 0; i < lens.k.size() && i < c.distortion.size(); ++i) lens.k[i] = c.distortion[i];
   return lens;
 }
+
+namespace {
 
 // How far (px) an undistorted point may miss its pixel when distorted again.
 constexpr double kLensInverseTolerancePx = 0.01;

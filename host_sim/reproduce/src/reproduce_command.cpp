@@ -179,6 +179,7 @@ CaseResult run_case(const Case& c, const Recording& rec, const WorkSize& w, Engi
   ro.engine = kind;
   ro.size = {w.width, w.height};
   ro.ignore_distortion = lens_variant(c).ignore_distortion;
+  ro.lens_by_columns = lens_variant(c).by_columns;
   ro.gyro_offset_learning = gyro_variant(c).learning;
   double gyro_offset = 0;  // as learned by the end of the run
   ro.sink = [&gyro_offset](const EngineEstimate& e) { gyro_offset = e.gyro_offset; };

@@ -40,11 +40,11 @@ Study real_rig_study(bool quick);
 Study lens_study(bool quick);
 
 // How a case of the lens study is rendered and run: with the scenario's lens
-// removed, as if the lens were pinhole (run --ignore-distortion), and the
-// folder of the render it shares. Other cases: no_lens and
-// ignore_distortion false, render_id the case id.
+// removed, as if the lens were pinhole (run --ignore-distortion), corrected
+// by column tables only (run --lens-columns), and the folder of the render it
+// shares. Other cases: all false, render_id the case id.
 struct LensVariant {
-  bool no_lens = false, ignore_distortion = false;
+  bool no_lens = false, ignore_distortion = false, by_columns = false;
   std::string render_id;
 };
 LensVariant lens_variant(const Case& c);

@@ -1,6 +1,7 @@
 // Lens distortion study: each lens scenario rendered once through its lens
-// and once without it (same seed), the lens render run twice (corrected, and
-// read as pinhole with --ignore-distortion), at the product's 40x30 and at
+// and once without it (same seed), the lens render run three times
+// (corrected, the default; corrected by column tables only, --lens-columns;
+// read as pinhole, --ignore-distortion), at the product's 40x30 and at
 // 160x120.
 #include <cmath>
 #include <cstdio>
@@ -31,6 +32,7 @@ const LensScene kScenes[] = {
 constexpr const char* kUndistorted = "_undistorted";
 constexpr const char* kCorrected = "_corrected";
 constexpr const char* kIgnored = "_ignored";
+constexpr const char* kColumns = "_columns";
 
 bool ends_with(const std::string& s, const std::string& end) {
   return s.size() >= end.size() && s.compare(s.size() - end.size(), end.size(), end) == 0;
@@ -58,8 +60,11 @@ std::string cell(const CaseResult* c, bool e_defined) {
 Study lens_study(bool quick) {
   Study st{"Lens distortion",
            "Each scene rendered at 160x120 (quick: 80x60, 3 s) through its radial-tangential lens and, from the same seed, "
-           "without it; the lens render is run with the correction (column angles from the undistorted "
-           "geometry, the default) and read as pinhole (`run --ignore-distortion`). Cells: E (eq. 22) / "
+           "without it; the lens render is run with the correction (each frame resampled onto the pinhole of its "
+           "intrinsics before binning, the default), with per-column tables only (each column's yaw and elevation "
+           "scale from the undistorted geometry, the frames binned as they are: what a device does with the "
+           "lens tables `lumavel-read config set` sends it; `run --lens-columns`) and read as pinhole (`run "
+           "--ignore-distortion`). Cells: E (eq. 22) / "
            "worst |err| after 1 s (m/s) / mean error after 1 s (m/s), fixed engine; E is undefined for "
            "the spin in place (V = 1 mm/s). Read as pinhole, a lens leaves a spurious V in the rotation "
            "term, proportional to the yaw rate. VO: the keypoint stereo VO undistorting its points with "
@@ -74,6 +79,7 @@ Study lens_study(bool quick) {
     const std::string id = s.id;
     st.cases.push_back({id + kUndistorted, s.file, rw, rh, -1, duration, work, s.label, -1, ""});
     st.cases.push_back({id + kCorrected, s.file, rw, rh, -1, duration, work, s.label, -1, ""});
+    st.cases.push_back({id + kColumns, s.file, rw, rh, -1, duration, work, s.label, -1, ""});
     st.cases.push_back({id + kIgnored, s.file, rw, rh, -1, duration, work, s.label, -1, ""});
   }
   return st;
@@ -84,10 +90,12 @@ LensVariant lens_variant(const Case& c) {
   v.render_id = c.id;
   if (!is_lens_case(c.id)) return v;
   v.no_lens = ends_with(c.id, kUndistorted);
-  if (ends_with(c.id, kIgnored)) {
-    v.ignore_distortion = true;  // the corrected case's frames, estimated as pinhole
-    v.render_id = c.id.substr(0, c.id.size() - std::string(kIgnored).size()) + kCorrected;
-  }
+  // Both share the corrected case's frames: estimated as pinhole, or with column tables.
+  for (const char* suffix : {kIgnored, kColumns})
+    if (ends_with(c.id, suffix)) {
+      (suffix == kIgnored ? v.ignore_distortion : v.by_columns) = true;
+      v.render_id = c.id.substr(0, c.id.size() - std::string(suffix).size()) + kCorrected;
+    }
   return v;
 }
 
@@ -98,9 +106,9 @@ std::string lens_table(const StudyResult& sr) {
     return nullptr;
   };
   std::ostringstream md;
-  md << "| scene | working | undistorted | distorted, corrected | distorted, ignored | float: corrected E | "
-        "VO: corrected / ignored E |\n"
-        "|---|---|---|---|---|---|---|\n";
+  md << "| scene | working | undistorted | distorted, corrected | distorted, column tables only | distorted, "
+        "ignored | float: corrected E | VO: corrected / ignored E |\n"
+        "|---|---|---|---|---|---|---|---|\n";
   for (const LensScene& s : kScenes) {
     const std::string id = s.id;
     for (const CaseResult& c : sr.cases)
@@ -116,7 +124,8 @@ std::string lens_table(const StudyResult& sr) {
           std::snprintf(ve, sizeof ve, "%.2f %% / %.2f %%", vc->metrics.e_percent, vi->metrics.e_percent);
         md << "| " << s.label << " | " << w.width << "x" << w.height << " | "
            << cell(find(id + kUndistorted, w, EngineKind::kFixed), e_defined) << " | " << cell(&c, e_defined)
-           << " | " << cell(find(id + kIgnored, w, EngineKind::kFixed), e_defined) << " | " << fe << " | " << ve
+           << " | " << cell(find(id + kColumns, w, EngineKind::kFixed), e_defined) << " | "
+           << cell(find(id + kIgnored, w, EngineKind::kFixed), e_defined) << " | " << fe << " | " << ve
            << " |\n";
       }
   }

@@ -56,6 +56,7 @@ struct RunArgs {
   int width = 0, height = 0;  // 0: the default working size for the recording
   bool quiet = false;
   bool ignore_distortion = false;
+  bool lens_columns = false;
   bool no_gyro_offset_learning = false;
   bool photometric_balance = false;
   bool no_photometric_match = false;
@@ -128,10 +129,14 @@ std::string working_size_origin(const RunArgs& a, const Recording& rec) {
          " cut to the " + std::to_string(rec.cam[0].width) + "x" + std::to_string(rec.cam[0].height) + " sensor)";
 }
 
-const char* lens_line(bool distorted, bool ignored) {
-  if (!distorted) return "lens: no distortion in sensor.yaml (--ignore-distortion changes nothing)";
+const char* lens_line(bool distorted, bool ignored, bool by_columns) {
+  if (!distorted) return "lens: no distortion in sensor.yaml (--ignore-distortion and --lens-columns change nothing)";
+  if (by_columns && !ignored)
+    return "lens: radial-tangential distortion corrected by column tables only (--lens-columns: the device's "
+           "correction; frames binned as they are)";
   return ignored ? "lens: distortion IGNORED (--ignore-distortion): columns read as pinhole"
-                 : "lens: radial-tangential distortion corrected (column angles from sensor.yaml)";
+                 : "lens: radial-tangential distortion corrected (each frame resampled onto the pinhole of sensor.yaml's "
+                   "intrinsics before binning)";
 }
 
 // The offset the run ended with, and for how long the images showed the rig
@@ -221,6 +226,7 @@ int run(const RunArgs& a) {
   const WorkingSize fallback = default_working_size(rec);
   options.size = {a.width > 0 ? a.width : fallback.width, a.height > 0 ? a.height : fallback.height};
   options.ignore_distortion = a.ignore_distortion;
+  options.lens_by_columns = a.lens_columns;
   options.gyro_offset_learning = !a.no_gyro_offset_learning;
   options.photometric_balance = a.photometric_balance;
   options.photometric_match = !a.no_photometric_match;
@@ -284,8 +290,13 @@ int run(const RunArgs& a) {
                  result.frames ? 1e6 * result.step_s / static_cast<double>(result.frames) : 0.0);
     std::fprintf(stderr, "gaps: %s\n", format_gaps(rec.gaps).c_str());
     std::fprintf(stderr, "%s\n", format_flag_counts(count_flags(result.track)).c_str());
-    if (result.lens_distorted || a.ignore_distortion)
-      std::fprintf(stderr, "%s\n", lens_line(result.lens_distorted, a.ignore_distortion));
+    if (result.lens_distorted || a.ignore_distortion || a.lens_columns)
+      std::fprintf(stderr, "%s\n", lens_line(result.lens_distorted, a.ignore_distortion, a.lens_columns));
+    if (result.pinhole_outside_px > 0)
+      std::fprintf(stderr,
+                   "lens: warning: %d pixels of the two cameras' pinhole views (%d each at the sensor's size) look "
+                   "outside the sensor (a pincushion lens): they repeat the nearest edge pixel\n",
+                   result.pinhole_outside_px, rec.cam[0].width * rec.cam[0].height);
     if (result.has_truth) std::fprintf(stderr, "%s\n", format_metrics(compute_metrics(result.track)).c_str());
     else std::fprintf(stderr, "no ground truth (state_groundtruth_estimate0/data.csv): no error figures\n");
     std::fprintf(stderr, "%s\n", gyro_offset_line(options.engine, !a.no_gyro_offset_learning, result.track, last.gyro_offset).c_str());
@@ -336,8 +347,14 @@ void add_run_command(cli::Tool& tool) {
   c->add_flag("--ignore-distortion", a->ignore_distortion,
               "estimate as if the lenses were pinhole, ignoring the\n"
               "distortion_model and coefficients of sensor.yaml (by\n"
-              "default the column angles come from the undistorted\n"
-              "geometry); for comparisons or doubtful calibrations");
+              "default each frame is undistorted onto the pinhole of\n"
+              "its intrinsics); for comparisons or doubtful calibrations");
+  c->add_flag("--lens-columns", a->lens_columns,
+              "correct the lens by per-column tables only, the frames\n"
+              "binned as they are: what a device does with the lens\n"
+              "tables lumavel-read config set sends (weaker on wide\n"
+              "lenses turning; for comparisons)")
+      ->excludes("--ignore-distortion");
   c->add_flag("--no-gyro-offset-learning", a->no_gyro_offset_learning,
               "take the gyro as it reads: do not learn its zero-rate\n"
               "offset while the images show the rig standing still\n"

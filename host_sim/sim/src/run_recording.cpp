@@ -51,13 +51,11 @@ const char* const kEstimatesHeader =
     "timestamp_ns,v_xb_mps,distance_m,heading_rad,status,gyro_offset_radps,v_direct_mps,texture,v_differential_mps,"
     "tof_s,scale";
 
-bool has_lens_distortion(const EstimatorSettings& s) { return !s.cam[0].edges.empty() || !s.cam[1].edges.empty(); }
+bool has_lens_distortion(const Recording& rec) { return lens_applies(rec.cam[0]) || lens_applies(rec.cam[1]); }
 
-bool has_lens_distortion(const Recording& rec) {
-  for (const CameraSensor& c : rec.cam)
-    for (double k : c.distortion)
-      if (k != 0) return true;
-  return false;
+bool undistorts_frames(const Recording& rec, const RunOptions& options) {
+  return options.engine != EngineKind::kVo && !options.ignore_distortion && !options.lens_by_columns &&
+         has_lens_distortion(rec);
 }
 
 EstimatorSettings run_settings(const Recording& rec, const RunOptions& options) {
@@ -85,6 +83,11 @@ EstimatorSettings run_settings(const Recording& rec, const RunOptions& options) 
   EstimatorSettings s = derive_settings(rec, options.size);
   if (options.ignore_distortion)
     for (CameraModel& c : s.cam) c.edges.clear();  // no edge table: the engines use the pinhole columns
+  if (undistorts_frames(rec, options))
+    for (CameraModel& c : s.cam) {  // the frames are pinhole frames of the sensor's intrinsics
+      c.edges.clear();
+      c.elevation_scale.clear();
+    }
   s.gyro_offset_learning = options.gyro_offset_learning;
   s.photometric_balance = options.photometric_balance;
   s.photometric_match = options.photometric_match;
@@ -108,25 +111,28 @@ RunResult run_recording(const Recording& rec, const RunOptions& options, std::FI
   } catch (const SettingsError& e) {
     throw RecordingError(setting_source(rec, e.setting()) + ": " + e.what());
   }
-  RunResult r = run_recording(rec, settings, *engine, options.decode_threads, csv, progress, options.sink);
-  r.lens_distorted = options.engine == EngineKind::kVo ? has_lens_distortion(rec)
-                                                       : has_lens_distortion(derive_settings(rec, options.size));
+  RunResult r = run_recording(rec, settings, *engine, options.decode_threads, csv, progress, options.sink,
+                              undistorts_frames(rec, options));
+  r.lens_distorted = has_lens_distortion(rec);
   return r;
 }
 
 RunResult run_recording(const Recording& rec, const EstimatorSettings& settings, Engine& engine,
                         int decode_threads, std::FILE* csv, const std::function<void(size_t, size_t)>& progress,
-                        const EstimateSink& sink) {
+                        const EstimateSink& sink, bool undistort_frames) {
   // Above the binner's 160 columns only the vo engine runs, at the sensors' size (run_settings).
   std::unique_ptr<FileStereoCamera> binned;
   std::unique_ptr<NativeStereoCamera> native;
   if (settings.width > kMaxWorkWidth) native = std::make_unique<NativeStereoCamera>(rec);
-  else binned = std::make_unique<FileStereoCamera>(rec, settings.width, settings.height, decode_threads);
+  else
+    binned = std::make_unique<FileStereoCamera>(rec, settings.width, settings.height, decode_threads, 16,
+                                                undistort_frames);
   hal::StereoCamera& camera = native ? static_cast<hal::StereoCamera&>(*native) : *binned;
   auto camera_error = [&] { return native ? native->error() : binned->error(); };
 
   RunResult result;
   result.has_truth = !rec.groundtruth.empty();
+  if (binned) result.pinhole_outside_px = binned->pinhole_outside(0) + binned->pinhole_outside(1);
   result.width = settings.width;
   result.height = settings.height;
   result.track.reserve(rec.frames.size());

@@ -1,16 +1,20 @@
 // hal::StereoCamera over a recording: delivers the frame pairs in order,
 // binned to the working resolution with lumavel::bin_area, like a board driver
-// bins its sensor. Frames are decoded ahead on a small thread pool so a run is
+// bins its sensor. With `undistort`, a camera whose sensor.yaml gives a lens
+// distortion has every frame resampled onto the pinhole of its intrinsics
+// first (lens_remap.hpp): the working frames are then pinhole frames. Frames are decoded ahead on a small thread pool so a run is
 // limited by the estimator, not by PNG decoding.
 #pragma once
 #include <condition_variable>
 #include <cstdint>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "lumavel/hal/camera.hpp"
+#include "lumavel/host/lens_remap.hpp"
 #include "lumavel/host/recording.hpp"
 
 namespace lumavel::host {
@@ -19,7 +23,8 @@ class FileStereoCamera : public hal::StereoCamera {
  public:
   // `rec` must outlive the camera. Throws RecordingError when the recording's
   // frames cannot be binned to width x height.
-  FileStereoCamera(const Recording& rec, int width, int height, int threads = 2, int lookahead = 16);
+  FileStereoCamera(const Recording& rec, int width, int height, int threads = 2, int lookahead = 16,
+                   bool undistort = false);
   ~FileStereoCamera() override;
   FileStereoCamera(const FileStereoCamera&) = delete;
   FileStereoCamera& operator=(const FileStereoCamera&) = delete;
@@ -31,6 +36,9 @@ class FileStereoCamera : public hal::StereoCamera {
   hal::CaptureStatus capture(hal::StereoImage& out) override;
 
   const std::string& error() const { return error_; }
+  // Pixels of camera c's pinhole view outside its sensor (a pincushion lens;
+  // they repeat the edge): 0 without undistortion or with a barrel lens.
+  int pinhole_outside(int c) const { return remap_[c] ? remap_[c]->outside() : 0; }
   size_t frames_delivered() const { return next_out_; }
   size_t frame_count() const { return rec_.frames.size(); }
 
@@ -46,6 +54,7 @@ class FileStereoCamera : public hal::StereoCamera {
 
   const Recording& rec_;
   uint16_t width_, height_;
+  std::unique_ptr<LensRemap> remap_[2];  // null: the frames are binned as they are
   std::vector<Slot> slots_;
   std::vector<std::thread> threads_;
   std::mutex mu_;

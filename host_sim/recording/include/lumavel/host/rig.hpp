@@ -3,6 +3,7 @@
 // orientation, baseline, frame period, gyro gap).
 #pragma once
 #include "lumavel/core/limits.hpp"
+#include "lumavel/host/lens_distortion.hpp"
 #include "lumavel/host/recording.hpp"
 #include "lumavel/host/settings.hpp"
 
@@ -19,6 +20,11 @@ constexpr int kMinWorkWidth = kMinColumns, kMaxWorkWidth = kMaxColumns, kMaxWork
 // The default working size for a recording: 40x30, or cam0's own size on an
 // axis where it is smaller (limits.hpp, default_columns/default_rows).
 WorkingSize default_working_size(const Recording& rec);
+
+// The sensor's radial-tangential distortion applies: a coefficient is not 0.
+bool lens_applies(const CameraSensor& c);
+// k1, k2, p1, p2 of the sensor (missing ones 0).
+LensDistortion lens_of(const CameraSensor& c);
 
 // Camera model of one camera at the working width. Throws RecordingError
 // naming the sensor.yaml when the optical axis is not horizontal.

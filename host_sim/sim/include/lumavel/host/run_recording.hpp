@@ -28,6 +28,12 @@ struct RunOptions {
   // Estimate as if the lenses were pinhole, whatever sensor.yaml says about
   // distortion: for comparisons, or for real data with doubtful coefficients.
   bool ignore_distortion = false;
+  // Correct the lens by per-column tables only (each column's yaw edges and
+  // elevation scale from the undistorted geometry), the frames binned as
+  // they are: what a device does with the lens tables that `lumavel-read
+  // config set` sends it (run --lens-columns). Weaker than undistorting the
+  // frames (docs/design.md, "Lens distortion"); for comparisons.
+  bool lens_by_columns = false;
   // Learn the gyro's zero-rate offset while the images show the rig still
   // (the default); off: the gyro is taken as is (run --no-gyro-offset-learning).
   bool gyro_offset_learning = true;
@@ -44,6 +50,7 @@ struct RunResult {
   size_t frames = 0;
   int width = 0, height = 0;      // working resolution used
   bool lens_distorted = false;    // sensor.yaml gives a distortion (corrected unless ignored)
+  int pinhole_outside_px = 0;     // undistorted frames: pixels (both cameras) outside the sensor, edge repeated
   double wall_s = 0;              // time spent in the frame loop
   double step_s = 0;              // of which in the engine (push_gyro and step): its compute time
 };
@@ -52,7 +59,8 @@ struct RunResult {
 extern const char* const kEstimatesHeader;
 
 // The settings `run_recording` uses for `rec`: derive_settings, with the
-// distortion tables dropped when options.ignore_distortion is set and the
+// distortion tables dropped when options.ignore_distortion is set or the
+// frames are undistorted (undistorts_frames), and the
 // gyro offset learning as options.gyro_offset_learning says. For the vo
 // engine only the working size is used (it is not checked against the core's
 // limits; the VO checks it against the sensors).
@@ -64,8 +72,12 @@ EstimatorSettings run_settings(const Recording& rec, const RunOptions& options);
 std::unique_ptr<Engine> make_run_engine(const Recording& rec, const RunOptions& options,
                                         const EstimatorSettings& settings);
 
-// Whether either camera has a column-edge table from a lens distortion.
-bool has_lens_distortion(const EstimatorSettings& s);
+// Whether lumavel's engines get undistorted frames: the default for a
+// recording whose sensor.yaml gives a lens distortion (the lens correction;
+// not with ignore_distortion, and never for the vo engine, which undistorts
+// its feature points itself). run_settings then gives pinhole cameras.
+bool undistorts_frames(const Recording& rec, const RunOptions& options);
+
 // Whether either camera's sensor.yaml gives non-zero distortion coefficients.
 bool has_lens_distortion(const Recording& rec);
 
@@ -77,8 +89,10 @@ RunResult run_recording(const Recording& rec, const RunOptions& options, std::FI
                         const std::function<void(size_t, size_t)>& progress = {});
 
 // Same with a given engine (built for `settings`), e.g. an instrumented one.
+// `undistort_frames`: resample each distorted camera's frames onto its
+// pinhole before binning (FileStereoCamera); `settings` must then be pinhole.
 RunResult run_recording(const Recording& rec, const EstimatorSettings& settings, Engine& engine,
                         int decode_threads, std::FILE* csv, const std::function<void(size_t, size_t)>& progress = {},
-                        const EstimateSink& sink = {});
+                        const EstimateSink& sink = {}, bool undistort_frames = false);
 
 }  // namespace lumavel::host
