@@ -36,6 +36,9 @@ struct SyntheticRig {
   double cam_gain[2] = {1, 1}, cam_black[2] = {0, 0}, vignetting[2] = {0, 0};
   double column_offset = 0;
   uint64_t seed = 1;
+  // A radial lens on both cameras (k1 < 0: barrel): pixel coordinates are
+  // the distorted ones, x_d = x (1 + k1 r^2 + k2 r^4) of the ray's pinhole x.
+  double k1 = 0, k2 = 0;
 
   double fu() const { return left_rig_fu(width, hfov); }
   double fv() const { return height / 2.0 / std::tan(vfov / 2); }
@@ -56,8 +59,9 @@ struct SyntheticRig {
         double acc = 0;
         for (int i = 0; i < S; ++i)
           for (int j = 0; j < S; ++j) {
-            const double xn = (u + (i + 0.5) / S - 0.5 - cu) / fx;
-            const double yn = (v + (j + 0.5) / S - 0.5 - cv) / fy;
+            double xn = (u + (i + 0.5) / S - 0.5 - cu) / fx;
+            double yn = (v + (j + 0.5) / S - 0.5 - cv) / fy;
+            undistort(xn, yn);
             const double dx = xn * std::sin(a) + std::cos(a), dy = -xn * std::cos(a) + std::sin(a);
             const double t = (wall - cy) / dy;
             acc += texture(cx + t * dx, -t * yn);
@@ -70,6 +74,17 @@ struct SyntheticRig {
         img[static_cast<size_t>(v * width + u)] = static_cast<uint8_t>(p);
       }
     return img;
+  }
+
+  // The lens's inverse by fixed-point iteration (monotonic lenses settle).
+  void undistort(double& x, double& y) const {
+    if (k1 == 0 && k2 == 0) return;
+    const double xd = x, yd = y;
+    for (int i = 0; i < 60; ++i) {
+      const double r2 = x * x + y * y, f = 1 + k1 * r2 + k2 * r2 * r2;
+      x = xd / f;
+      y = yd / f;
+    }
   }
 
   // The column's fixed offset: the same in every frame.

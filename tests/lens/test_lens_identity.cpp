@@ -1,0 +1,122 @@
+// The rotation identity (dF/dtheta from the derivative kernel equals the
+// finite difference of F under a rotation of the cameras, paper eq. 6) on
+// wide cameras through a barrel lens: the frames undistorted onto their
+// pinhole (LensRemap, what `run` does) turn like a pinhole camera's; read as
+// pinhole they do not. Sensor 160x120 binned to the product's 40x30, as a
+// board or `run` bins it.
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <vector>
+
+#include "lumavel/core/binning.hpp"
+#include "lumavel/core/estimator.hpp"
+#include "lumavel/host/lens_remap.hpp"
+#include "lumavel/host/settings.hpp"
+#include "synthetic_rig.hpp"
+// CppUTest last: its leak-detector macros redefine new.
+#include "CppUTest/TestHarness.h"
+
+using namespace lumavel;
+
+namespace {
+
+constexpr int kSensorW = 160, kSensorH = 120, kWorkW = 40, kWorkH = 30;
+
+enum class Lens { kNone, kUndistorted, kReadAsPinhole };
+
+// One camera's 40x30 working frame at a pose: rendered at the sensor's size
+// (through the rig's lens, if any), undistorted or not, binned.
+std::vector<uint8_t> working_frame(test::SyntheticRig& rig, int cam, const test::Pose2& p, Lens lens) {
+  std::vector<uint8_t> sensor = rig.render(cam, p);
+  if (lens == Lens::kUndistorted) {
+    std::vector<uint8_t> pinhole(sensor.size());
+    host::LensDistortion d;
+    d.k = {rig.k1, rig.k2, 0, 0};
+    host::LensRemap(kSensorW, kSensorH, {rig.fu(), rig.fv(), (kSensorW - 1) / 2.0, (kSensorH - 1) / 2.0}, d)
+        .apply(sensor.data(), pinhole.data());
+    sensor.swap(pinhole);
+  }
+  std::vector<uint8_t> work(static_cast<size_t>(kWorkW * kWorkH));
+  const ImageView view{sensor.data(), kSensorW, kSensorH, kSensorW};
+  CHECK(bin_area(view, work.data(), kWorkW, kWorkH));
+  return work;
+}
+
+StereoMeasurement measure_rotated(test::SyntheticRig& rig, const KernelBank& bank, double x, double theta, Lens lens) {
+  ColumnProfile prof[2];
+  for (int i = 0; i < 2; ++i) {
+    const double off = i == 1 ? rig.baseline / 2 : -rig.baseline / 2;
+    const test::Pose2 p{x + off - off * std::cos(theta), -off * std::sin(theta), theta};
+    const std::vector<uint8_t> img = working_frame(rig, i, p, lens);
+    column_profile(img.data(), kWorkW, kWorkH, kWorkW, bank.column_band(), prof[i]);
+  }
+  StereoMeasurement m;
+  stereo_measurement(prof[0], prof[1], bank, nullptr, m);
+  return m;
+}
+
+// Worst |dF/dtheta - its finite difference under a +-0.5 deg turn| over the
+// kernels and three places along the wall, relative to the rms of dF/dtheta.
+double worst_rotation_error(test::SyntheticRig& rig, const KernelBank& bank, Lens lens) {
+  const double delta = 0.5 * M_PI / 180;
+  double worst = 0;
+  for (double x : {0.0, 0.11, 0.37}) {
+    const StereoMeasurement m0 = measure_rotated(rig, bank, x, 0, lens);
+    const StereoMeasurement mp = measure_rotated(rig, bank, x, delta, lens);
+    const StereoMeasurement mm = measure_rotated(rig, bank, x, -delta, lens);
+    double rms = 0;
+    for (int k = 0; k < bank.count; ++k) rms += std::pow(std::ldexp(m0.rot[k], -20), 2);
+    rms = std::sqrt(rms / bank.count);
+    for (int k = 0; k < bank.count; ++k) {
+      const double fd = std::ldexp(mp.mid[k] - mm.mid[k], -28) / (2 * delta);
+      worst = std::fmax(worst, std::fabs(fd - std::ldexp(m0.rot[k], -20)) / rms);
+    }
+  }
+  return worst;
+}
+
+}  // namespace
+
+TEST_GROUP(LensIdentity){};
+
+// hfov 90 and 120 (4:3, square pixels), a barrel lens k1 -0.22, k2 0.05 (the
+// wide-lens scenes'; at hfov 120 it still folds nothing). Measured, worst
+// error in % of rms (pinhole / lens undistorted / lens read as pinhole):
+// hfov 90: 4.39 / 6.59 / 12.22 at 40x30 (4.42 / 5.42 / 6.18 at 80x60,
+// 3.76 / 3.11 / 4.81 at 160x120); hfov 120: 240 / 282 / 1037 at 40x30
+// (26 / 45 / 97 at 80x60, 19 / 43 / 87 at 160x120). The undistorted lens's
+// extra error at 40x30 is the periphery's resolution: a barrel lens gives it
+// fewer sensor pixels per pinhole pixel. At hfov 120 the identity fails for
+// the pinhole itself (40 columns of 3 degrees against this texture; issue 11's
+// 2 % is not met there). Bounds: at hfov 90 the undistorted lens within 3
+// points of the pinhole and read as pinhole at least 1.5 times as far off;
+// at hfov 120 read as pinhole at least twice as far off as undistorted.
+TEST(LensIdentity, ABarrelLensUndistortedTurnsLikeAPinhole) {
+  for (const double hfov_deg : {90.0, 120.0}) {
+    test::SyntheticRig rig;
+    rig.width = kSensorW;
+    rig.height = kSensorH;
+    rig.hfov = hfov_deg * M_PI / 180;
+    rig.vfov = 2 * std::atan(std::tan(rig.hfov / 2) * 3 / 4);  // square pixels
+    rig.supersample = 2;
+    rig.misalignment = 1.6 * M_PI / 180;
+    const host::EstimatorSettings s = test::left_rig_settings(kWorkW, kWorkH, rig.hfov, rig.baseline, rig.misalignment);
+    auto bank = std::make_unique<KernelBank>();
+    build_kernel_bank(host::to_fixed_config(s), *bank);
+    const double pinhole = worst_rotation_error(rig, *bank, Lens::kNone);
+    rig.k1 = -0.22;
+    rig.k2 = 0.05;
+    const double corrected = worst_rotation_error(rig, *bank, Lens::kUndistorted);
+    const double ignored = worst_rotation_error(rig, *bank, Lens::kReadAsPinhole);
+    std::printf("\n  hfov %.0f, 160x120 binned to %dx%d: worst |dF/dtheta - finite difference| = %.2f %% (pinhole), "
+                "%.2f %% (barrel lens, undistorted), %.2f %% (barrel lens read as pinhole) of rms\n",
+                hfov_deg, kWorkW, kWorkH, 100 * pinhole, 100 * corrected, 100 * ignored);
+    if (hfov_deg < 100) {
+      CHECK(std::fabs(corrected - pinhole) < 0.03);
+      CHECK(ignored > 1.5 * corrected);
+    } else {
+      CHECK(ignored > 2 * corrected);
+    }
+  }
+}
