@@ -127,7 +127,9 @@ std::string results_markdown(const std::vector<StudyResult>& results, const std:
     if (quick) body << "The full study: " << st.what << "\n\n**This quick run:** " << what_ran(sr) << ".\n\n";
     else body << st.what << "\n\nRan: " << what_ran(sr) << ".\n\n";
     if (st.metric == "lens") {
-      body << lens_table(sr);
+      std::vector<SectionTarget> lens_targets;
+      body << lens_table(sr, lens_targets);
+      for (const SectionTarget& t : lens_targets) targets.push_back({t.what, t.target, t.measured, t.met});
       continue;
     }
     if (st.metric == "gyro") {

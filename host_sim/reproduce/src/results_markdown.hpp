@@ -49,8 +49,9 @@ struct StudyResult {
 };
 
 // The lens study's table (study_lens.cpp): per scene and working size, the
-// undistorted, corrected and ignored runs side by side.
-std::string lens_table(const StudyResult& sr);
+// undistorted, corrected, column-table and ignored runs side by side; adds
+// issue 11's targets.
+std::string lens_table(const StudyResult& sr, std::vector<SectionTarget>& targets);
 
 // The gyro offset study's table (study_gyro_offset.cpp); adds its targets.
 std::string gyro_offset_table(const StudyResult& sr, std::vector<SectionTarget>& targets);

@@ -50,8 +50,8 @@ Section real_recording_section(const SectionContext& ctx) {
         "(Mueggler et al., IJRR 2017; licence CC BY-NC-SA 3.0, read from `--slider-data`, never copied). One "
         "camera and no gyro: `lumavel-sim import-slider` makes cam1 by time shift (the frames bracketing the "
         "position h ahead, blended by position; docs/real-recording.md says how and what that costs). "
-        "\"Corrected\" derives the column angles from sensor.yaml's distortion; \"ignored\" runs as if the "
-        "lens were pinhole (`run --ignore-distortion`).\n\n"
+        "\"Corrected\" undistorts each frame onto the pinhole of sensor.yaml's intrinsics before binning (the "
+        "default); \"ignored\" runs as if the lens were pinhole (`run --ignore-distortion`).\n\n"
         "Commands: `lumavel-sim import-slider DATA REC [--baseline H]`, then `lumavel-sim run REC [--engine "
         "float|vo] [--width 80 --height 60] [--ignore-distortion]`.\n\n";
   const std::string rec_dir = ctx.out + "/rec/slider_h002";
