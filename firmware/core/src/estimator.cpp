@@ -79,14 +79,18 @@ void Estimator::reset() {
 }
 
 Estimate Estimator::step(const FramePair& frames) {
+  ColumnProfile p[2];
+  if (configured_)
+    for (int i = 0; i < 2; ++i)
+      column_profile(frames.cam[i], cfg_.width, cfg_.height, frames.stride, bank_.column_band(), p[i]);
+  return step_profiles(frames.t_ns, p);
+}
+
+Estimate Estimator::step_profiles(uint64_t t_ns, ColumnProfile (&p)[2]) {
   Estimate est{};
-  est.t_ns = frames.t_ns;
+  est.t_ns = t_ns;
   est.frame_index = frame_index_++;
   if (!configured_) return est;
-
-  ColumnProfile p[2];
-  for (int i = 0; i < 2; ++i)
-    column_profile(frames.cam[i], cfg_.width, cfg_.height, frames.stride, bank_.column_band(), p[i]);
   const int next = have_prev_ ? 1 - cur_ : cur_;
   StereoMeasurement& m = meas_[next];
   // (on the sums as the cameras gave them: the mapping changes cam1's)
@@ -108,16 +112,16 @@ Estimate Estimator::step(const FramePair& frames) {
   if (m.saturated || uint64_t{m.clipped} * 1000 > uint64_t{cfg_.saturated_permille} * sampled)
     status |= kStatusSaturated;
 
-  const int64_t angle = gyro_.angle_at(frames.t_ns);
-  const int64_t since_prev_ns = have_prev_frame_ ? static_cast<int64_t>(frames.t_ns - prev_t_ns_) : 0;
+  const int64_t angle = gyro_.angle_at(t_ns);
+  const int64_t since_prev_ns = have_prev_frame_ ? static_cast<int64_t>(t_ns - prev_t_ns_) : 0;
   // Gyro angle of the interval with the learned offset removed.
   const int64_t dtheta = have_prev_frame_ ? angle - prev_gyro_angle_ - gyro_offset_.take_angle_over(since_prev_ns) : 0;
   heading_ = have_prev_frame_ ? heading_ + dtheta : angle;
   est.heading = fx::wrap_pi(heading_);
   // Every frame whose interval [previous frame, this frame] the samples do not cover.
   const uint64_t gyro_gap_ns = uint64_t{cfg_.gyro_gap_us} * 1000;
-  const uint64_t interval_start = have_prev_frame_ ? prev_t_ns_ : frames.t_ns;
-  if (gyro_.take_max_spacing() > gyro_gap_ns || !gyro_.covers(interval_start, frames.t_ns, gyro_gap_ns))
+  const uint64_t interval_start = have_prev_frame_ ? prev_t_ns_ : t_ns;
+  if (gyro_.take_max_spacing() > gyro_gap_ns || !gyro_.covers(interval_start, t_ns, gyro_gap_ns))
     status |= kStatusGyroGap;
   // A railed gyro sample: the interval's rotation is unknown, V is held over it.
   const bool gyro_saturated = gyro_.saturated_since(interval_start);
@@ -135,8 +139,8 @@ Estimate Estimator::step(const FramePair& frames) {
     have_prev_ = true;
     cur_ = next;
   } else {
-    const int64_t dt_ns = static_cast<int64_t>(frames.t_ns - prev_t_ns_);
-    if (frames.t_ns <= prev_t_ns_ || dt_ns > int64_t{cfg_.max_gap_us} * 1000) {
+    const int64_t dt_ns = static_cast<int64_t>(t_ns - prev_t_ns_);
+    if (t_ns <= prev_t_ns_ || dt_ns > int64_t{cfg_.max_gap_us} * 1000) {
       status |= kStatusFrameGap | kStatusRestarted | kStatusNoTof;
       observer_.restart();
       gyro_offset_.drop_reference();
@@ -158,7 +162,7 @@ Estimate Estimator::step(const FramePair& frames) {
       if (!o.updated && !gyro_saturated) status |= kStatusLowTexture;
       if (cfg_.options & kOptionGyroOffsetLearning) {
         if (status & (kStatusFrameGap | kStatusGyroGap)) gyro_offset_.drop_reference();
-        gyro_offset_.update({&m, frames.t_ns, angle, o.updated, cfg_.baseline, cfg_.still_distance, cfg_.still_min_us});
+        gyro_offset_.update({&m, t_ns, angle, o.updated, cfg_.baseline, cfg_.still_distance, cfg_.still_min_us});
         if (gyro_offset_.still()) status |= kStatusStill;
       }
       if (o.saturated) status |= kStatusSaturated;
@@ -173,7 +177,7 @@ Estimate Estimator::step(const FramePair& frames) {
       TofResult tof{};
       if (!gyro_saturated) {
         TofFrame& tf = tof_.push();
-        tf.t_ns = frames.t_ns;
+        tf.t_ns = t_ns;
         tf.heading = heading_;
         tf.y = y_;
         for (uint8_t k = 0; k < m.count; ++k)
@@ -199,7 +203,7 @@ Estimate Estimator::step(const FramePair& frames) {
       est.tof_ns = tof.ok ? tof.tau_ns : 0;
       distance_ = advance(distance_, fo.v, dt_ns, &distance_rem_);
 #if LUMAVEL_MATCH_FRAMES > 0
-      match_in = {frames.t_ns, heading_, {m.f[0], m.f[1]}, {m.r[0], m.r[1]}, &jac, m.count, fo.v, cfg_.baseline,
+      match_in = {t_ns, heading_, {m.f[0], m.f[1]}, {m.r[0], m.r[1]}, &jac, m.count, fo.v, cfg_.baseline,
                   match_max_rotation_,
                   o.updated && !gyro_saturated && !(status & (kStatusSaturated | kStatusGyroGap | kStatusFrameGap))};
 #endif
@@ -229,7 +233,7 @@ Estimate Estimator::step(const FramePair& frames) {
   (void)matching;
 #endif
   if (observer_.converging_now()) status |= kStatusConverging;
-  prev_t_ns_ = frames.t_ns;
+  prev_t_ns_ = t_ns;
   prev_gyro_angle_ = angle;
   have_prev_frame_ = true;
   est.v_differential = observer_.v();

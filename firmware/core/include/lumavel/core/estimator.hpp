@@ -4,6 +4,7 @@
 #pragma once
 #include <cstdint>
 
+#include "lumavel/core/column_profile.hpp"
 #include "lumavel/core/config.hpp"
 #include "lumavel/core/gyro_integrator.hpp"
 #include "lumavel/core/gyro_offset.hpp"
@@ -50,6 +51,12 @@ class Estimator {
   void push_gyro(uint64_t t_ns, RateQ24 rate_z) { gyro_.push(t_ns, rate_z); }
 
   Estimate step(const FramePair& frames);
+  // The same step from both cameras' column profiles, taken by the caller
+  // (column_profile, or ColumnStream as the rows arrive: no frame buffers);
+  // they must be of the configured width and height and band (bank().
+  // column_band()). step(frames) is column_profile then this. cam1's profile
+  // is mapped in place by the photometric match.
+  Estimate step_profiles(uint64_t t_ns, ColumnProfile (&p)[2]);
 
   const EstimatorConfig& config() const { return cfg_; }
   const KernelBank& bank() const { return bank_; }
