@@ -125,6 +125,35 @@ TEST(VoNoTexture, NeverStartsOnBlackOrFlatFrames) {
   }
 }
 
+// One image on both cameras (a driver fault), exactly or within a gray level
+// of noise: no stereo, so no scale; V must be held and flagged, not computed
+// from points triangulated at infinity (it read 2e17 m/s, then 650 m/s).
+TEST(VoNoTexture, OneImageOnBothCamerasIsHeldNotTriangulated) {
+  const Recording rec = rig();
+  std::unique_ptr<Engine> vo = make_vo_engine(rec, kW, kH);
+  uint64_t t = 1000000000ull;
+  for (int frame = 0; frame < 20; ++frame, t += 10000000ull) {
+    vo->push_gyro(t, 0.0);
+    const std::vector<uint8_t> a = textured(frame, 0);
+    const EngineEstimate e = vo->step(t, a.data(), a.data());
+    CHECK_EQUAL(kStatusNoStereo | kStatusLowTexture, e.status & (kStatusNoStereo | kStatusLowTexture));
+    DOUBLES_EQUAL(0, e.v, 0);
+  }
+  uint32_t s = 7;
+  for (int frame = 20; frame < 40; ++frame, t += 10000000ull) {
+    vo->push_gyro(t, 0.0);
+    const std::vector<uint8_t> a = textured(frame, 0);
+    std::vector<uint8_t> b = a;
+    for (uint8_t& p : b) {
+      s = s * 1664525u + 1013904223u;
+      p = static_cast<uint8_t>(p + (s >> 30) % 3 - 1);  // +-1 gray level
+    }
+    const EngineEstimate e = vo->step(t, a.data(), b.data());
+    CHECK(e.status & kStatusLowTexture);
+    CHECK(std::fabs(e.v) < 1e-9);
+  }
+}
+
 // yaml-cpp (the scenario loader) allocates statics on first use: not leaks
 // of the code under test (as in test_lens).
 TEST_GROUP(VoNoTextureRendered) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "lumavel/core/status.hpp"
 #include "lumavel/host/vo/translation_solver.hpp"
@@ -49,8 +50,10 @@ std::vector<StereoVo::Track> StereoVo::stereo_tracks(const std::vector<cv::Point
   const std::vector<cv::Point2d> n0 = geo_.normalise(0, a), n1 = geo_.normalise(1, b);
   std::vector<uint8_t> in_front;
   const std::vector<cv::Vec3d> X = geo_.triangulate(n0, n1, in_front);
+  const double max_depth = p_.max_depth_baselines * geo_.rig().baseline;
   for (size_t i = 0; i < a.size(); ++i)
-    if (in_front[i] && geo_.epipolar_px(n0[i], n1[i]) <= p_.max_epipolar_px) out.push_back({{a[i], b[i]}, X[i]});
+    if (in_front[i] && X[i][2] <= max_depth && geo_.epipolar_px(n0[i], n1[i]) <= p_.max_epipolar_px)
+      out.push_back({{a[i], b[i]}, X[i]});
   return out;
 }
 
@@ -139,14 +142,17 @@ VoEstimate StereoVo::step(uint64_t t_ns, const uint8_t* cam0, const uint8_t* cam
   heading_ += yaw;
 
   const bool dark = front_.mean_level(0) < p_.no_light_mean || front_.mean_level(1) < p_.no_light_mean;
+  // One image on both cameras (a driver fault): no stereo, as lumavel's engines flag it.
+  const size_t n = static_cast<size_t>(geo_.rig().width) * static_cast<size_t>(geo_.rig().height);
+  const bool same = !dark && std::memcmp(cam0, cam1, n) == 0;
   bool measured = false;
   if (forward && dt > 1.5 * geo_.rig().frame_period) e.status |= kStatusFrameGap;
   if (forward && dt > p_.max_gap) {
     e.status |= kStatusRestarted;
     started_ = false;  // V held; the next measurement re-initialises it
   }
-  if (dark) {
-    e.status |= kStatusNoLight | kStatusLowTexture;
+  if (dark || same) {
+    e.status |= (dark ? kStatusNoLight : kStatusNoStereo) | kStatusLowTexture;
     tracks_.clear();
   } else {
     if (forward && front_.has_previous()) {

@@ -40,6 +40,11 @@ struct VoParams {
   // within this (Sampson distance, working pixels): the calibration error of
   // a rig given in sensor.yaml plus matching noise.
   double max_epipolar_px = 1.0;
+  // Stereo depth is resolved to about 0.1 px of disparity: at 40x30 (f about
+  // 43 px) 430 baselines. A point triangulated beyond 1000 baselines (both
+  // cameras delivering one image, a flat far view) cannot fix the scale of a
+  // motion: it is dropped (with none left, V is held, low-texture bit).
+  double max_depth_baselines = 1000;
   // KLT stopping rule: a step below 0.001 px, at most 30 iterations. The
   // motion is only 0.1-0.6 px per frame at 40x30, so OpenCV's default
   // (0.01 px) is coarse: it cost the real slider at h = 8 cm and 40x30
