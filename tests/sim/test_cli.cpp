@@ -608,3 +608,48 @@ TEST(Cli, CalibrateSaysTheRecordingHasGaps) {
   rec();
   CHECK(sim("calibrate rec --quiet").err.find("gyro holes") == std::string::npos);
 }
+
+// Outputs never land on what the run reads (a CSV written over cam0's
+// data.csv destroyed the recording), nor two outputs on one file.
+TEST(Cli, OutputsIntoTheRecordingAreRefused) {
+  rec();
+  const std::string before = fixture::read_text(dir.path() + "/rec/mav0/cam0/data.csv");
+  Outcome r = sim("run rec --quiet -o rec/mav0/cam0/data.csv");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("rec/mav0/cam0/data.csv (-o): that is part of the recording being read", r.err.c_str());
+  CHECK(fixture::read_text(dir.path() + "/rec/mav0/cam0/data.csv") == before);
+  r = sim("run rec --quiet -o est.csv --plot rec/mav0/imu0/data.csv");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("(--plot): that is part of the recording being read", r.err.c_str());
+  r = sim("run rec --quiet -o same.svg --plot same.svg");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("same.svg: -o and --plot name the same file", r.err.c_str());
+  LONGS_EQUAL(0, sim("run rec --quiet -o rec/est.csv").code);  // beside mav0 is fine
+}
+
+// A report file that cannot be written ends the run with the cause (it was
+// counted as overruns and reported as sent).
+TEST(Cli, AReportFileThatCannotBeWrittenFailsTheRun) {
+  rec();
+  const Outcome r = sim("run rec --quiet -o est.csv --hid file:/dev/full");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("/dev/full: cannot write the report file: No space left on device", r.err.c_str());
+}
+
+// A --hid-config file that is not a stored configuration is said to be
+// ignored (a device silently keeps its defaults; the host user is told).
+TEST(Cli, AnInvalidHidConfigIsWarnedAbout) {
+  rec();
+  fixture::write_text(dir.path() + "/cfg", "garbage\n");
+  const Outcome r = sim("run rec --quiet -o est.csv --hid file:run.hidrep --hid-config cfg");
+  LONGS_EQUAL(0, r.code);
+  STRCMP_CONTAINS("cfg (--hid-config) is not a valid stored configuration", r.err.c_str());
+}
+
+// calibrate's --write-size is checked as a usage error naming it.
+TEST(Cli, CalibrateRefusesAWriteSizeOutsideTheLimits) {
+  rec();
+  const Outcome r = sim("calibrate rec --quiet --write c.cfg --write-size 8x30");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("--write-size 8x30: the working size must be 16..40 x 1..30", r.err.c_str());
+}

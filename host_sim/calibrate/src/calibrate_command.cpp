@@ -72,8 +72,21 @@ int calibrate(CalibrateArgs& a) {
     if (const std::string why = why_not_writable(a.write_path, "configuration file"); !why.empty())
       throw std::runtime_error(shown_path(a.write_path) + " (--write): " + why);
   const Recording rec = load_recording(a.rec);
+  if (!a.write_path.empty() && overwrites_recording(rec, a.write_path))
+    throw cli::UsageError(shown_path(a.write_path) + " (--write): that is part of the recording being read (" +
+                          shown_path(rec.root) + "); write the configuration elsewhere");
   WorkingSize write_size = default_working_size(rec);
-  if (!a.write_size.empty()) cli::parse_size(a.write_size, write_size.width, write_size.height);
+  if (!a.write_size.empty()) {
+    cli::parse_size(a.write_size, write_size.width, write_size.height);
+    const CameraSensor& s = rec.cam[0];
+    if (write_size.width < kMinWorkWidth || write_size.width > std::min(kMaxWorkWidth, s.width) ||
+        write_size.height < 1 || write_size.height > std::min(kMaxWorkHeight, s.height))
+      throw cli::UsageError("--write-size " + a.write_size + ": the working size must be " +
+                            std::to_string(kMinWorkWidth) + ".." + std::to_string(std::min(kMaxWorkWidth, s.width)) +
+                            " x 1.." + std::to_string(std::min(kMaxWorkHeight, s.height)) +
+                            " (the core's limits and this " + std::to_string(s.width) + "x" +
+                            std::to_string(s.height) + " sensor)");
+  }
   // The configuration --write will carry, checked by run's rules before the
   // registration (naming the file), not after it with a bare message.
   if (!a.write_path.empty()) check_rig_settings(rec, derive_settings(rec, write_size));

@@ -9,7 +9,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <memory>
 #include <stdexcept>
@@ -41,7 +43,13 @@ class FileLink : public hal::ReportLink {
     if (temp_.empty()) return;
     if (failed || !written || std::rename(temp_.c_str(), path_.c_str()) != 0) std::remove(temp_.c_str());
   }
-  bool send_input(const uint8_t* report, size_t len) override { return out_->write(report, len); }
+  // Each report is flushed: a write error (a full disk, /dev/full) ends the
+  // run with its cause instead of passing for an overrun or a silent loss.
+  bool send_input(const uint8_t* report, size_t len) override {
+    if (!out_->write(report, len) || !out_->flush())
+      throw HidLinkError(path_ + ": cannot write the report file: " + std::strerror(errno));
+    return true;
+  }
   void poll_features(FeatureHandler, void*) override {}  // nobody asks through a file
 
  private:

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 
 #include "lumavel/host/csv_table.hpp"
 #include "lumavel/host/image_io.hpp"
@@ -256,6 +257,22 @@ bool has_gaps(const GapReport& g) { return g.frame_gaps > 0 || g.gyro_holes > 0 
 double body_yaw_rate(const ImuSensor& imu, const ImuSample& s) {
   // Third row of R_BS times w_S.
   return imu.T_BS[8] * s.w[0] + imu.T_BS[9] * s.w[1] + imu.T_BS[10] * s.w[2];
+}
+
+bool overwrites_recording(const Recording& rec, const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path out = fs::weakly_canonical(path, ec);
+  if (ec) return false;
+  const fs::path root = fs::weakly_canonical(rec.root, ec);
+  if (!ec) {
+    const fs::path rel = out.lexically_relative(root);  // empty: unrelated; "..": outside
+    if (!rel.empty() && *rel.begin() != "..") return true;
+  }
+  for (const FramePairEntry& f : rec.frames)
+    for (const std::string& frame : f.path)
+      if (fs::weakly_canonical(frame, ec) == out && !ec) return true;
+  return false;
 }
 
 }  // namespace lumavel::host

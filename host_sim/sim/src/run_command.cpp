@@ -20,6 +20,7 @@
 #include "lumavel/host/progress.hpp"
 #include "lumavel/host/run_recording.hpp"
 #include "lumavel/host/track_plot.hpp"
+#include "lumavel/protocol/device_config.hpp"
 
 namespace lumavel::host {
 namespace {
@@ -223,6 +224,30 @@ int run(const RunArgs& a) {
   const Recording rec = load_recording(a.rec);
   if (!rec.groundtruth.empty() || !a.plot.empty())
     check_output(a.plot.empty() ? default_plot_path(a) : a.plot, "plot file", a.plot.empty() ? "the plot" : "--plot");
+  // No output may land on what the run reads, nor two outputs on one file.
+  {
+    std::vector<std::pair<std::string, const char*>> outs;
+    if (a.output != "-" && !a.output.empty()) outs.emplace_back(a.output, "-o");
+    if (!rec.groundtruth.empty() || !a.plot.empty())
+      outs.emplace_back(a.plot.empty() ? default_plot_path(a) : a.plot, a.plot.empty() ? "the plot" : "--plot");
+    if (a.hid.rfind("file:", 0) == 0) outs.emplace_back(a.hid.substr(5), "--hid file:");
+    if (!a.hid_config.empty()) outs.emplace_back(a.hid_config, "--hid-config");
+    namespace fs = std::filesystem;
+    for (size_t i = 0; i < outs.size(); ++i) {
+      if (overwrites_recording(rec, outs[i].first))
+        throw cli::UsageError(shown_path(outs[i].first) + " (" + outs[i].second +
+                              "): that is part of the recording being read (" + shown_path(rec.root) +
+                              "); write outputs elsewhere");
+      // (devices and FIFOs, such as /dev/null, may take several outputs)
+      std::error_code e1, e2;
+      const fs::file_status st = fs::status(outs[i].first, e1);
+      if (fs::exists(st) && !fs::is_regular_file(st)) continue;
+      for (size_t j = 0; j < i; ++j)
+        if (fs::weakly_canonical(outs[i].first, e1) == fs::weakly_canonical(outs[j].first, e2) && !e1 && !e2)
+          throw cli::UsageError(shown_path(outs[i].first) + ": " + outs[j].second + " and " + outs[i].second +
+                                " name the same file");
+    }
+  }
   const WorkingSize fallback = default_working_size(rec);
   options.size = {a.width > 0 ? a.width : fallback.width, a.height > 0 ? a.height : fallback.height};
   options.ignore_distortion = a.ignore_distortion;
@@ -235,7 +260,27 @@ int run(const RunArgs& a) {
   std::unique_ptr<HidSender> hid;
   if (!a.hid.empty()) {
     std::unique_ptr<hal::ConfigStore> store;
-    if (!a.hid_config.empty()) store = std::make_unique<FileConfigStore>(a.hid_config);
+    if (!a.hid_config.empty()) {
+      store = std::make_unique<FileConfigStore>(a.hid_config);
+      // A device keeps its defaults when its stored configuration is invalid;
+      // on the host that file is the user's: say so rather than ignore it.
+      if (path_present(a.hid_config)) {
+        uint8_t buf[protocol::kMaxStoredConfigSize];
+        const size_t n = store->load(buf, sizeof buf);
+        protocol::DeviceConfig c{};
+        protocol::LensTables lens{};
+        const protocol::ConfigField f =
+            n == 0 ? protocol::ConfigField::kOk : protocol::decode_stored_config(buf, n, c, lens);
+        if (n == 0 && std::filesystem::file_size(a.hid_config) > 0)
+          std::fprintf(stderr, "hid: warning: %s (--hid-config) is larger than a stored configuration (%zu B): "
+                               "ignored, the defaults are served until a configuration is set\n",
+                       shown_path(a.hid_config).c_str(), sizeof buf);
+        else if (f != protocol::ConfigField::kOk)
+          std::fprintf(stderr, "hid: warning: %s (--hid-config) is not a valid stored configuration (%s: %s): "
+                               "ignored, the defaults are served until a configuration is set\n",
+                       shown_path(a.hid_config).c_str(), protocol::to_string(f), protocol::rule_of(f));
+      }
+    }
     HidSenderOptions hid_options = hid_sender_options_for(a.hid);
     if (a.hid_wait_ms >= 0) hid_options.wait_ms = a.hid_wait_ms;
     hid = std::make_unique<HidSender>(open_host_link(a.hid), hid_options, std::move(store));

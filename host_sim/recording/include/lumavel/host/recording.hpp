@@ -65,6 +65,11 @@ bool has_gaps(const GapReport& g);
 // line or frame of the first problem.
 Recording load_recording(const std::string& dir);
 
+// Whether writing `path` would overwrite what the recording is read from: a
+// file inside its folder (root), or one of its frames (data.csv may name
+// frames elsewhere). Outputs there are refused before a run.
+bool overwrites_recording(const Recording& rec, const std::string& path);
+
 // Yaw rate about body z of one imu sample: (R_BS_imu * w_S).z, rad/s.
 double body_yaw_rate(const ImuSensor& imu, const ImuSample& s);
 
