@@ -544,3 +544,27 @@ TEST(BadInput, ElevationScaleNamesTheSensorYaml) {
                     "model)").c_str(),
                s.c_str());
 }
+
+// A second YAML document would be ignored without a word: refused, like a repeated key.
+TEST(BadInput, ASecondYamlDocumentIsRefused) {
+  const std::string y = m + "cam1/sensor.yaml";
+  fixture::write_text(y, fixture::read_text(y) + "---\nrate_hz: 5\n");
+  STRCMP_CONTAINS((y + ":").c_str(), load_error().c_str());
+  STRCMP_CONTAINS("a second YAML document (after '---')", load_error().c_str());
+}
+
+// Values are shown where they break a rule.
+TEST(BadInput, SensorYamlErrorsShowTheValue) {
+  const std::string y = m + "cam0/sensor.yaml";
+  fixture::replace_in(y, "rate_hz: ", "rate_hz: -");
+  STRCMP_CONTAINS("rate_hz = -", load_error().c_str());
+  STRCMP_CONTAINS("must be positive", load_error().c_str());
+}
+
+// A data.csv that is not text (a zero-filled or binary file of many MB) is
+// refused at its first line, without reading it whole into memory.
+TEST(BadInput, AnEndlessFirstLineIsRefusedAtOnce) {
+  const std::string c0 = m + "cam0/data.csv";
+  fixture::write_text(c0, std::string((1 << 24) + 100, '\0'));
+  STRCMP_CONTAINS((c0 + ":1: line is longer than 16777216 characters").c_str(), load_error().c_str());
+}

@@ -4,6 +4,7 @@
 
 #include "lumavel/host/lens_distortion.hpp"
 #include "lumavel/host/rig.hpp"
+#include "lumavel/host/rig_settings_check.hpp"
 #include "recording_fixture.hpp"
 // CppUTest last: its leak-detector macros redefine new.
 #include "CppUTest/TestHarness.h"
@@ -210,4 +211,24 @@ TEST(Rig, ElevationScalesOfABarrelLensSetTheBandWhereTheColumnsReachLeast) {
   CHECK(s[0] < s[20]);
   CHECK(s[39] < s[20]);
   for (size_t u = 0; u + 1 < 20; ++u) CHECK(s[u] <= s[u + 1] + 1e-12);  // rising towards the centre
+}
+
+// A sensor narrower than the core's 16 columns is refused naming its
+// resolution (it read "working width 10 is outside 16..160", no file, and
+// advised a smaller --width).
+TEST(Rig, ASensorNarrowerThanSixteenColumnsIsNamed) {
+  const Recording narrow = rig(pose(kLeftX, kLeftY, kLeftZ, 0), pose(kLeftX, kLeftY, kLeftZ, 0.08), 10, 8);
+  const std::string e = error_of([&] { derive_settings(narrow, {10, 8}); });
+  STRCMP_CONTAINS("/rec/mav0/cam0/sensor.yaml", e.c_str());
+  STRCMP_CONTAINS("resolution: the sensor is 10 columns wide; lumavel works at 16 columns or more", e.c_str());
+}
+
+// Cameras that look different ways push the kernels (centred between the
+// axes) out of a view: the error names both T_BS, not cam0's intrinsics.
+TEST(Rig, CamerasLookingDifferentWaysNameTheirPoses) {
+  const Recording apart = rig(pose(kLeftX, kLeftY, kLeftZ, 0), pose(kLeftX, kLeftY, kLeftZ, 0.08, 0.52));
+  const std::string e = error_of([&] { check_rig_settings(apart, derive_settings(apart, {40, 30})); });
+  STRCMP_CONTAINS("cam0/sensor.yaml", e.c_str());
+  STRCMP_CONTAINS("cam1/sensor.yaml", e.c_str());
+  STRCMP_CONTAINS("T_BS: the two cameras' optical axes are 29.8 degrees apart in yaw", e.c_str());
 }

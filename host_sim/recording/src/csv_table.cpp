@@ -68,13 +68,37 @@ std::string format_double(double v) {
   return std::string(buf, r.ptr);
 }
 
+namespace {
+
+// Lines longer than this are not rows of these tables (a timestamp and a few
+// numbers or a file name): a binary or damaged file, refused at once rather
+// than read whole into memory looking for its end.
+constexpr std::streamsize kMaxLineChars = std::streamsize{1} << 24;
+
+// The next line into `out` (its end of line removed); false at the end of the file.
+bool next_line(std::istream& in, std::vector<char>& buf, std::string& out, const std::string& path, long line) {
+  in.getline(buf.data(), static_cast<std::streamsize>(buf.size()));
+  if (in.bad()) throw recording_error_in(path, "read error");
+  if (in.fail()) {
+    if (in.eof() && in.gcount() == 0) return false;
+    throw recording_error_at(path, line, "line is longer than " + std::to_string(kMaxLineChars) +
+                                             " characters: not a row of this table (a binary or damaged file?)");
+  }
+  const std::streamsize n = in.eof() ? in.gcount() : in.gcount() - 1;  // without the '\n' read
+  out.assign(buf.data(), static_cast<size_t>(n));
+  return true;
+}
+
+}  // namespace
+
 void for_each_csv_row(const std::string& path, const std::vector<std::string>& columns,
                       const std::function<void(const CsvRow&)>& on_row) {
   if (const std::string why = why_not_a_file(path); !why.empty()) throw recording_error_in(path, why);
   std::ifstream in(path);
   if (!in) throw recording_error_in(path, std::string("cannot open: ") + std::strerror(errno));
   std::string text;
-  if (!std::getline(in, text)) throw recording_error_at(path, 1, "empty file: missing header line");
+  std::vector<char> buf(static_cast<size_t>(kMaxLineChars) + 1);
+  if (!next_line(in, buf, text, path, 1)) throw recording_error_at(path, 1, "empty file: missing header line");
   if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);  // UTF-8 byte order mark
   const std::vector<std::string> header = split(trim(text));
   if (header.empty() || header[0].empty() || header[0][0] != '#')
@@ -98,7 +122,7 @@ void for_each_csv_row(const std::string& path, const std::vector<std::string>& c
   uint64_t prev_t = 0;
   long prev_line = 0;
   long line = 1;
-  while (std::getline(in, text)) {
+  while (next_line(in, buf, text, path, line + 1)) {
     ++line;
     const std::string t = trim(text);
     if (t.empty()) continue;  // blank lines (a trailing newline) carry nothing
@@ -132,7 +156,6 @@ void for_each_csv_row(const std::string& path, const std::vector<std::string>& c
     row.fields.erase(row.fields.begin());
     on_row(row);
   }
-  if (in.bad()) throw recording_error_in(path, "read error");
 }
 
 std::vector<CsvRow> read_csv_table(const std::string& path, const std::vector<std::string>& columns) {

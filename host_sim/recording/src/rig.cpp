@@ -204,6 +204,12 @@ WorkingSize default_working_size(const Recording& rec) {
 EstimatorSettings derive_settings(const Recording& rec, WorkingSize size) {
   const std::string yaml0 = rec.root + "/" + layout::kCamDir[0] + "/sensor.yaml";
   if (rec.cam[0].height == 1) size.height = 1;  // line-scan sensor
+  for (int c = 0; c < 2; ++c)
+    if (rec.cam[c].width < kMinWorkWidth)
+      throw error_at_key(rec.root + "/" + layout::kCamDir[c] + "/sensor.yaml", rec.cam[c].line.resolution,
+                         "resolution: the sensor is " + std::to_string(rec.cam[c].width) +
+                             " columns wide; lumavel works at " + std::to_string(kMinWorkWidth) +
+                             " columns or more (the kernels need them)");
   if (size.width < kMinWorkWidth || size.width > kMaxWorkWidth)
     throw RecordingError("working width " + std::to_string(size.width) + " is outside " +
                          std::to_string(kMinWorkWidth) + ".." + std::to_string(kMaxWorkWidth));

@@ -1,5 +1,8 @@
 #include "lumavel/host/rig_settings_check.hpp"
 
+#include <cmath>
+#include <cstdio>
+
 #include "lumavel/host/recording_layout.hpp"
 
 namespace lumavel::host {
@@ -41,11 +44,36 @@ std::string setting_source(const Recording& rec, const std::string& setting) {
   return rec.root + ": the estimator configuration derived from it";
 }
 
+namespace {
+
+// A kernel outside a view: say which camera is to blame. The kernels are
+// centred between the two optical axes, so cameras that look different ways
+// (T_BS) push them out of both views; otherwise the narrower view is short.
+std::string kernels_source(const Recording& rec, const EstimatorSettings& s) {
+  auto file = [&](int i) { return rec.root + "/" + layout::kCamDir[i] + "/sensor.yaml"; };
+  auto at = [](const std::string& f, long line) { return line > 0 ? f + ":" + std::to_string(line) : f; };
+  const double apart = std::remainder(s.cam[1].axis_yaw - s.cam[0].axis_yaw, 2 * M_PI) * 180 / M_PI;
+  if (std::fabs(apart) > 10) {
+    char deg[32];
+    std::snprintf(deg, sizeof deg, "%.1f", std::fabs(apart));
+    return at(file(0), rec.cam[0].line.T_BS) + " and " + at(file(1), rec.cam[1].line.T_BS) +
+           ": T_BS: the two cameras' optical axes are " + deg +
+           " degrees apart in yaw; they must look the same way (a misalignment of a few degrees at most), and the "
+           "kernels, centred between them, fall outside a view";
+  }
+  const int narrow = s.cam[1].fu > s.cam[0].fu ? 1 : 0;  // the longer focal length sees less
+  return at(file(narrow), rec.cam[narrow].line.intrinsics) +
+         ": the field of view (resolution and intrinsics) sizes the kernels";
+}
+
+}  // namespace
+
 void check_rig_settings(const Recording& rec, const EstimatorSettings& s) {
   try {
     (void)to_fixed_config(s);
   } catch (const SettingsError& e) {
-    throw RecordingError(setting_source(rec, e.setting()) + ": " + e.what());
+    const std::string where = e.setting() == "kernels" ? kernels_source(rec, s) : setting_source(rec, e.setting());
+    throw RecordingError(where + ": " + e.what());
   }
 }
 

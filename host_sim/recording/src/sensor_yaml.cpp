@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -45,6 +46,13 @@ void check_unique_keys(const YAML::Node& map, const std::string& path, const std
 
 YAML::Node load_yaml(const std::string& path) {
   if (const std::string why = why_not_a_file(path); !why.empty()) throw recording_error_in(path, why);
+  // A sensor.yaml holds a few keys: a huge file is something else, refused before it is read.
+  constexpr std::uintmax_t kMaxYamlBytes = 1 << 20;
+  std::error_code size_error;
+  const std::uintmax_t bytes = std::filesystem::file_size(path, size_error);
+  if (!size_error && bytes > kMaxYamlBytes)
+    throw recording_error_in(path, "the file is " + std::to_string(bytes) + " bytes: a sensor.yaml holds a few keys (at "
+                                   "most " + std::to_string(kMaxYamlBytes) + " bytes are read)");
   std::ifstream in(path);
   if (!in) throw recording_error_in(path, std::string("cannot open: ") + std::strerror(errno));
   std::stringstream ss;
@@ -54,7 +62,12 @@ YAML::Node load_yaml(const std::string& path) {
   // them (keeping line numbers) so such files still load.
   if (text.rfind("%YAML:", 0) == 0) text[0] = '#';
   try {
-    YAML::Node root = YAML::Load(text);
+    const std::vector<YAML::Node> docs = YAML::LoadAll(text);
+    // A second document (after "---") would be ignored, silently: refused like a repeated key.
+    if (docs.size() > 1)
+      throw recording_error_at(path, line_of(docs[1]) > 0 ? line_of(docs[1]) : 1,
+                               "a second YAML document (after '---'): a sensor.yaml is one mapping of keys");
+    YAML::Node root = docs.empty() ? YAML::Node() : docs[0];
     if (root.IsNull())
       throw recording_error_in(path, "empty file: a sensor.yaml holds the sensor's keys (docs/recording-format.md)");
     if (!root.IsMap())
@@ -67,9 +80,14 @@ YAML::Node load_yaml(const std::string& path) {
   }
 }
 
-YAML::Node require(const YAML::Node& root, const char* key, const std::string& path) {
+// `parent`: the mapping's own key, for keys inside one (T_BS.data).
+YAML::Node require(const YAML::Node& root, const char* key, const std::string& path, const char* parent = nullptr) {
   YAML::Node n = root[key];
-  if (!n) throw recording_error_in(path, std::string("missing key '") + key + "'");
+  if (!n) {
+    const std::string what = std::string("missing key '") + (parent ? std::string(parent) + "." : "") + key + "'";
+    throw parent == nullptr || root.Mark().is_null() ? recording_error_in(path, what)
+                                                     : recording_error_at(path, line_of(root), what);
+  }
   return n;
 }
 
@@ -79,9 +97,11 @@ double number(const YAML::Node& n, const std::string& what, const std::string& p
     if (!n.IsScalar()) throw YAML::Exception(n.Mark(), "");
     v = n.as<double>();
   } catch (const YAML::Exception&) {
-    throw recording_error_at(path, line_of(n), what + ": expected a number");
+    throw recording_error_at(path, line_of(n), what + ": expected a number" +
+                                                   (n.IsScalar() ? ", got '" + n.Scalar() + "'" : std::string()));
   }
-  if (!std::isfinite(v)) throw recording_error_at(path, line_of(n), what + ": value is not finite");
+  if (!std::isfinite(v))
+    throw recording_error_at(path, line_of(n), what + ": value is not finite, got '" + n.Scalar() + "'");
   return v;
 }
 
@@ -111,10 +131,12 @@ void check_sensor_type(const YAML::Node& root, const char* want, const std::stri
 Pose read_pose(const YAML::Node& root, const std::string& path) {
   const YAML::Node t = require(root, "T_BS", path);
   if (!t.IsMap()) throw recording_error_at(path, line_of(t), "T_BS: expected {cols: 4, rows: 4, data: [16 numbers]}");
-  const double cols = number(require(t, "cols", path), "T_BS.cols", path);
-  const double rows = number(require(t, "rows", path), "T_BS.rows", path);
-  if (cols != 4.0 || rows != 4.0) throw recording_error_at(path, line_of(t), "T_BS must be 4x4");
-  const std::vector<double> d = numbers(require(t, "data", path), "T_BS.data", 16, path);
+  const double cols = number(require(t, "cols", path, "T_BS"), "T_BS.cols", path);
+  const double rows = number(require(t, "rows", path, "T_BS"), "T_BS.rows", path);
+  if (cols != 4.0 || rows != 4.0)
+    throw recording_error_at(path, line_of(t), "T_BS is " + format_double(rows) + "x" + format_double(cols) +
+                                                   " (rows x cols): it must be 4x4");
+  const std::vector<double> d = numbers(require(t, "data", path, "T_BS"), "T_BS.data", 16, path);
   // A pose: orthonormal rotation, last row 0 0 0 1. Loose tolerance: files
   // carry calibrations printed to a few digits.
   for (int i = 0; i < 3; ++i)
@@ -122,7 +144,10 @@ Pose read_pose(const YAML::Node& root, const std::string& path) {
       double dot = 0;
       for (int k = 0; k < 3; ++k) dot += d[static_cast<size_t>(4 * k + i)] * d[static_cast<size_t>(4 * k + j)];
       if (std::fabs(dot - (i == j ? 1.0 : 0.0)) > 1e-3)
-        throw recording_error_at(path, line_of(t), "T_BS: rotation part is not orthonormal");
+        throw recording_error_at(path, line_of(t), "T_BS: rotation part is not orthonormal: columns " +
+                                                       std::to_string(i) + " and " + std::to_string(j) +
+                                                       " have dot product " + format_double(dot) + ", not " +
+                                                       (i == j ? "1" : "0") + " (within 0.001)");
     }
   // Orthonormal with determinant -1 is a mirror: it flips the image's u
   // axis against the body's and gives an answer that is wrong, not refused.
@@ -135,7 +160,9 @@ Pose read_pose(const YAML::Node& root, const std::string& path) {
                                                    ": a reflection, not a rotation (check the sign of one axis)");
   }
   if (std::fabs(d[12]) + std::fabs(d[13]) + std::fabs(d[14]) > 1e-9 || std::fabs(d[15] - 1.0) > 1e-9)
-    throw recording_error_at(path, line_of(t), "T_BS: last row must be 0, 0, 0, 1");
+    throw recording_error_at(path, line_of(t), "T_BS: last row is " + format_double(d[12]) + ", " +
+                                                   format_double(d[13]) + ", " + format_double(d[14]) + ", " +
+                                                   format_double(d[15]) + ": it must be 0, 0, 0, 1");
   Pose p;
   for (size_t i = 0; i < 16; ++i) p[i] = d[i];
   return p;
@@ -204,11 +231,13 @@ CameraSensor read_camera_yaml(const std::string& path) {
   check_sensor_type(root, "camera", path);
   CameraSensor c;
   c.rate_hz = number(require(root, "rate_hz", path), "rate_hz", path);
-  if (c.rate_hz <= 0) throw recording_error_at(path, line_of(root["rate_hz"]), "rate_hz must be positive");
+  if (c.rate_hz <= 0)
+    throw recording_error_at(path, line_of(root["rate_hz"]), "rate_hz = " + format_double(c.rate_hz) + " must be positive");
   const YAML::Node res = require(root, "resolution", path);
   const std::vector<double> r = numbers(res, "resolution", 2, path);
   if (r[0] < 1 || r[1] < 1 || r[0] > 16384 || r[1] > 16384 || r[0] != std::floor(r[0]) || r[1] != std::floor(r[1]))
-    throw recording_error_at(path, line_of(res), "resolution: expected [width, height] in whole pixels");
+    throw recording_error_at(path, line_of(res), "resolution: [" + format_double(r[0]) + ", " + format_double(r[1]) +
+                                                     "]: expected [width, height] in whole pixels, 1..16384");
   c.line.resolution = line_of(res);
   c.width = static_cast<int>(r[0]);
   c.height = static_cast<int>(r[1]);
@@ -222,7 +251,9 @@ CameraSensor read_camera_yaml(const std::string& path) {
   c.fv = k[1];
   c.cu = k[2];
   c.cv = k[3];
-  if (c.fu <= 0 || c.fv <= 0) throw recording_error_at(path, line_of(in), "intrinsics: fu and fv must be positive");
+  if (c.fu <= 0 || c.fv <= 0)
+    throw recording_error_at(path, line_of(in), "intrinsics: fu = " + format_double(c.fu) + ", fv = " + format_double(c.fv) +
+                                                    ": fu and fv must be positive");
   check_intrinsics(c, path, line_of(in));
   const YAML::Node dm = require(root, "distortion_model", path);
   c.distortion_model = text_of(dm, "distortion_model", path);
@@ -244,7 +275,8 @@ ImuSensor read_imu_yaml(const std::string& path) {
   check_sensor_type(root, "imu", path);
   ImuSensor s;
   s.rate_hz = number(require(root, "rate_hz", path), "rate_hz", path);
-  if (s.rate_hz <= 0) throw recording_error_at(path, line_of(root["rate_hz"]), "rate_hz must be positive");
+  if (s.rate_hz <= 0)
+    throw recording_error_at(path, line_of(root["rate_hz"]), "rate_hz = " + format_double(s.rate_hz) + " must be positive");
   s.T_BS = read_pose(root, path);
   s.gyroscope_noise_density = optional_number(root, "gyroscope_noise_density", path);
   s.gyroscope_random_walk = optional_number(root, "gyroscope_random_walk", path);
