@@ -109,6 +109,7 @@ RunResult run_recording(const Recording& rec, const RunOptions& options, std::FI
   try {
     engine = make_run_engine(rec, options, settings);
   } catch (const SettingsError& e) {
+    check_rig_settings(rec, settings);  // names the sensor.yaml and key where it can
     throw RecordingError(setting_source(rec, e.setting()) + ": " + e.what());
   }
   RunResult r = run_recording(rec, settings, *engine, options.decode_threads, csv, progress, options.sink,
