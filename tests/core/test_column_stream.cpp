@@ -140,8 +140,7 @@ TEST(ColumnStream, TheEstimatorFromRowsIsTheEstimatorFromFrames) {
       for (uint16_t y = 0; y < kH; ++y) stream[i].add_row(img[i].data() + y * kW, y);
       CHECK(stream[i].complete());
     }
-    ColumnProfile p[2] = {stream[0].profile(), stream[1].profile()};
-    const Estimate b = rows.step_profiles(t, p);
+    const Estimate b = rows.step_profiles(t, stream[0].profile(), stream[1].profile());
     LONGS_EQUAL(a.v, b.v);
     LONGS_EQUAL(a.status, b.status);
     LONGS_EQUAL(a.heading, b.heading);

@@ -83,10 +83,10 @@ Estimate Estimator::step(const FramePair& frames) {
   if (configured_)
     for (int i = 0; i < 2; ++i)
       column_profile(frames.cam[i], cfg_.width, cfg_.height, frames.stride, bank_.column_band(), p[i]);
-  return step_profiles(frames.t_ns, p);
+  return step_profiles(frames.t_ns, p[0], p[1]);
 }
 
-Estimate Estimator::step_profiles(uint64_t t_ns, ColumnProfile (&p)[2]) {
+Estimate Estimator::step_profiles(uint64_t t_ns, ColumnProfile& p0, ColumnProfile& p1) {
   Estimate est{};
   est.t_ns = t_ns;
   est.frame_index = frame_index_++;
@@ -94,21 +94,21 @@ Estimate Estimator::step_profiles(uint64_t t_ns, ColumnProfile (&p)[2]) {
   const int next = have_prev_ ? 1 - cur_ : cur_;
   StereoMeasurement& m = meas_[next];
   // (on the sums as the cameras gave them: the mapping changes cam1's)
-  const bool no_stereo = same_textured_profile(p[0], p[1], bank_.column_band(), cfg_.height);
+  const bool no_stereo = same_textured_profile(p0, p1, bank_.column_band(), cfg_.height);
   const bool matching = (cfg_.options & kOptionPhotometricMatch) != 0;  // (validate(): only where built in)
 #if LUMAVEL_MATCH_FRAMES > 0
-  if (matching) match_.apply(p[1], bank_.column_band(), cfg_.height);
+  if (matching) match_.apply(p1, bank_.column_band(), cfg_.height);
 #endif
-  stereo_measurement(p[0], p[1], bank_, (cfg_.options & kOptionPhotometricBalance) ? &balance_ : nullptr, m);
+  stereo_measurement(p0, p1, bank_, (cfg_.options & kOptionPhotometricBalance) ? &balance_ : nullptr, m);
 #if LUMAVEL_MATCH_FRAMES > 0
   MatchJac jac;
-  if (matching) match_.jacobian(p[1], bank_.column_band(), cfg_.height, bank_.cam[1], bank_.count, m.f[1], jac);
+  if (matching) match_.jacobian(p1, bank_.column_band(), cfg_.height, bank_.cam[1], bank_.count, m.f[1], jac);
   MatchInput match_in{};
   match_in.usable = false;
 #endif
 
   uint16_t status = 0;
-  const uint32_t sampled = p[0].clip_sampled + p[1].clip_sampled;
+  const uint32_t sampled = p0.clip_sampled + p1.clip_sampled;
   if (m.saturated || uint64_t{m.clipped} * 1000 > uint64_t{cfg_.saturated_permille} * sampled)
     status |= kStatusSaturated;
 

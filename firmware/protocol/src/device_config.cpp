@@ -240,8 +240,8 @@ DeviceConfig defaults_for(uint16_t width, uint16_t height, config::FieldOfView f
   }
   c.orientation = 0;  // looking left, upright
   c.normaliser_sigma = static_cast<AngleQ28>(config::default_of<Quantity::kKernelSigma>);
-  c.kernel_count = static_cast<uint8_t>(config::kDefaultKernelCount);
-  for (int k = 0; k < config::kDefaultKernelCount; ++k)
+  c.kernel_count = static_cast<uint8_t>(config::kDefaultKernelsBuilt);
+  for (int k = 0; k < config::kDefaultKernelsBuilt; ++k)
     c.kernels[k] = KernelSetting{static_cast<uint8_t>(config::kDefaultKernels[k].order), fov.kernel_sigma[k]};
   c.tau_us = static_cast<uint32_t>(config::default_of<Quantity::kTau>);
   c.frame_period_us = static_cast<uint32_t>(config::default_of<Quantity::kFramePeriod>);

@@ -94,7 +94,8 @@ std::pair<std::string, std::string> offending(const EstimatorSettings& s, Config
 std::vector<KernelModel> default_kernels(double hfov) {
   const double half = hfov / 2;
   std::vector<KernelModel> out;
-  for (const config::DefaultKernel& k : config::kDefaultKernels) out.push_back({k.order, half / k.half_view_divisor});
+  for (int i = 0; i < config::kDefaultKernelsBuilt; ++i)
+    out.push_back({config::kDefaultKernels[i].order, half / config::kDefaultKernels[i].half_view_divisor});
   return out;
 }
 

@@ -56,7 +56,7 @@ class Estimator {
   // they must be of the configured width and height and band (bank().
   // column_band()). step(frames) is column_profile then this. cam1's profile
   // is mapped in place by the photometric match.
-  Estimate step_profiles(uint64_t t_ns, ColumnProfile (&p)[2]);
+  Estimate step_profiles(uint64_t t_ns, ColumnProfile& p0, ColumnProfile& p1);
 
   const EstimatorConfig& config() const { return cfg_; }
   const KernelBank& bank() const { return bank_; }

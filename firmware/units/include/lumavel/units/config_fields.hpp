@@ -163,6 +163,9 @@ struct DefaultKernel {
 constexpr DefaultKernel kDefaultKernels[] = {{1, 4.0}, {2, 4.0}, {1, 6.0}, {2, 6.0}};
 constexpr int kDefaultKernelCount = 4;
 static_assert(sizeof kDefaultKernels / sizeof kDefaultKernels[0] == kDefaultKernelCount, "count");
+// A build with fewer kernel slots (LUMAVEL_MAX_KERNELS, e.g. the 8 KiB part's
+// 3) takes the first ones of the default set.
+constexpr int kDefaultKernelsBuilt = kDefaultKernelCount < kMaxKernels ? kDefaultKernelCount : kMaxKernels;
 
 // A horizontal field of view as the defaults use it: the focal length at the
 // default working width (kDefaultColumns), Q16 px, and the default kernels'

@@ -76,7 +76,8 @@ class SettingsError : public std::invalid_argument {
 };
 
 // Default kernel bank for a field of view (radians, horizontal):
-// config::kDefaultKernels, the device's too (protocol::defaults_for).
+// config::kDefaultKernels (the first kDefaultKernelsBuilt), the device's too
+// (protocol::defaults_for).
 std::vector<KernelModel> default_kernels(double hfov);
 
 // The firmware configuration with the per-camera tables it points into
