@@ -1,5 +1,6 @@
 // Scenario parsing: a bad key or value is refused with FILE:LINE and the key.
 #include <CppUTest/TestHarness.h>
+#include <CppUTest/MemoryLeakWarningPlugin.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -46,7 +47,12 @@ bool contains(const std::string& s, const std::string& part) { return s.find(par
 
 }  // namespace
 
-TEST_GROUP(ScenarioErrors){};
+// yaml-cpp builds its scanner's static patterns on first use (a '-', say):
+// not leaks of the code under test, whichever test comes first.
+TEST_GROUP(ScenarioErrors) {
+  void setup() override { MemoryLeakWarningPlugin::saveAndDisableNewDeleteOverloads(); }
+  void teardown() override { MemoryLeakWarningPlugin::restoreNewDeleteOverloads(); }
+};
 
 TEST(ScenarioErrors, GoodScenarioParses) {
   const Scenario s = parse_scenario(kGood, "good.yaml");
@@ -171,4 +177,24 @@ TEST(ScenarioErrors, OverridesApply) {
   DOUBLES_EQUAL(1.25, s.camera.exposure_frames, 0);
   CHECK_EQUAL(99u, s.seed);
   DOUBLES_EQUAL(1.0, s.duration_s, 0);
+}
+
+// A key given twice, at any level, would be read once and the other value
+// ignored (a rendered recording byte for byte the first value's): refused.
+TEST(ScenarioErrors, AKeyGivenTwiceIsRefused) {
+  std::string e = error_of(replace(kGood, "  rate_hz: 60\n", "  rate_hz: 60\n  rate_hz: 30\n"));
+  STRCMP_CONTAINS("bad.yaml:5: key 'rate_hz' is given again (first at line 4)", e.c_str());
+  e = error_of(replace(kGood, "duration_s: 2\n", "duration_s: 2\nduration_s: 3\n"));
+  STRCMP_CONTAINS("bad.yaml:2: key 'duration_s' is given again", e.c_str());
+}
+
+// Frame times must stay inside the format's signed 64-bit nanoseconds and
+// after the recording's start: a start_ns near 2^63 and a negative
+// first_frame_s wrapped (the render passed, run refused its output).
+TEST(ScenarioErrors, TimesThatLeaveTheFormatAreRefused) {
+  std::string e = error_of(std::string("start_ns: 9223372036854775000\n") + kGood);
+  STRCMP_CONTAINS("bad.yaml:1: 'start_ns' must be a whole number of nanoseconds in 0..4e18", e.c_str());
+  e = error_of(replace(kGood, "  rate_hz: 60\n", "  rate_hz: 60\n  first_frame_s: -2\n"));
+  STRCMP_CONTAINS("bad.yaml:5:", e.c_str());
+  STRCMP_CONTAINS("first_frame_s", e.c_str());
 }

@@ -16,6 +16,7 @@
 #include <fstream>
 #include <initializer_list>
 #include <limits>
+#include <map>
 #include <sstream>
 #include <vector>
 
@@ -28,6 +29,26 @@ constexpr double kPi = 3.14159265358979323846;
 class Reader {
  public:
   explicit Reader(std::string file) : file_(std::move(file)) {}
+
+  // A key given twice in one map would be read once and the other value
+  // ignored, silently: refused, at every level (as sensor.yaml's keys are).
+  void check_unique_keys(const YAML::Node& n) const {
+    if (n.IsMap()) {
+      std::map<std::string, int> seen;
+      for (const auto& kv : n) {
+        if (!kv.first.IsScalar()) continue;
+        const std::string key = kv.first.Scalar();
+        const int line = kv.first.Mark().line + 1;
+        if (const auto at = seen.find(key); at != seen.end())
+          fail(kv.first, "key '" + key + "' is given again (first at line " + std::to_string(at->second) +
+                             "): one value per key");
+        seen.emplace(key, line);
+        check_unique_keys(kv.second);
+      }
+    } else if (n.IsSequence()) {
+      for (const auto& e : n) check_unique_keys(e);
+    }
+  }
 
   [[noreturn]] void fail(const YAML::Node& n, const std::string& what) const {
     std::ostringstream os;
@@ -218,7 +239,8 @@ void read_camera(const Reader& r, const YAML::Node& n, Scenario& s) {
   c.look = r.word(n, "look", "left", {"left", "right"}) == "left" ? LookSide::Left : LookSide::Right;
   c.cam1_ahead = r.word(n, "ahead", "cam1", {"cam0", "cam1"}) == "cam1";
   c.rig_yaw_deg = r.num(n, "rig_yaw_deg", c.rig_yaw_deg, -80, 80);
-  c.first_frame_s = r.num(n, "first_frame_s", c.first_frame_s, -kInf, kInf);
+  // (before 0, frame times would precede the recording's start: negative, or wrapped below start_ns)
+  c.first_frame_s = r.num(n, "first_frame_s", c.first_frame_s, 0, 1e6);
   s.pixel_noise_sigma = r.num(n, "noise_sigma", s.pixel_noise_sigma, 0, 255);
   if (const YAML::Node d = n["distortion"]) read_distortion(r, d, c);
   if (const YAML::Node p = n["photometric"]) read_photometric(r, p, c);
@@ -417,6 +439,7 @@ Scenario parse_scenario(const std::string& text, const std::string& name,
     throw ScenarioError(name + ":" + std::to_string(root.Mark().line + 1) +
                         ": a scenario must be a YAML map of KEY: VALUE lines (host_sim/scenarios/README.md)");
   try {
+    r.check_unique_keys(root);
     r.check_keys(root, "scenario", {"description", "duration_s", "seed", "start_ns",
                                     "groundtruth_rate_hz", "camera", "trajectory", "scene",
                                     "lighting", "imu", "drops"});
@@ -433,7 +456,11 @@ Scenario parse_scenario(const std::string& text, const std::string& name,
         v = n.as<long long>();
       } catch (const YAML::Exception&) {
       }
-      if (v < 0) r.fail(n, "'start_ns' must be a whole number of nanoseconds >= 0");
+      // Timestamps start_ns + up to 1e6 s stay within the format's signed 64-bit nanoseconds.
+      constexpr long long kMaxStartNs = 4000000000000000000LL;
+      if (v < 0 || v > kMaxStartNs)
+        r.fail(n, "'start_ns' must be a whole number of nanoseconds in 0..4e18 (timestamps must stay within signed "
+                  "64 bits), not '" + (n.IsScalar() ? n.Scalar() : std::string("?")) + "'");
       s.start_ns = v;
     }
     s.groundtruth_rate_hz = r.num(root, "groundtruth_rate_hz", 200, 1, 100000);
