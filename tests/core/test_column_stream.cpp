@@ -3,11 +3,13 @@
 // height the estimator takes; rows out of order leave the frame incomplete.
 #include <CppUTest/TestHarness.h>
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
 #include "lumavel/core/column_stream.hpp"
 #include "lumavel/core/estimator.hpp"
+#include "left_rig.hpp"
 
 using namespace lumavel;
 
@@ -86,29 +88,8 @@ TEST(ColumnStream, ARowOutOfOrderLeavesTheFrameIncomplete) {
 // gives from whole frames (step), estimate for estimate.
 TEST(ColumnStream, TheEstimatorFromRowsIsTheEstimatorFromFrames) {
   constexpr uint16_t kW = 40, kH = 30;
-  EstimatorConfig c{};
-  c.width = kW;
-  c.height = kH;
-  for (auto& cam : c.cam) {
-    cam.fu = 35 << 16;
-    cam.cu = (kW - 1) << 15;
-    cam.axis_yaw = -fx::kPiQ28 / 2;
-    cam.u_sign = -1;
-  }
-  c.baseline = (8 << 24) / 100;
-  c.normaliser = {0, (2 << 28) / 10};
-  c.kernels[0] = {1, (7 << 28) / 100};
-  c.kernels[1] = {2, (1 << 28) / 10};
-  c.kernel_count = 2;
-  c.tau_us = 100000;
-  c.frame_period_us = 16667;
-  c.max_gap_us = 500000;
-  c.gyro_gap_us = 50000;
-  c.low_texture = (2 << 28) / 1000;
-  c.saturated_permille = 50;
-  c.still_distance = (1 << 24) / 1000;  // 1 mm
-  c.still_min_us = 500000;
-  c.options = kOptionBaselineCorrection | kOptionGyroOffsetLearning;
+  // The tests' left-looking rig with the default settings (kernels, options).
+  const EstimatorConfig c = host::to_fixed_config(test::left_rig_settings(kW, kH, 50 * M_PI / 180, 0.08, 0));
   static Estimator whole, rows;  // static: a few KB each
   LONGS_EQUAL(static_cast<int>(ConfigError::kOk), static_cast<int>(whole.configure(c)));
   LONGS_EQUAL(static_cast<int>(ConfigError::kOk), static_cast<int>(rows.configure(c)));

@@ -10,6 +10,7 @@
 
 #include "lumavel/core/estimator.hpp"
 #include "lumavel/host/float_measurement.hpp"
+#include "rotation_identity.hpp"
 #include "synthetic_rig.hpp"
 
 using namespace lumavel;
@@ -33,24 +34,8 @@ StereoMeasurement measure_rotated(test::SyntheticRig& rig, const KernelBank& ban
   return m;
 }
 
-// Worst |dF/dtheta from the tables - its finite difference under a +-0.5 deg
-// turn| over kernels and three places along the wall, relative to the rms.
 double worst_rotation_error(test::SyntheticRig& rig, const KernelBank& bank) {
-  const double delta = 0.5 * M_PI / 180;
-  double worst = 0;
-  for (double x : {0.0, 0.11, 0.37}) {
-    const StereoMeasurement m0 = measure_rotated(rig, bank, x, 0);
-    const StereoMeasurement mp = measure_rotated(rig, bank, x, delta);
-    const StereoMeasurement mm = measure_rotated(rig, bank, x, -delta);
-    double rms = 0;
-    for (int k = 0; k < bank.count; ++k) rms += std::pow(std::ldexp(m0.rot[k], -20), 2);
-    rms = std::sqrt(rms / bank.count);
-    for (int k = 0; k < bank.count; ++k) {
-      const double fd = std::ldexp(mp.mid[k] - mm.mid[k], -28) / (2 * delta);
-      worst = std::fmax(worst, std::fabs(fd - std::ldexp(m0.rot[k], -20)) / rms);
-    }
-  }
-  return worst;
+  return test::worst_rotation_error(bank.count, [&](double x, double theta) { return measure_rotated(rig, bank, x, theta); });
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include "lumavel/core/estimator.hpp"
 #include "lumavel/host/lens_remap.hpp"
 #include "lumavel/host/settings.hpp"
+#include "rotation_identity.hpp"
 #include "synthetic_rig.hpp"
 // CppUTest last: its leak-detector macros redefine new.
 #include "CppUTest/TestHarness.h"
@@ -56,24 +57,9 @@ StereoMeasurement measure_rotated(test::SyntheticRig& rig, const KernelBank& ban
   return m;
 }
 
-// Worst |dF/dtheta - its finite difference under a +-0.5 deg turn| over the
-// kernels and three places along the wall, relative to the rms of dF/dtheta.
 double worst_rotation_error(test::SyntheticRig& rig, const KernelBank& bank, Lens lens) {
-  const double delta = 0.5 * M_PI / 180;
-  double worst = 0;
-  for (double x : {0.0, 0.11, 0.37}) {
-    const StereoMeasurement m0 = measure_rotated(rig, bank, x, 0, lens);
-    const StereoMeasurement mp = measure_rotated(rig, bank, x, delta, lens);
-    const StereoMeasurement mm = measure_rotated(rig, bank, x, -delta, lens);
-    double rms = 0;
-    for (int k = 0; k < bank.count; ++k) rms += std::pow(std::ldexp(m0.rot[k], -20), 2);
-    rms = std::sqrt(rms / bank.count);
-    for (int k = 0; k < bank.count; ++k) {
-      const double fd = std::ldexp(mp.mid[k] - mm.mid[k], -28) / (2 * delta);
-      worst = std::fmax(worst, std::fabs(fd - std::ldexp(m0.rot[k], -20)) / rms);
-    }
-  }
-  return worst;
+  return test::worst_rotation_error(bank.count,
+                                    [&](double x, double theta) { return measure_rotated(rig, bank, x, theta, lens); });
 }
 
 }  // namespace
