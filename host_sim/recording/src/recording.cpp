@@ -270,8 +270,11 @@ bool overwrites_recording(const Recording& rec, const std::string& path) {
     if (!rel.empty() && *rel.begin() != "..") return true;
   }
   for (const FramePairEntry& f : rec.frames)
-    for (const std::string& frame : f.path)
+    for (const std::string& frame : f.path) {
+      // Frames named inside the folder are covered above (and cost no lookup).
+      if (frame.rfind(rec.root, 0) == 0 && frame.find("..") == std::string::npos) continue;
       if (fs::weakly_canonical(frame, ec) == out && !ec) return true;
+    }
   return false;
 }
 
