@@ -75,18 +75,27 @@ namespace {
 // than read whole into memory looking for its end.
 constexpr std::streamsize kMaxLineChars = std::streamsize{1} << 24;
 
-// The next line into `out` (its end of line removed); false at the end of the file.
+// The next line into `out` (its end of line removed), read a chunk at a
+// time; false at the end of the file.
 bool next_line(std::istream& in, std::vector<char>& buf, std::string& out, const std::string& path, long line) {
-  in.getline(buf.data(), static_cast<std::streamsize>(buf.size()));
-  if (in.bad()) throw recording_error_in(path, "read error");
-  if (in.fail()) {
-    if (in.eof() && in.gcount() == 0) return false;
-    throw recording_error_at(path, line, "line is longer than " + std::to_string(kMaxLineChars) +
-                                             " characters: not a row of this table (a binary or damaged file?)");
+  out.clear();
+  for (;;) {
+    in.getline(buf.data(), static_cast<std::streamsize>(buf.size()));
+    if (in.bad()) throw recording_error_in(path, "read error");
+    const std::streamsize got = in.gcount();
+    const bool full = in.fail() && !in.eof() && got == static_cast<std::streamsize>(buf.size()) - 1;
+    if (in.fail() && !full && got == 0 && out.empty()) return false;  // the end of the file
+    const std::streamsize n = full || in.eof() ? got : got - 1;  // without the '\n' read
+    if (n > 0) out.append(buf.data(), static_cast<size_t>(n));
+    if (static_cast<std::streamsize>(out.size()) > kMaxLineChars)
+      throw recording_error_at(path, line, "line is longer than " + std::to_string(kMaxLineChars) +
+                                               " characters: not a row of this table (a binary or damaged file?)");
+    if (!full) {
+      if (in.fail()) in.clear(std::ios::eofbit);  // the last line, read: the next call ends
+      return true;
+    }
+    in.clear();  // the chunk filled up before the line's end: more to come
   }
-  const std::streamsize n = in.eof() ? in.gcount() : in.gcount() - 1;  // without the '\n' read
-  out.assign(buf.data(), static_cast<size_t>(n));
-  return true;
 }
 
 }  // namespace
@@ -97,7 +106,7 @@ void for_each_csv_row(const std::string& path, const std::vector<std::string>& c
   std::ifstream in(path);
   if (!in) throw recording_error_in(path, std::string("cannot open: ") + std::strerror(errno));
   std::string text;
-  std::vector<char> buf(static_cast<size_t>(kMaxLineChars) + 1);
+  std::vector<char> buf(4096);
   if (!next_line(in, buf, text, path, 1)) throw recording_error_at(path, 1, "empty file: missing header line");
   if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);  // UTF-8 byte order mark
   const std::vector<std::string> header = split(trim(text));

@@ -2,6 +2,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -62,12 +63,26 @@ YAML::Node load_yaml(const std::string& path) {
   // them (keeping line numbers) so such files still load.
   if (text.rfind("%YAML:", 0) == 0) text[0] = '#';
   try {
-    const std::vector<YAML::Node> docs = YAML::LoadAll(text);
-    // A second document (after "---") would be ignored, silently: refused like a repeated key.
-    if (docs.size() > 1)
-      throw recording_error_at(path, line_of(docs[1]) > 0 ? line_of(docs[1]) : 1,
-                               "a second YAML document (after '---'): a sensor.yaml is one mapping of keys");
-    YAML::Node root = docs.empty() ? YAML::Node() : docs[0];
+    // A second document (a '---' line after some content) would be ignored,
+    // silently: refused like a repeated key. (Scanned in the text: yaml-cpp's
+    // LoadAll can loop on malformed input.)
+    {
+      bool content = false;
+      long n = 0;
+      for (size_t at = 0; at < text.size();) {
+        const size_t end = std::min(text.find('\n', at), text.size());
+        const std::string l = text.substr(at, end - at);
+        ++n;
+        if (l.rfind("---", 0) == 0 && (l.size() == 3 || l[3] == ' ' || l[3] == '\r' || l[3] == '\t')) {
+          if (content)
+            throw recording_error_at(path, n, "a second YAML document (after '---'): a sensor.yaml is one mapping of keys");
+        } else if (l.find_first_not_of(" \t\r") != std::string::npos && l[l.find_first_not_of(" \t\r")] != '#') {
+          content = true;
+        }
+        at = end + 1;
+      }
+    }
+    YAML::Node root = YAML::Load(text);
     if (root.IsNull())
       throw recording_error_in(path, "empty file: a sensor.yaml holds the sensor's keys (docs/recording-format.md)");
     if (!root.IsMap())
