@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cstdlib>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "lumavel/host/run_recording.hpp"
 #include "recording_fixture.hpp"
@@ -652,4 +654,38 @@ TEST(Cli, CalibrateRefusesAWriteSizeOutsideTheLimits) {
   const Outcome r = sim("calibrate rec --quiet --write c.cfg --write-size 8x30");
   LONGS_EQUAL(2, r.code);
   STRCMP_CONTAINS("--write-size 8x30: the working size must be 16..40 x 1..30", r.err.c_str());
+}
+
+// An empty path (an unset shell variable) is a usage error, not the default
+// or standard output.
+TEST(Cli, AnEmptyPathIsRefusedNamingTheOption) {
+  rec();
+  for (const auto& [args, option] : std::vector<std::pair<std::string, std::string>>{
+           {"run rec -o ''", "--output"},
+           {"run rec --plot ''", "--plot"},
+           {"run ''", "REC"},
+           {"calibrate rec --write ''", "--write"},
+           {"render '' out", "SCENARIO"},
+           {"import-slider '' out", "DATA_DIR"},
+           {"reproduce --out ''", "--out"},
+           {"reproduce --doc ''", "--doc"}}) {
+    const Outcome r = sim(args);
+    LONGS_EQUAL_TEXT(2, r.code, args.c_str());
+    STRCMP_CONTAINS((option + ": needs a path, not an empty one").c_str(), r.err.c_str());
+  }
+  CHECK(!exists(dir.path() + "/rec_estimates.svg"));
+}
+
+// A scenario that loads but renders a recording run refuses (here no
+// baseline) fails the render with run's reason, naming the sensor.yaml.
+TEST(Cli, RenderRefusesARecordingThatRunWouldRefuse) {
+  std::string s = fixture::read_text(LUMAVEL_SOURCE_DIR "/host_sim/scenarios/paper_sim_aligned.yaml");
+  const size_t at = s.find("baseline_m:");
+  CHECK(at != std::string::npos);
+  s.replace(at, s.find('\n', at) - at, "baseline_m: 0");
+  fixture::write_text(dir.path() + "/b0.yaml", s);
+  const Outcome r = sim("render b0.yaml out --resolution 40x30 --duration 0.2 -q");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("out/mav0 was written, but lumavel-sim run refuses it: out/mav0/cam0/sensor.yaml:", r.err.c_str());
+  STRCMP_CONTAINS("(no baseline)", r.err.c_str());
 }

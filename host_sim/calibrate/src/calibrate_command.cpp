@@ -158,7 +158,7 @@ void add_calibrate_command(cli::Tool& tool) {
   auto a = std::make_shared<CalibrateArgs>();
   a->opt.width = kRegistrationColumns;
   CLI::App* c = tool.command("calibrate", kDescription, [a] { return calibrate(*a); });
-  c->add_option("REC", a->rec, "the recording folder (REC or REC/mav0)")->required()->type_name("");
+  c->add_option("REC", a->rec, "the recording folder (REC or REC/mav0)")->required()->type_name("")->check(cli::path_name());
   c->add_option("--width", a->opt.width,
                 "working columns for the registration, 16..160 (default " +
                     std::to_string(kRegistrationColumns) + ", or the\nsensor's width when smaller)")
@@ -172,7 +172,8 @@ void add_calibrate_command(cli::Tool& tool) {
                                      "with the calibrated misalignment and the lens tables from\n"
                                      "sensor.yaml, as KEY=VALUE lines for\n"
                                      "`lumavel-read config set --file FILE`")
-                           ->type_name("FILE");
+                           ->type_name("FILE")
+                           ->check(cli::path_name());
   c->add_option("--write-size", a->write_size,
                 "working resolution of that configuration (default 40x30, or\n"
                 "the sensor's size when smaller; a line-scan recording gets\n"

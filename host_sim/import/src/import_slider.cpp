@@ -189,8 +189,8 @@ void add_import_slider_command(cli::Tool& tool) {
       });
   c->add_option("DATA_DIR", a->data, "the dataset folder (images.txt, groundtruth.txt, calib.txt)")
       ->required()
-      ->type_name("");
-  c->add_option("OUT_REC", a->out, "the recording folder to write")->required()->type_name("");
+      ->type_name("")->check(cli::path_name());
+  c->add_option("OUT_REC", a->out, "the recording folder to write")->required()->type_name("")->check(cli::path_name());
   char baseline_help[96];
   std::snprintf(baseline_help, sizeof baseline_help, "h in metres, cam1 ahead of cam0, (0, 1] (default %g)",
                 kDefaultSliderBaseline);

@@ -9,6 +9,9 @@
 #include <string>
 
 #include "lumavel/host/path_check.hpp"
+#include "lumavel/host/recording.hpp"
+#include "lumavel/host/rig.hpp"
+#include "lumavel/host/rig_settings_check.hpp"
 #include "lumavel/host/render/recording_renderer.hpp"
 #include "lumavel/host/render/photometric_presets.hpp"
 #include "lumavel/host/render/scenario_loader.hpp"
@@ -31,6 +34,18 @@ struct RenderArgs {
   render::RenderOptions opt;
   bool force = false, quiet = false;
 };
+
+// A scenario can be valid and still give a recording that `run` refuses
+// (no baseline, one row of 40 at the scenario's field of view, every frame
+// dropped, no gyro sample in a nanosecond): said here, with run's reason.
+void check_runnable(const std::string& out) {
+  try {
+    const Recording rec = load_recording(out);
+    check_rig_settings(rec, derive_settings(rec, default_working_size(rec)));
+  } catch (const std::exception& e) {
+    throw std::runtime_error(out + "/mav0 was written, but lumavel-sim run refuses it: " + e.what());
+  }
+}
 
 int render_to_folder(RenderArgs& a) {
   if (!a.resolution.empty()) cli::parse_size(a.resolution, a.ov.width, a.ov.height);
@@ -60,6 +75,7 @@ int render_to_folder(RenderArgs& a) {
         mav0.c_str(), r.frames - r.dropped, r.dropped, s.camera.width, s.camera.height, r.imu_samples,
         r.groundtruth_samples, r.max_subframes, bg.c_str(), r.seconds);
   }
+  check_runnable(a.out);
   return 0;
 }
 
@@ -68,8 +84,8 @@ int render_to_folder(RenderArgs& a) {
 void add_render_command(cli::Tool& tool) {
   auto a = std::make_shared<RenderArgs>();
   CLI::App* c = tool.command("render", kDescription, [a] { return render_to_folder(*a); });
-  c->add_option("SCENARIO", a->scenario, "the scenario file (.yaml)")->required()->type_name("");
-  c->add_option("OUT", a->out, "the recording folder to write (OUT/mav0)")->required()->type_name("");
+  c->add_option("SCENARIO", a->scenario, "the scenario file (.yaml)")->required()->type_name("")->check(cli::path_name());
+  c->add_option("OUT", a->out, "the recording folder to write (OUT/mav0)")->required()->type_name("")->check(cli::path_name());
   c->add_option("--resolution", a->resolution, "camera resolution (the field of view is kept), e.g. 40x30")
       ->type_name("WxH")
       ->check(cli::size_wxh(8192, 8192));

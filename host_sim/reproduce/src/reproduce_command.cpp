@@ -333,14 +333,17 @@ void add_reproduce_command(cli::Tool& tool) {
   c->add_option("--out", o->out,
                 "recordings and plots (default out/reproduce in the source\n"
                 "tree; with --quick out/reproduce-quick)")
-      ->type_name("DIR");
+      ->type_name("DIR")
+      ->check(cli::path_name());
   c->add_option("--doc", o->doc,
                 "results page (default docs/results.md in the source tree,\n"
                 "plots in docs/results/; with --quick or --only\n"
                 "OUT/results.md)")
-      ->type_name("FILE");
+      ->type_name("FILE")
+      ->check(cli::path_name());
   c->add_option("--scenarios", o->scenarios, "scenario folder (default the source tree's\nhost_sim/scenarios)")
-      ->type_name("DIR");
+      ->type_name("DIR")
+      ->check(cli::path_name());
   c->add_option("--threads", o->threads, "render threads, 1..64 (default 2)")
       ->type_name("N")
       ->check(cli::whole_number_in(1, 64));
@@ -348,7 +351,8 @@ void add_reproduce_command(cli::Tool& tool) {
                 "the slider_depth dataset (default ../shared/data/slider_depth\n"
                 "next to the source tree; its section is skipped when it is\n"
                 "missing)")
-      ->type_name("DIR");
+      ->type_name("DIR")
+      ->check(cli::path_name());
 }
 
 }  // namespace lumavel::host

@@ -362,7 +362,7 @@ int run(const RunArgs& a) {
 void add_run_command(cli::Tool& tool) {
   auto a = std::make_shared<RunArgs>();
   CLI::App* c = tool.command("run", kRunDescription, [a] { return run(*a); });
-  c->add_option("REC", a->rec, "the recording folder (REC or REC/mav0)")->required()->type_name("");
+  c->add_option("REC", a->rec, "the recording folder (REC or REC/mav0)")->required()->type_name("")->check(cli::path_name());
   c->add_option("--engine", a->engine,
                 "estimator engine: the firmware's fixed-point core (default),\n"
                 "the double-precision reference, or vo: a conventional\n"
@@ -373,7 +373,8 @@ void add_run_command(cli::Tool& tool) {
       ->type_name("fixed|float|vo")
       ->check(engine_kind());
   c->add_option("-o,--output", a->output, "write the CSV to FILE instead of standard output ('-')")
-      ->type_name("FILE");
+      ->type_name("FILE")
+      ->check(cli::path_name());
   c->add_option("--width", a->width,
                 "working resolution width, " + std::to_string(kMinWorkWidth) + ".." +
                     std::to_string(kMaxWorkWidth) + " (default " + std::to_string(kDefaultColumns) +
@@ -423,7 +424,8 @@ void add_run_command(cli::Tool& tool) {
                 "or in the current folder when the output is standard output\n"
                 "or a device such as /dev/null); written when the recording has\n"
                 "ground truth or when --plot is given")
-      ->type_name("FILE.svg");
+      ->type_name("FILE.svg")
+      ->check(cli::path_name());
   c->add_option("--hid", a->hid,
                                    "also send every estimate as a USB HID input report through\n"
                                    "SPEC: uhid, hidg:/dev/hidgN or file:PATH (docs/usb-hid.md)")
@@ -436,7 +438,7 @@ void add_run_command(cli::Tool& tool) {
                 "engine keeps the recording's configuration. Without it,\n"
                 "sets are refused")
       ->type_name("FILE")
-      ->check(CLI::Validator([](std::string& s) { return s.empty() ? std::string("needs a file name") : std::string(); }, ""));
+      ->check(cli::path_name());
   c->add_option("--hid-wait-ms", a->hid_wait_ms,
                 "with --hid: how long a report waits for the host to take it\n"
                 "before it is dropped and counted as an overrun, 0..600000\n"

@@ -45,7 +45,8 @@ cli::Action with_device_errors(const std::string& command, std::function<int()> 
 
 void add_stream_options(CLI::App* c, StreamOptions& o, bool live_options) {
   c->add_option("-o,--output", o.output, "write the CSV to FILE (nothing is left behind if it\ncannot be written)")
-      ->type_name("FILE");
+      ->type_name("FILE")
+      ->check(cli::path_name());
   c->add_option("-n,--count", o.count, "stop after N measurements")
       ->type_name("N")
       ->check(cli::whole_number_in(0, 1000000000000LL));
@@ -62,7 +63,8 @@ void add_stream_options(CLI::App* c, StreamOptions& o, bool live_options) {
 
 void add_config_input(CLI::App* c, ConfigInput& in) {
   c->add_option("--file", in.files, "KEY=VALUE lines as `config get` prints them (# comments\nallowed); may be repeated")
-      ->type_name("FILE");
+      ->type_name("FILE")
+      ->check(cli::path_name());
   c->add_option("SETTINGS", in.settings, "KEY=VALUE settings, after the files")->type_name("KEY=VALUE");
 }
 
@@ -79,7 +81,7 @@ int main(int argc, char** argv) {
                  "hidapi backend (default hidraw; libusb detaches the kernel\ndriver and reads the USB device directly)")
       ->type_name("hidraw|libusb")
       ->check(cli::one_of({"hidraw", "libusb"}));
-  app.add_option("--device", common->device, "a path from `list` (default: the first device)")->type_name("PATH");
+  app.add_option("--device", common->device, "a path from `list` (default: the first device)")->type_name("PATH")->check(cli::path_name());
 
   tool.command("list",
                "lumavel devices seen by the backend\n\n"
@@ -145,7 +147,7 @@ int main(int argc, char** argv) {
       "same CSV as `stream`. Malformed reports are named (record, byte offset) on\n"
       "stderr and make the exit status 1; the others are still written.",
       [replay, replay_file] { return cmd_replay(*replay_file, *replay); });
-  r->add_option("FILE", *replay_file, "the report file")->required()->type_name("");
+  r->add_option("FILE", *replay_file, "the report file")->required()->type_name("")->check(cli::path_name());
   add_stream_options(r, *replay, false);
 
   return tool.run(argc, argv);

@@ -179,6 +179,11 @@ CLI::Validator positive_number_up_to(double hi) {
       "");
 }
 
+CLI::Validator path_name() {
+  return CLI::Validator([](std::string& s) { return s.empty() ? std::string("needs a path, not an empty one") : std::string(); },
+                        "");
+}
+
 CLI::Validator one_of(const std::vector<std::string>& words) {
   return CLI::Validator(
       [words](std::string& s) -> std::string {

@@ -72,6 +72,8 @@ CLI::Validator whole_number_in(long long lo, long long hi, const std::string& no
 CLI::Validator number_in(double lo, double hi);            // [lo, hi]
 CLI::Validator positive_number_up_to(double hi);           // (0, hi]
 CLI::Validator one_of(const std::vector<std::string>& words);
+// A file or folder name: not empty (an empty shell variable must not mean the default).
+CLI::Validator path_name();
 // "WxH" with W in 1..max_w and H in 1..max_h.
 CLI::Validator size_wxh(int max_w, int max_h);
 // Parses "WxH" (both positive); false when the text is not of that form.
