@@ -124,11 +124,44 @@ TEST(BadInput, MissingImageFile) {
   STRCMP_CONTAINS("does not exist", e.c_str());
 }
 
+// A name that leaves cam*/data/ would read any file as a frame (here the
+// other camera's frame, which decodes: it would pass unnoticed).
+TEST(BadInput, FrameNameOutsideTheDataFolder) {
+  const std::string other = "../../cam1/data/" + std::to_string(fixture::frame_time(o, 2)) + ".png";
+  const std::string csv = m + "cam0/data.csv", intact = fixture::read_text(csv);
+  for (const std::string& name : {other, std::string("/etc/hostname"), std::string("a/../../x.png")}) {
+    fixture::write_text(csv, intact);
+    fixture::set_field(csv, 4, 1, name);
+    const std::string e = load_error();
+    STRCMP_CONTAINS((m + "cam0/data.csv:4: filename '" + name + "' leaves cam0/data/").c_str(), e.c_str());
+  }
+  fixture::write_text(csv, intact);
+  fixture::set_field(csv, 4, 1, "..x.png");  // a dotted name stays inside: only missing
+  STRCMP_CONTAINS("cam0/data.csv:4: image file", load_error().c_str());
+}
+
+// Old Mac line ends (CR only) make the file one line: said as such, not
+// as a header with a strange last column.
+TEST(BadInput, CarriageReturnOnlyLineEnds) {
+  std::string t = fixture::read_text(m + "imu0/data.csv");
+  for (char& c : t)
+    if (c == '\n') c = '\r';
+  fixture::write_text(m + "imu0/data.csv", t);
+  STRCMP_CONTAINS((m + "imu0/data.csv:1: a carriage return (CR) inside the line").c_str(), load_error().c_str());
+}
+
 TEST(BadInput, NanInGyro) {
   fixture::set_line(m + "imu0/data.csv", 12, "1010000000,0.001,-0.002,nan,0.1,0,9.81");
   const std::string e = load_error();
   STRCMP_CONTAINS((m + "imu0/data.csv:12: column 'w_RS_S_z [rad s^-1]'").c_str(), e.c_str());
   STRCMP_CONTAINS("not finite", e.c_str());
+}
+
+TEST(BadInput, NumberBeyondTheLargestDouble) {
+  fixture::set_line(m + "imu0/data.csv", 12, "1010000000,0.001,-0.002,1e309,0.1,0,9.81");
+  STRCMP_CONTAINS((m + "imu0/data.csv:12: column 'w_RS_S_z [rad s^-1]': value '1e309' is beyond the largest number")
+                      .c_str(),
+                  load_error().c_str());
 }
 
 TEST(BadInput, NotANumberInGyro) {

@@ -57,6 +57,9 @@ double parse_finite(const std::string& text, const std::string& path, long line,
   const double v = std::strtod(text.c_str(), &end);
   if (end == text.c_str() || end != text.c_str() + text.size())
     throw recording_error_at(path, line, "column '" + column + "': '" + shown(text) + "' is not a number");
+  if (std::isinf(v) && errno == ERANGE)
+    throw recording_error_at(path, line, "column '" + column + "': value '" + shown(text) +
+                                             "' is beyond the largest number (about 1.8e308)");
   if (!std::isfinite(v))
     throw recording_error_at(path, line, "column '" + column + "': value '" + shown(text) + "' is not finite");
   return v;
@@ -92,6 +95,13 @@ bool next_line(std::istream& in, std::vector<char>& buf, std::string& out, const
                                                " characters: not a row of this table (a binary or damaged file?)");
     if (!full) {
       if (in.fail()) in.clear(std::ios::eofbit);  // the last line, read: the next call ends
+      // CR LF ends a line; a CR with more after it is a file of CR-only
+      // lines, which would otherwise read as one long header.
+      const size_t cr = out.find('\r');
+      if (cr != std::string::npos && out.find_first_not_of("\r \t", cr) != std::string::npos)
+        throw recording_error_at(path, line,
+                                 "a carriage return (CR) inside the line, at character " + std::to_string(cr + 1) +
+                                     ": lines must end with LF or CR LF (CR-only line ends?)");
       return true;
     }
     in.clear();  // the chunk filled up before the line's end: more to come

@@ -30,6 +30,18 @@ struct CamRows {
   std::vector<CsvRow> rows;
 };
 
+// A frame's name is read below cam*/data/: an absolute name or a '..'
+// component would read (and pass off as a frame) any file on the machine.
+bool leaves_data_folder(const std::string& name) {
+  if (name[0] == '/') return true;
+  for (size_t at = 0; at <= name.size();) {
+    const size_t end = std::min(name.find('/', at), name.size());
+    if (name.compare(at, end - at, "..") == 0 && end - at == 2) return true;
+    at = end + 1;
+  }
+  return false;
+}
+
 CamRows read_cam_rows(const std::string& root, int cam) {
   CamRows c;
   const std::string dir = root + "/" + layout::kCamDir[cam];
@@ -38,6 +50,10 @@ CamRows read_cam_rows(const std::string& root, int cam) {
   for (CsvRow& r : c.rows) {
     std::string& name = r.fields[0];
     if (name.empty()) throw recording_error_at(c.csv, r.line, "empty filename");
+    if (leaves_data_folder(name))
+      throw recording_error_at(c.csv, r.line,
+                               "filename '" + name + "' leaves " + layout::kCamDir[cam] +
+                                   "/data/ (names are relative to it, with no '..' and no leading '/')");
     name = dir + "/data/" + name;
     if (const std::string why = why_not_a_file(name); !why.empty())
       throw recording_error_at(c.csv, r.line, "image file " + shown_path(name) + " " + why);
