@@ -1,0 +1,44 @@
+// Two cameras that clip at different scene brightness, made to clip alike.
+//
+// A camera with more gain (or its own auto-exposure) saturates at 255 on
+// parts of the scene that the other still resolves; after the division by
+// the mean brightness, the brighter camera's bright texture is flattened and
+// the darker one's is not, and their difference reads as velocity (the photo
+// wall with cam1 at 1.2x the gain: E 15 % against 0.9 % for twins). The
+// photometric match cannot learn it: it follows the scene.
+//
+// Both cameras see nearly the same scene, so the ratio of their mean
+// brightness is their gain ratio g (to the black levels' share). Where the
+// brighter camera has pixels at 255, the darker one's pixels are clamped at
+// 255 / g: both then lose the same part of the scene. Applied to the
+// sensor's pixels before binning (clipping happens per sensor pixel; a binned
+// pixel averages clipped and unclipped ones). No state: each frame pair on
+// its own. (Matching the share of clipped pixels instead, by histogram, was
+// tried: near clutter, which the two cameras see differently, took it far
+// off; the means are steadier.)
+//
+// Cost: one pass over both frames (a sum and a count) and one clamping pass
+// over the darker frame when the brighter one clips.
+#pragma once
+#include <cstdint>
+
+#include "lumavel/core/binning.hpp"
+
+namespace lumavel {
+
+struct ClipStats {
+  uint64_t sum;     // of the pixels
+  uint32_t pixels;  // (at most 2^24: bin_area's limit)
+  uint32_t at_max;  // pixels at 255
+};
+
+void clip_stats(const ImageView& in, ClipStats& s);
+
+// The level each camera's pixels are clamped at: 255 (left as they are)
+// except the darker camera's when the brighter one clips.
+void match_clip_ceilings(const ClipStats& s0, const ClipStats& s1, uint8_t ceiling[2]);
+
+// Clamps a frame in place (rows of `width` pixels, `stride` bytes apart).
+void clamp_pixels(uint8_t* px, uint16_t width, uint16_t height, uint32_t stride, uint8_t ceiling);
+
+}  // namespace lumavel
