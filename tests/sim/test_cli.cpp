@@ -239,6 +239,16 @@ TEST(Cli, PhotometricMatchCanBeTurnedOff) {
   STRCMP_CONTAINS("photometric match: off (--no-photometric-match)", r.err.c_str());
 }
 
+TEST(Cli, ClipMatchIsReportedAndCanBeTurnedOff) {
+  rec();
+  Outcome r = sim("run rec -o est.csv");
+  LONGS_EQUAL(0, r.code);
+  STRCMP_CONTAINS("clip match: no frame where one camera clipped and was the brighter", r.err.c_str());
+  r = sim("run rec -o est.csv --no-clip-match");
+  LONGS_EQUAL(0, r.code);
+  STRCMP_CONTAINS("clip match: off (--no-clip-match)", r.err.c_str());
+}
+
 TEST(Cli, OutputToADeviceKeepsThePlotInTheCurrentFolder) {
   rec();
   Outcome r = sim("run rec -o /dev/null -q");

@@ -3,6 +3,7 @@
 #include <cstring>
 
 #include "lumavel/core/binning.hpp"
+#include "lumavel/core/clip_match.hpp"
 #include "lumavel/host/image_io.hpp"
 #include "lumavel/host/recording_layout.hpp"
 #include "lumavel/host/rig.hpp"
@@ -10,8 +11,11 @@
 namespace lumavel::host {
 
 FileStereoCamera::FileStereoCamera(const Recording& rec, int width, int height, int threads, int lookahead,
-                                   bool undistort)
-    : rec_(rec), width_(static_cast<uint16_t>(width)), height_(static_cast<uint16_t>(height)) {
+                                   FrameProcessing processing)
+    : rec_(rec),
+      width_(static_cast<uint16_t>(width)),
+      height_(static_cast<uint16_t>(height)),
+      match_clipping_(processing.match_clipping) {
   for (int c = 0; c < 2; ++c)
     if (width < 1 || height < 1 || width > rec.cam[c].width || height > rec.cam[c].height || width > 2048)
       throw recording_error_in(rec.root + "/" + layout::kCamDir[c] + "/sensor.yaml",
@@ -20,7 +24,7 @@ FileStereoCamera::FileStereoCamera(const Recording& rec, int width, int height, 
                                    std::to_string(height));
   for (int c = 0; c < 2; ++c) {
     const CameraSensor& s = rec.cam[c];
-    if (undistort && lens_applies(s))
+    if (processing.undistort && lens_applies(s))
       remap_[c] = std::make_unique<LensRemap>(s.width, s.height, PinholeIntrinsics{s.fu, s.fv, s.cu, s.cv}, lens_of(s));
   }
   if (threads < 1) threads = 1;
@@ -52,29 +56,48 @@ FileStereoCamera::~FileStereoCamera() {
 
 void FileStereoCamera::decode_into(size_t index, Slot& slot) const {
   const FramePairEntry& f = rec_.frames[index];
+  GrayImage img[2];
+  ImageView view[2];
   for (int c = 0; c < 2; ++c) {
     const std::string frame = "frame " + std::to_string(index) + " (t=" + std::to_string(f.t_ns) + " ns, " +
                               layout::kCamDir[c] + "): ";
-    GrayImage img;
     try {
-      img = read_gray_image(f.path[c]);
+      img[c] = read_gray_image(f.path[c]);
     } catch (const RecordingError& e) {
       throw RecordingError(frame + e.what());
     }
     const CameraSensor& s = rec_.cam[c];
-    if (img.width != s.width || img.height != s.height)
-      throw RecordingError(frame + f.path[c] + ": image is " + std::to_string(img.width) + "x" +
-                           std::to_string(img.height) + ", sensor.yaml says resolution [" + std::to_string(s.width) +
-                           ", " + std::to_string(s.height) + "]");
-    if (remap_[c]) {
-      std::vector<uint8_t> pinhole(img.px.size());
-      remap_[c]->apply(img.px.data(), pinhole.data());
-      img.px.swap(pinhole);
+    if (img[c].width != s.width || img[c].height != s.height)
+      throw RecordingError(frame + f.path[c] + ": image is " + std::to_string(img[c].width) + "x" +
+                           std::to_string(img[c].height) + ", sensor.yaml says resolution [" +
+                           std::to_string(s.width) + ", " + std::to_string(s.height) + "]");
+    view[c] = ImageView{img[c].px.data(), static_cast<uint16_t>(img[c].width), static_cast<uint16_t>(img[c].height),
+                        static_cast<uint32_t>(img[c].width)};
+  }
+  if (match_clipping_) {  // on the sensor's pixels, where they clipped
+    ClipStats st[2];
+    uint8_t ceiling[2];
+    for (int c = 0; c < 2; ++c) clip_stats(view[c], st[c]);
+    match_clip_ceilings(st[0], st[1], ceiling);
+    for (int c = 0; c < 2; ++c) {
+      if (ceiling[c] == 255) continue;
+      clamp_pixels(img[c].px.data(), view[c].width, view[c].height, view[c].stride, ceiling[c]);
+      ++clamped_[c];
+      int low = lowest_ceiling_[c].load();
+      while (ceiling[c] < low && !lowest_ceiling_[c].compare_exchange_weak(low, ceiling[c])) {
+      }
     }
-    const ImageView view{img.px.data(), static_cast<uint16_t>(img.width), static_cast<uint16_t>(img.height),
-                         static_cast<uint32_t>(img.width)};
-    if (!bin_area(view, slot.px[c].data(), width_, height_))
-      throw RecordingError(frame + f.path[c] + ": cannot bin to the working resolution");
+  }
+  for (int c = 0; c < 2; ++c) {
+    if (remap_[c]) {
+      std::vector<uint8_t> pinhole(img[c].px.size());
+      remap_[c]->apply(img[c].px.data(), pinhole.data());
+      img[c].px.swap(pinhole);
+      view[c].pixels = img[c].px.data();
+    }
+    if (!bin_area(view[c], slot.px[c].data(), width_, height_))
+      throw RecordingError("frame " + std::to_string(index) + " (t=" + std::to_string(f.t_ns) + " ns, " +
+                           layout::kCamDir[c] + "): " + f.path[c] + ": cannot bin to the working resolution");
   }
 }
 

@@ -9,6 +9,7 @@
 #include <memory>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "lumavel/core/status.hpp"
@@ -61,6 +62,7 @@ struct RunArgs {
   bool no_gyro_offset_learning = false;
   bool photometric_balance = false;
   bool no_photometric_match = false;
+  bool no_clip_match = false;
   bool elevation_band = false;
 };
 
@@ -162,6 +164,20 @@ std::string gyro_offset_line(EngineKind engine, bool learning, const std::vector
 // multiplies cam1's column sums by 1 + a1 x + a2 x^2 after removing its black
 // level): cam1's black level over cam0's, and its response against cam0's at
 // the image's left and right edges (x = -1, +1), the centre's taken as equal.
+std::string clip_line(const RunOptions& o, const RunResult& r) {
+  if (!o.clip_match) return "clip match: off (--no-clip-match): the frames binned as the cameras clipped them";
+  if (o.engine == EngineKind::kVo && r.width > kMaxWorkWidth) return "clip match: not applied (vo at the sensors' size)";
+  if (r.clip_clamped[0] == 0 && r.clip_clamped[1] == 0) return "clip match: no frame where one camera clipped and was the brighter";
+  std::string s = "clip match:";
+  const char* sep = "";
+  for (int c = 0; c < 2; ++c)
+    if (r.clip_clamped[c] > 0)
+      s += std::string(std::exchange(sep, ";")) + " cam" + std::to_string(c) + " clamped where cam" +
+           std::to_string(1 - c) + " clipped on " + std::to_string(r.clip_clamped[c]) + " of " +
+           std::to_string(r.frames) + " frames (ceiling down to " + std::to_string(r.clip_lowest[c]) + ")";
+  return s;
+}
+
 std::string photometric_line(EngineKind engine, bool matching, const double p[3]) {
   if (engine == EngineKind::kVo) return "photometric match: none (the vo engine matches features)";
   if (!matching) return "photometric match: off (--no-photometric-match): the cameras taken as twins";
@@ -256,6 +272,7 @@ int run(const RunArgs& a) {
   options.photometric_balance = a.photometric_balance;
   options.photometric_match = !a.no_photometric_match;
   options.elevation_band = a.elevation_band;
+  options.clip_match = !a.no_clip_match;
 
   std::unique_ptr<HidSender> hid;
   if (!a.hid.empty()) {
@@ -346,6 +363,7 @@ int run(const RunArgs& a) {
     else std::fprintf(stderr, "no ground truth (state_groundtruth_estimate0/data.csv): no error figures\n");
     std::fprintf(stderr, "%s\n", gyro_offset_line(options.engine, !a.no_gyro_offset_learning, result.track, last.gyro_offset).c_str());
     std::fprintf(stderr, "%s\n", photometric_line(options.engine, !a.no_photometric_match, last.photometric).c_str());
+    std::fprintf(stderr, "%s\n", clip_line(options, result).c_str());
     if (want_plot) std::fprintf(stderr, "plot: %s\n", plot.c_str());
     if (hid) std::fprintf(stderr, "hid: %u reports sent through %s, %u overruns\n", hid->sent(), a.hid.c_str(), hid->overruns());
     if (hid && a.hid_linger_s != 0) {
@@ -410,6 +428,11 @@ void add_run_command(cli::Tool& tool) {
               "cam1's black level and vignetting against cam0's (learned\n"
               "by default where one camera stands where the other stood:\n"
               "docs/design.md); for comparisons");
+  c->add_flag("--no-clip-match", a->no_clip_match,
+              "bin the frames as the cameras clipped them: do not clamp\n"
+              "the camera that clips less where the other clips (done by\n"
+              "default on the sensor's pixels: docs/design.md); for\n"
+              "comparisons");
   c->add_flag("--photometric-balance", a->photometric_balance,
               "learn cam1's offset against cam0 per kernel over the\n"
               "first 4 m of travel and correct it (for cameras that are\n"

@@ -58,6 +58,13 @@ bool undistorts_frames(const Recording& rec, const RunOptions& options) {
          has_lens_distortion(rec);
 }
 
+FrameProcessing frame_processing(const Recording& rec, const RunOptions& options) {
+  FrameProcessing p;
+  p.undistort = undistorts_frames(rec, options);
+  p.match_clipping = options.clip_match;
+  return p;
+}
+
 EstimatorSettings run_settings(const Recording& rec, const RunOptions& options) {
   if (options.engine == EngineKind::kVo) {
     // Frames are binned by lumavel::bin_area up to its 160 columns, or used
@@ -113,21 +120,21 @@ RunResult run_recording(const Recording& rec, const RunOptions& options, std::FI
     throw RecordingError(setting_source(rec, e.setting()) + ": " + e.what());
   }
   RunResult r = run_recording(rec, settings, *engine, options.decode_threads, csv, progress, options.sink,
-                              undistorts_frames(rec, options));
+                              frame_processing(rec, options));
   r.lens_distorted = has_lens_distortion(rec);
   return r;
 }
 
 RunResult run_recording(const Recording& rec, const EstimatorSettings& settings, Engine& engine,
                         int decode_threads, std::FILE* csv, const std::function<void(size_t, size_t)>& progress,
-                        const EstimateSink& sink, bool undistort_frames) {
+                        const EstimateSink& sink, FrameProcessing processing) {
   // Above the binner's 160 columns only the vo engine runs, at the sensors' size (run_settings).
   std::unique_ptr<FileStereoCamera> binned;
   std::unique_ptr<NativeStereoCamera> native;
   if (settings.width > kMaxWorkWidth) native = std::make_unique<NativeStereoCamera>(rec);
   else
     binned = std::make_unique<FileStereoCamera>(rec, settings.width, settings.height, decode_threads, 16,
-                                                undistort_frames);
+                                                processing);
   hal::StereoCamera& camera = native ? static_cast<hal::StereoCamera&>(*native) : *binned;
   auto camera_error = [&] { return native ? native->error() : binned->error(); };
 
@@ -165,6 +172,11 @@ RunResult run_recording(const Recording& rec, const EstimatorSettings& settings,
     if (progress && (result.frames & 255) == 0) progress(result.frames, rec.frames.size());
   }
   result.wall_s = std::chrono::duration<double>(Clock::now() - start).count();
+  if (binned)
+    for (int c = 0; c < 2; ++c) {
+      result.clip_clamped[c] = binned->frames_clamped(c);
+      result.clip_lowest[c] = binned->lowest_ceiling(c);
+    }
   result.step_s = std::chrono::duration<double>(in_engine).count();
   if (result.has_truth) {
     std::vector<uint64_t> t;

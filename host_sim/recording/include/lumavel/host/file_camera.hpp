@@ -2,9 +2,13 @@
 // binned to the working resolution with lumavel::bin_area, like a board driver
 // bins its sensor. With `undistort`, a camera whose sensor.yaml gives a lens
 // distortion has every frame resampled onto the pinhole of its intrinsics
-// first (lens_remap.hpp): the working frames are then pinhole frames. Frames are decoded ahead on a small thread pool so a run is
-// limited by the estimator, not by PNG decoding.
+// first (lens_remap.hpp): the working frames are then pinhole frames. With
+// `match_clipping`, the camera that clips less is clamped where the other
+// clips (clip_match.hpp), on the sensor's pixels, before both. Frames are
+// decoded ahead on a small thread pool so a run is limited by the estimator,
+// not by PNG decoding.
 #pragma once
+#include <atomic>
 #include <condition_variable>
 #include <cstdint>
 #include <memory>
@@ -19,12 +23,18 @@
 
 namespace lumavel::host {
 
+// What is done to the sensor's frames before they are binned.
+struct FrameProcessing {
+  bool undistort = false;       // onto the pinhole of the intrinsics (lens_remap.hpp)
+  bool match_clipping = false;  // clamp the camera that clips less where the other clips (clip_match.hpp)
+};
+
 class FileStereoCamera : public hal::StereoCamera {
  public:
   // `rec` must outlive the camera. Throws RecordingError when the recording's
   // frames cannot be binned to width x height.
   FileStereoCamera(const Recording& rec, int width, int height, int threads = 2, int lookahead = 16,
-                   bool undistort = false);
+                   FrameProcessing processing = {});
   ~FileStereoCamera() override;
   FileStereoCamera(const FileStereoCamera&) = delete;
   FileStereoCamera& operator=(const FileStereoCamera&) = delete;
@@ -39,6 +49,10 @@ class FileStereoCamera : public hal::StereoCamera {
   // Pixels of camera c's pinhole view outside its sensor (a pincushion lens;
   // they repeat the edge): 0 without undistortion or with a barrel lens.
   int pinhole_outside(int c) const { return remap_[c] ? remap_[c]->outside() : 0; }
+  // Frames of camera c clamped at a clip ceiling below 255, and the lowest one
+  // (255 when none was).
+  size_t frames_clamped(int c) const { return clamped_[c].load(); }
+  int lowest_ceiling(int c) const { return lowest_ceiling_[c].load(); }
   size_t frames_delivered() const { return next_out_; }
   size_t frame_count() const { return rec_.frames.size(); }
 
@@ -55,6 +69,9 @@ class FileStereoCamera : public hal::StereoCamera {
   const Recording& rec_;
   uint16_t width_, height_;
   std::unique_ptr<LensRemap> remap_[2];  // null: the frames are binned as they are
+  bool match_clipping_;
+  mutable std::atomic<size_t> clamped_[2] = {};          // (decode_into runs on several threads)
+  mutable std::atomic<int> lowest_ceiling_[2] = {255, 255};
   std::vector<Slot> slots_;
   std::vector<std::thread> threads_;
   std::mutex mu_;

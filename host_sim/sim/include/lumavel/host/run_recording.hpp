@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "lumavel/host/engine.hpp"
+#include "lumavel/host/file_camera.hpp"
 #include "lumavel/host/recording.hpp"
 #include "lumavel/host/rig.hpp"
 #include "lumavel/host/run_metrics.hpp"
@@ -42,6 +43,10 @@ struct RunOptions {
   bool photometric_balance = false;
   bool photometric_match = true;
   bool elevation_band = false;
+  // Clamp the camera that clips less where the other clips (clip_match.hpp;
+  // the default); off: the frames as the cameras clipped them
+  // (run --no-clip-match).
+  bool clip_match = true;
 };
 
 struct RunResult {
@@ -51,6 +56,8 @@ struct RunResult {
   int width = 0, height = 0;      // working resolution used
   bool lens_distorted = false;    // sensor.yaml gives a distortion (corrected unless ignored)
   int pinhole_outside_px = 0;     // undistorted frames: pixels (both cameras) outside the sensor, edge repeated
+  size_t clip_clamped[2] = {};    // frames of each camera clamped at a clip ceiling (RunOptions::clip_match)
+  int clip_lowest[2] = {255, 255};  // the lowest ceiling of each camera
   double wall_s = 0;              // time spent in the frame loop
   double step_s = 0;              // of which in the engine (push_gyro and step): its compute time
 };
@@ -89,10 +96,13 @@ RunResult run_recording(const Recording& rec, const RunOptions& options, std::FI
                         const std::function<void(size_t, size_t)>& progress = {});
 
 // Same with a given engine (built for `settings`), e.g. an instrumented one.
-// `undistort_frames`: resample each distorted camera's frames onto its
-// pinhole before binning (FileStereoCamera); `settings` must then be pinhole.
+// `processing`: what FileStereoCamera does to the frames before binning
+// (with `undistort`, `settings` must be pinhole).
 RunResult run_recording(const Recording& rec, const EstimatorSettings& settings, Engine& engine,
                         int decode_threads, std::FILE* csv, const std::function<void(size_t, size_t)>& progress = {},
-                        const EstimateSink& sink = {}, bool undistort_frames = false);
+                        const EstimateSink& sink = {}, FrameProcessing processing = {});
+
+// What the frames of a run go through before binning (FileStereoCamera).
+FrameProcessing frame_processing(const Recording& rec, const RunOptions& options);
 
 }  // namespace lumavel::host
