@@ -94,7 +94,8 @@ Study real_rig_study(bool quick) {
            "fall-off 30 vs 36 %, per-pixel and per-column fixed pattern). The photo wall of Table I (14 m in "
            "4 s at 4 m) runs with matched and with mismatched cameras, and with cameras that differ only in "
            "gain, black level and vignetting (`differing_pair`: gain 1.00 vs 0.85, black level 10 vs 12, corner "
-           "fall-off 30 vs 36 %).",
+           "fall-off 30 vs 36 %). Every run as `run` does it by default: the darker camera's frames clamped "
+           "where the brighter one clips (docs/design.md, \"Clip match\"), the photometric match learning the rest.",
            "E", {}};
   const double len = quick ? 4 : -1;
   struct Scene {
