@@ -87,6 +87,7 @@ void column_profile(const uint8_t* pixels, uint16_t width, uint16_t height, uint
   const ColumnBand* const band = kBandColumns > 1 ? band_in : nullptr;
   out.width = width;
   out.q8 = band != nullptr;
+  out.plain_x256 = false;
   const bool aligned = ((reinterpret_cast<uintptr_t>(pixels) | stride) & 3u) == 0;
   uint16_t u = 0;
   if (band == nullptr) {

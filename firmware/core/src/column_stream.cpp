@@ -11,6 +11,7 @@ void ColumnStream::start(uint16_t width, uint16_t height, const ColumnBand* band
   ok_ = true;
   p_.width = width;
   p_.q8 = band_ != nullptr;
+  p_.plain_x256 = false;
   p_.edges = band_ == nullptr && kBandColumns > 1 && height >= 2;
   p_.clipped = 0;
   p_.clip_sampled = static_cast<uint32_t>((height + params::kClipRowStep - 1) / params::kClipRowStep) * width;

@@ -71,6 +71,7 @@ void PhotometricMatch::apply(ColumnProfile& p1, const ColumnBand* band, uint16_t
       p1.sum[u] = static_cast<ColumnSum>(s < 0 ? 0 : (s > kMaxQ8Sum ? kMaxQ8Sum : s));
       if (p1.edges && u < kBandColumns) p1.edge4[u] = static_cast<int32_t>(int64_t{p1.edge4[u]} * (int64_t{1} << up));
     }
+    p1.plain_x256 = up == 8;  // (no sum reaches kMaxQ8Sum: plain sums are below 2^15)
     p1.q8 = true;
     return;
   }
@@ -87,6 +88,7 @@ void PhotometricMatch::apply(ColumnProfile& p1, const ColumnBand* band, uint16_t
     if (p1.edges && u < kBandColumns)
       p1.edge4[u] = static_cast<int32_t>(fx::shr_round(int64_t{p1.edge4[u]} * (int64_t{1} << up) * g, kQ));
   }
+  p1.plain_x256 = false;
   p1.q8 = true;
 }
 

@@ -37,6 +37,10 @@ struct ColumnProfile {
   int32_t edge4[kBandColumns];
   uint16_t width;
   bool q8;
+  // q8 sums that are plain sums times 256 exactly (the photometric match's
+  // mapping of twins): a core without a 64-bit multiply takes their dot
+  // products on the plain sums, in 32-bit products (kernel_dot.hpp).
+  bool plain_x256;
   bool edges;
   uint32_t clipped;           // pixels at 0 or 255 among the sampled rows
   uint32_t clip_sampled;      // pixels inspected for clipping (every 8th row)

@@ -31,22 +31,31 @@ inline int64_t mac4(const W* w, const S* s, uint16_t n) {
   return acc;
 }
 
+#if defined(__ARM_ARCH_6M__)
+// sum_u w[u] * (s[u] >> Shift) for sums (so shifted) in [0, 2^15), without a
+// 32 x 32 -> 64 multiply (M0/M0+: a library call per column): w = hi 2^16 +
+// lo, lo in [0, 2^16), gives two exact 32-bit products, |hi s| < 2^30 and
+// lo s < 2^31; the same sum, bit for bit.
+template <int Shift, typename S>
+inline int64_t dot_halves(const int32_t* w, const S* s, uint16_t n) {
+  int64_t acc_hi = 0, acc_lo = 0;
+  for (uint16_t u = 0; u < n; ++u) {
+    const int32_t v = s[u] >> Shift;
+    acc_hi += (w[u] >> 16) * v;
+    acc_lo += static_cast<uint32_t>(static_cast<uint32_t>(w[u]) & 0xFFFFu) * static_cast<uint32_t>(v);
+  }
+  return acc_hi * 65536 + acc_lo;
+}
+#endif
+
 // sum_u w[u] * c[u]: q31 weights times sums of at most 23 bits (Q8 with a
-// band), 32 x 32 -> 64 products (|sum| < 2^31 * 2^23 * 160 < 2^62).
+// band), 32 x 32 -> 64 products (|sum| < 2^31 * 2^23 * 160 < 2^62). On
+// M0/M0+, plain sums and plain sums times 256 (the match's mapping of twins,
+// plain_x256) take dot_halves on the plain values.
 inline int64_t dot(const KernelTable& t, const ColumnProfile& p) {
 #if defined(__ARM_ARCH_6M__)
-  // No 32 x 32 -> 64 multiply (M0/M0+: a library call per column). Plain sums
-  // are in [0, 2^15): w = hi 2^16 + lo, lo in [0, 2^16), gives two exact 32-bit
-  // products, |hi s| < 2^30 and lo s < 2^31; the same sum, bit for bit.
-  if (!p.q8) {
-    int64_t acc_hi = 0, acc_lo = 0;
-    for (uint16_t u = 0; u < p.width; ++u) {
-      const int32_t s = p.sum[u];
-      acc_hi += (t.w[u] >> 16) * s;
-      acc_lo += static_cast<uint32_t>(static_cast<uint32_t>(t.w[u]) & 0xFFFFu) * static_cast<uint32_t>(s);
-    }
-    return acc_hi * 65536 + acc_lo;
-  }
+  if (!p.q8) return dot_halves<0>(t.w, p.sum, p.width);
+  if (p.plain_x256) return dot_halves<8>(t.w, p.sum, p.width) * 256;
 #endif
   return mac4(t.w, p.sum, p.width);
 }
@@ -54,10 +63,15 @@ inline int64_t dot(const KernelTable& t, const ColumnProfile& p) {
 inline int64_t dot(const KernelTable16& t, const ColumnProfile& p) {
   int64_t acc = 0;
 #if defined(__ARM_ARCH_6M__)
-  // No 32 x 32 -> 64 multiply (M0/M0+): plain 15-bit sums keep 32-bit products.
+  // No 32 x 32 -> 64 multiply (M0/M0+): plain 15-bit sums keep 32-bit products
+  // (sums that are plain ones times 256: on the plain ones, times 256 after).
   if (!p.q8) {
     for (uint16_t u = 0; u < p.width; ++u) acc += t.w[u] * p.sum[u];
     return acc;
+  }
+  if (p.plain_x256) {
+    for (uint16_t u = 0; u < p.width; ++u) acc += t.w[u] * (p.sum[u] >> 8);
+    return acc * 256;
   }
 #endif
   // 16-bit weights times sums of at most 23 bits: |sum| < 2^15 * 2^23 * 160 < 2^46.
