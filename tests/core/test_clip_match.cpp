@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "lumavel/core/binning.hpp"
@@ -112,6 +113,23 @@ TEST(ClipMatch, TheDarkerCameraClippedAlikeMakesTheProfilesAgree) {
     for (int c = 0; c < 2; ++c) clamp_pixels(cam[c].data(), kW, kH, kW, ceiling[c]);
     const double after = profile_difference(cam[0], cam[1]);
     CHECK_TEXT(after < before / 3, ("profile difference " + std::to_string(before) + " -> " + std::to_string(after)).c_str());
+  }
+}
+
+// Twins whose means differ by what each sees clip on like shares of their
+// pixels: no clamp until the brighter one clips on more than
+// kClipShareRatio times the darker one's share (shares, not counts: cam1
+// has twice the pixels here).
+TEST(ClipMatch, LikeSharesAtTheTopAreWhatTheCamerasSeeNotTheirGain) {
+  const uint32_t n = 10000;
+  const ClipStats s0{uint64_t{100} * n, n, 10};
+  uint8_t ceiling[2];
+  for (const uint32_t at_max : {0u, 10u, 20u, 40u, 41u, 400u}) {
+    const ClipStats s1{uint64_t{110} * 2 * n, 2 * n, at_max};  // 10 % brighter
+    match_clip_ceilings(s0, s1, ceiling);
+    const bool clamps = at_max * n > kClipShareRatio * 10 * 2 * n;
+    LONGS_EQUAL_TEXT(clamps ? 232 : 255, ceiling[0], std::to_string(at_max).c_str());  // 255 / 1.1
+    LONGS_EQUAL(255, ceiling[1]);
   }
 }
 

@@ -22,7 +22,10 @@ void match_clip_ceilings(const ClipStats& s0, const ClipStats& s1, uint8_t ceili
   const uint64_t m0 = (s0.sum << 8) / s0.pixels, m1 = (s1.sum << 8) / s1.pixels;
   const bool cam1_brighter = m1 > m0;
   const uint64_t bright = cam1_brighter ? m1 : m0, dark = cam1_brighter ? m0 : m1;
-  if ((cam1_brighter ? s1.at_max : s0.at_max) == 0 || bright == dark) return;
+  const ClipStats& sb = cam1_brighter ? s1 : s0;
+  const ClipStats& sd = cam1_brighter ? s0 : s1;
+  // shares compared without a division: at_max / pixels (< 2^32 each)
+  if (bright == dark || uint64_t{sb.at_max} * sd.pixels <= kClipShareRatio * sd.at_max * sb.pixels) return;
   // 255 / g = 255 x dark / bright, rounded; below 255 since dark < bright.
   ceiling[cam1_brighter ? 0 : 1] = static_cast<uint8_t>((255 * dark + bright / 2) / bright);
 }
