@@ -243,7 +243,7 @@ TEST(Cli, ClipMatchIsReportedAndCanBeTurnedOff) {
   rec();
   Outcome r = sim("run rec -o est.csv");
   LONGS_EQUAL(0, r.code);
-  STRCMP_CONTAINS("clip match: no frame where one camera clipped and was the brighter", r.err.c_str());
+  STRCMP_CONTAINS("clip match: no frame where the brighter camera clipped on more than 2x the other's share of pixels", r.err.c_str());
   r = sim("run rec -o est.csv --no-clip-match");
   LONGS_EQUAL(0, r.code);
   STRCMP_CONTAINS("clip match: off (--no-clip-match)", r.err.c_str());

@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "lumavel/core/clip_match.hpp"
 #include "lumavel/core/status.hpp"
 #include "lumavel/host/file_config_store.hpp"
 #include "lumavel/host/hid_link.hpp"
@@ -167,7 +168,9 @@ std::string gyro_offset_line(EngineKind engine, bool learning, const std::vector
 std::string clip_line(const RunOptions& o, const RunResult& r) {
   if (!o.clip_match) return "clip match: off (--no-clip-match): the frames binned as the cameras clipped them";
   if (o.engine == EngineKind::kVo && r.width > kMaxWorkWidth) return "clip match: not applied (vo at the sensors' size)";
-  if (r.clip_clamped[0] == 0 && r.clip_clamped[1] == 0) return "clip match: no frame where one camera clipped and was the brighter";
+  if (r.clip_clamped[0] == 0 && r.clip_clamped[1] == 0)
+    return "clip match: no frame where the brighter camera clipped on more than " +
+           std::to_string(kClipShareRatio) + "x the other's share of pixels";
   std::string s = "clip match:";
   const char* sep = "";
   for (int c = 0; c < 2; ++c)
