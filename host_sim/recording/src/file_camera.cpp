@@ -56,11 +56,13 @@ FileStereoCamera::~FileStereoCamera() {
 
 void FileStereoCamera::decode_into(size_t index, Slot& slot) const {
   const FramePairEntry& f = rec_.frames[index];
+  const auto frame_of = [&](int c) {
+    return "frame " + std::to_string(index) + " (t=" + std::to_string(f.t_ns) + " ns, " + layout::kCamDir[c] + "): ";
+  };
   GrayImage img[2];
   ImageView view[2];
   for (int c = 0; c < 2; ++c) {
-    const std::string frame = "frame " + std::to_string(index) + " (t=" + std::to_string(f.t_ns) + " ns, " +
-                              layout::kCamDir[c] + "): ";
+    const std::string frame = frame_of(c);
     try {
       img[c] = read_gray_image(f.path[c]);
     } catch (const RecordingError& e) {
@@ -96,8 +98,7 @@ void FileStereoCamera::decode_into(size_t index, Slot& slot) const {
       view[c].pixels = img[c].px.data();
     }
     if (!bin_area(view[c], slot.px[c].data(), width_, height_))
-      throw RecordingError("frame " + std::to_string(index) + " (t=" + std::to_string(f.t_ns) + " ns, " +
-                           layout::kCamDir[c] + "): " + f.path[c] + ": cannot bin to the working resolution");
+      throw RecordingError(frame_of(c) + f.path[c] + ": cannot bin to the working resolution");
   }
 }
 

@@ -161,10 +161,7 @@ std::string gyro_offset_line(EngineKind engine, bool learning, const std::vector
   return buf;
 }
 
-// What the photometric match mapped cam1 onto cam0 with at the end (it
-// multiplies cam1's column sums by 1 + a1 x + a2 x^2 after removing its black
-// level): cam1's black level over cam0's, and its response against cam0's at
-// the image's left and right edges (x = -1, +1), the centre's taken as equal.
+// Which frames the clip ceiling clamped, or why none.
 std::string clip_line(const RunOptions& o, const RunResult& r) {
   if (!o.clip_match) return "clip match: off (--no-clip-match): the frames binned as the cameras clipped them";
   if (o.engine == EngineKind::kVo && r.width > kMaxWorkWidth) return "clip match: not applied (vo at the sensors' size)";
@@ -181,6 +178,10 @@ std::string clip_line(const RunOptions& o, const RunResult& r) {
   return s;
 }
 
+// What the photometric match mapped cam1 onto cam0 with at the end (it
+// multiplies cam1's column sums by 1 + a1 x + a2 x^2 after removing its black
+// level): cam1's black level over cam0's, and its response against cam0's at
+// the image's left and right edges (x = -1, +1), the centre's taken as equal.
 std::string photometric_line(EngineKind engine, bool matching, const double p[3]) {
   if (engine == EngineKind::kVo) return "photometric match: none (the vo engine matches features)";
   if (!matching) return "photometric match: off (--no-photometric-match): the cameras taken as twins";
