@@ -31,6 +31,12 @@ int64_t gate_ns(int64_t tau_ns, int64_t frame_ns) {
   return a > b ? a : b;
 }
 
+// A hint fast enough to guide the acquisition, in the direction in which
+// this camera trails (cam0 trails when the body moves +x).
+bool guiding(int64_t v_hint, int trail) {
+  return abs64(v_hint) > kAcquireMinSpeedQ16 && (trail == 0) == (v_hint > 0);
+}
+
 // direction * h / tau in SpeedQ16 (h Q24 m, tau ns).
 SpeedQ16 speed_of(LengthQ24 h, int8_t direction, int64_t tau_ns) {
   return fx::div_q(int64_t{direction} * h * 1000000000, tau_ns * 256, 0);
@@ -142,28 +148,36 @@ TofResult TimeOfFlight::track(const TofTrackInput& in) {
   }
   if (!have) {
     if (misses_ < 255) ++misses_;
-    // (Re)acquisition: the best candidate that agrees with the fused velocity,
-    // confirmed over several frames. Above kTofAcquireMinSpeed only V's
-    // direction and the taus that agree with it are searched (the agreement
-    // is checked exactly below); at lower speeds both directions, every
-    // usable tau.
-    const int64_t vf = in.v_fused;
-    const bool guided = abs64(vf) > kAcquireMinSpeedQ16;
-    int64_t min_ns = 0, max_ns = kTofMaxTauNs;
-    if (guided) {
-      const int64_t num = int64_t{in.baseline < 0 ? -in.baseline : in.baseline} * 1000000000;  // Q24 m ns
-      const int64_t fast = ((kOneQ16 + kAgreementQ16) * abs64(vf)) >> 16, slow = ((kOneQ16 - kAgreementQ16) * abs64(vf)) >> 16;
-      min_ns = fx::div_q(num, fast * 256, 0) - frame_ns;
-      if (slow > 0) max_ns = std::min<int64_t>(max_ns, int64_t{fx::div_q(num, slow * 256, 0)} + frame_ns);
-    }
+    // (Re)acquisition: the best candidate that agrees with the fused velocity
+    // or with this frame's direct value (the fused V lags an acceleration, and
+    // reads low where the scale is not learned yet; the direct value does
+    // neither but is noisier), confirmed over several frames. Above
+    // kTofAcquireMinSpeed only the hints' directions and the taus that agree
+    // with them are searched (the agreement is checked exactly below); with
+    // no hint that fast, both directions, every usable tau.
+    const int64_t hints[2] = {in.v_fused, in.v_direct};
+    bool guided = false;
+    for (int64_t h : hints) guided = guided || abs64(h) > kAcquireMinSpeedQ16;
+    const int64_t num = int64_t{in.baseline < 0 ? -in.baseline : in.baseline} * 1000000000;  // Q24 m ns
     Candidate best{};
     bool any = false;
     for (int trail = 0; trail < 2; ++trail) {
-      if (guided && (trail == 0) != (vf > 0)) continue;
+      int64_t min_ns = guided ? kTofMaxTauNs : 0, max_ns = guided ? 0 : kTofMaxTauNs;
+      for (int64_t h : hints) {
+        if (!guided || !guiding(h, trail)) continue;
+        const int64_t fast = ((kOneQ16 + kAgreementQ16) * abs64(h)) >> 16, slow = ((kOneQ16 - kAgreementQ16) * abs64(h)) >> 16;
+        min_ns = std::min<int64_t>(min_ns, int64_t{fx::div_q(num, fast * 256, 0)} - frame_ns);
+        max_ns = std::max<int64_t>(max_ns, slow > 0 ? int64_t{fx::div_q(num, slow * 256, 0)} + frame_ns : kTofMaxTauNs);
+      }
+      max_ns = std::min<int64_t>(max_ns, kTofMaxTauNs);
+      if (min_ns >= max_ns) continue;  // no hint in this direction
       Candidate c{};
       if (!search(in, trail, 0, min_ns, max_ns, c)) continue;
       const SpeedQ16 v = speed_of(in.baseline, c.stau_ns > 0 ? 1 : -1, abs64(c.stau_ns));
-      if (guided && abs64(int64_t{v} - vf) > ((kAgreementQ16 * abs64(vf)) >> 16)) continue;
+      bool agrees = !guided;
+      for (int64_t h : hints)
+        agrees = agrees || (guiding(h, trail) && abs64(int64_t{v} - h) <= ((kAgreementQ16 * abs64(h)) >> 16));
+      if (!agrees) continue;
       if (!any || c.res < best.res) {
         best = c;
         any = true;

@@ -16,6 +16,9 @@ double gate_ns(double tau_ns, double frame_ns) {
   return std::max(kTofTrackGateFrames * frame_ns, kTofTrackGateFraction * std::fabs(tau_ns));
 }
 
+// (the core's guiding)
+bool guiding(double v_hint, int trail) { return std::fabs(v_hint) > kTofAcquireMinSpeed && (trail == 0) == (v_hint > 0); }
+
 }  // namespace
 
 void FloatTimeOfFlight::reset() { *this = FloatTimeOfFlight{}; }
@@ -72,7 +75,7 @@ bool FloatTimeOfFlight::search(int trail, double max_rotation, double want_ns, d
   return found;
 }
 
-FloatTofResult FloatTimeOfFlight::track(double baseline, double max_rotation, double v_fused) {
+FloatTofResult FloatTimeOfFlight::track(double baseline, double max_rotation, double v_fused, double v_direct) {
   FloatTofResult r;
   if (ring_.size() < 3) {
     misses_ = 255;
@@ -92,21 +95,28 @@ FloatTofResult FloatTimeOfFlight::track(double baseline, double max_rotation, do
   }
   if (!have) {
     if (misses_ < 255) ++misses_;
-    const bool guided = std::fabs(v_fused) > kTofAcquireMinSpeed;
-    double min_ns = 0, max_ns = kTofMaxTau * 1e9;
-    if (guided) {
-      const double num = std::fabs(baseline) * 1e9;
-      min_ns = num / ((1 + kTofAcquireAgreement) * std::fabs(v_fused)) - frame_ns;
-      max_ns = std::min(max_ns, num / ((1 - kTofAcquireAgreement) * std::fabs(v_fused)) + frame_ns);
-    }
+    // (The core's comment: a new track agrees with the fused V or the direct value.)
+    const double hints[2] = {v_fused, v_direct};
+    bool guided = false;
+    for (double h : hints) guided = guided || std::fabs(h) > kTofAcquireMinSpeed;
+    const double num = std::fabs(baseline) * 1e9;
     Candidate best;
     bool any = false;
     for (int trail = 0; trail < 2; ++trail) {
-      if (guided && (trail == 0) != (v_fused > 0)) continue;
+      double min_ns = guided ? kTofMaxTau * 1e9 : 0, max_ns = guided ? 0 : kTofMaxTau * 1e9;
+      for (double h : hints) {
+        if (!guided || !guiding(h, trail)) continue;
+        min_ns = std::min(min_ns, num / ((1 + kTofAcquireAgreement) * std::fabs(h)) - frame_ns);
+        max_ns = std::max(max_ns, num / ((1 - kTofAcquireAgreement) * std::fabs(h)) + frame_ns);
+      }
+      max_ns = std::min(max_ns, kTofMaxTau * 1e9);
+      if (min_ns >= max_ns) continue;
       Candidate c;
       if (!search(trail, max_rotation, 0, min_ns, max_ns, c)) continue;
       const double v = (c.stau_ns > 0 ? baseline : -baseline) * 1e9 / std::fabs(c.stau_ns);
-      if (guided && std::fabs(v - v_fused) > kTofAcquireAgreement * std::fabs(v_fused)) continue;
+      bool agrees = !guided;
+      for (double h : hints) agrees = agrees || (guiding(h, trail) && std::fabs(v - h) <= kTofAcquireAgreement * std::fabs(h));
+      if (!agrees) continue;
       if (!any || c.res < best.res) {
         best = c;
         any = true;

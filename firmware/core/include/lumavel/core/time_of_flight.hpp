@@ -55,7 +55,8 @@ struct TofResult {
 struct TofTrackInput {
   LengthQ24 baseline;          // h (signed: x of cam1 minus x of cam0)
   AngleQ28 max_rotation;       // rotation allowed between the sightings
-  SpeedQ16 v_fused;            // the current fused velocity (a new track must agree with it)
+  SpeedQ16 v_fused;            // the current fused velocity (a new track must agree with it ...
+  SpeedQ16 v_direct;           // ... or with this frame's direct value, scaled; v_fused without one)
   uint8_t count;               // kernels
 };
 

@@ -78,6 +78,10 @@ class VelocityFusion {
   // texture) and before the first one (0).
   SpeedQ16 v() const { return v_; }
   ScaleQ24 scale() const { return scale_; }
+  // A differential value divided by the learned scale.
+  SpeedQ16 rescaled(SpeedQ16 v_differential) const {
+    return fx::sat32(fx::shr_round(int64_t{v_differential} * inv_scale_, fx::kScaleFrac));
+  }
 
  private:
   bool started_ = false;

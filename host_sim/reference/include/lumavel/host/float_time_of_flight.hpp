@@ -28,7 +28,7 @@ class FloatTimeOfFlight {
  public:
   void reset();
   void push(const FloatTofFrame& frame);
-  FloatTofResult track(double baseline, double max_rotation, double v_fused);
+  FloatTofResult track(double baseline, double max_rotation, double v_fused, double v_direct);
 
  private:
   struct Candidate {
