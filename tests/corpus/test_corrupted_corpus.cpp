@@ -81,6 +81,13 @@ const std::vector<RecordingCase>& recording_corpus() {
       {"image file missing", [](const std::string& m) { std::remove((m + image(0, 6)).c_str()); }, "does not exist"},
       {"NaN gyro rate", [](const std::string& m) { set_field(m + "imu0/data.csv", 12, 3, "nan"); }, "not finite"},
       {"1e999 gyro rate", [](const std::string& m) { set_field(m + "imu0/data.csv", 12, 3, "1e999"); }, "beyond the largest number"},
+      {"1e300 gyro rate", [](const std::string& m) { set_field(m + "imu0/data.csv", 20, 3, "1e300"); },
+       "imu0/data.csv:20: column 'w_RS_S_z [rad s^-1]': 1e300 is beyond +-1000"},
+      {"1e30 rad/s on an axis the rig does not use",
+       [](const std::string& m) { set_field(m + "imu0/data.csv", 12, 1, "1e30"); },
+       "imu0/data.csv:12: column 'w_RS_S_x [rad s^-1]': 1e30 is beyond +-1000"},
+      {"-2e6 m/s^2 acceleration", [](const std::string& m) { set_field(m + "imu0/data.csv", 12, 5, "-2e6"); },
+       "-2e6 is beyond +-100000, more than any IMU measures"},
       {"text in a gyro rate", [](const std::string& m) { set_field(m + "imu0/data.csv", 12, 2, "abc"); },
        "'abc' is not a number"},
       {"empty gyro field", [](const std::string& m) { set_field(m + "imu0/data.csv", 12, 1, ""); }, "is empty"},
@@ -180,8 +187,8 @@ const std::vector<RecordingCase>& recording_corpus() {
          filter_gyro(m, [](uint64_t t) { return t < 1020000000ull || t > 1090000000ull; });
        },
        nullptr, kStatusGyroGap},
-      {"1e300 gyro sample (saturated)", [](const std::string& m) { set_field(m + "imu0/data.csv", 20, 3, "1e300"); },
-       nullptr, kStatusSaturated},
+      {"200 rad/s gyro sample (beyond the device's rail: saturated)",
+       [](const std::string& m) { set_field(m + "imu0/data.csv", 20, 3, "200"); }, nullptr, kStatusSaturated},
       {"both cameras the same images",
        [](const std::string& m) {
          for (int f = 0; f < 12; ++f) fixture::write_text(m + image(1, f), fixture::read_text(m + image(0, f)));

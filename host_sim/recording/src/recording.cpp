@@ -95,10 +95,15 @@ std::vector<ImuSample> read_imu(const std::string& csv) {
   for_each_csv_row(csv, layout::imu_columns(), [&](const CsvRow& r) {
     ImuSample s;
     s.t_ns = r.t_ns;
-    for (int k = 0; k < 3; ++k) {
-      s.w[k] = parse_finite(r.fields[static_cast<size_t>(k)], csv, r.line, layout::imu_columns()[static_cast<size_t>(k)]);
-      s.a[k] = parse_finite(r.fields[static_cast<size_t>(k + 3)], csv, r.line,
-                            layout::imu_columns()[static_cast<size_t>(k + 3)]);
+    for (int k = 0; k < 6; ++k) {
+      const std::string& column = layout::imu_columns()[static_cast<size_t>(k)];
+      const double v = parse_finite(r.fields[static_cast<size_t>(k)], csv, r.line, column);
+      const double limit = k < 3 ? layout::kImuMaxRateRadps : layout::kImuMaxAccelMps2;
+      if (std::fabs(v) > limit)
+        throw recording_error_at(csv, r.line,
+                                 "column '" + column + "': " + r.fields[static_cast<size_t>(k)] + " is beyond +-" +
+                                     format_double(limit) + ", more than any IMU measures: a corrupt value");
+      (k < 3 ? s.w[k] : s.a[k - 3]) = v;
     }
     out.push_back(s);
   });

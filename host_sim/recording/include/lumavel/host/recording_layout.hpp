@@ -22,6 +22,13 @@ inline const std::vector<std::string>& imu_columns() {
     "a_RS_S_x [m s^-2]",   "a_RS_S_y [m s^-2]",   "a_RS_S_z [m s^-2]"};
   return v;
 }
+// The largest magnitudes an IMU row may hold: far beyond any MEMS part
+// (gyros rail near 35-70 rad/s, accelerometers near 4000 m/s^2), so that only
+// a corrupt value is refused; a plausible rate beyond the device's range is
+// the engines' to flag (SATURATED).
+constexpr double kImuMaxRateRadps = 1000;
+constexpr double kImuMaxAccelMps2 = 100000;
+
 inline const std::vector<std::string>& groundtruth_columns() {
   static const std::vector<std::string> v = {
     "p_RS_R_x [m]",          "p_RS_R_y [m]",          "p_RS_R_z [m]",          "q_RS_w []",
