@@ -20,3 +20,15 @@ TEST(Crc16, ContinuesAcrossCalls) {
   const uint8_t b[] = {1, 2, 3, 4, 5, 6, 7};
   CHECK_EQUAL(crc16(b, 7), crc16(b + 3, 4, crc16(b, 3)));
 }
+
+// The definition, a bit at a time: the byte-wise form must give the same CRC
+// for every byte value from every register state.
+TEST(Crc16, ByteStepEqualsTheBitwiseDefinition) {
+  for (uint32_t reg = 0; reg < 0x10000u; reg += 7)
+    for (uint32_t byte = 0; byte < 256; ++byte) {
+      uint32_t c = reg ^ (byte << 8);
+      for (int b = 0; b < 8; ++b) c = ((c & 0x8000u) ? ((c << 1) ^ 0x1021u) : (c << 1)) & 0xFFFFu;
+      const uint8_t d = static_cast<uint8_t>(byte);
+      LONGS_EQUAL(c, crc16(&d, 1, static_cast<uint16_t>(reg)));
+    }
+}
