@@ -27,7 +27,7 @@ uint64_t magnitude(int64_t rate_sum, uint64_t dt_ns, bool* negative) {
 int64_t angle_of_sum(int64_t rate_sum, uint64_t dt_ns) {
   bool neg = false;
   const uint64_t m = magnitude(rate_sum, dt_ns, &neg);
-  const auto a = static_cast<int64_t>((m + kDivisor / 2) / kDivisor);
+  const auto a = static_cast<int64_t>(fx::udiv_trunc(m + kDivisor / 2, kDivisor));
   return neg ? -a : a;
 }
 
@@ -58,8 +58,9 @@ void GyroIntegrator::push(uint64_t t_ns, RateQ24 rate) {
   // remainder): no rounding accumulates however long the stream runs.
   bool neg = false;
   const uint64_t m = magnitude(int64_t{r_[0]} + r_[1], dt, &neg);
-  const auto q = static_cast<int64_t>(m / kDivisor);
-  const auto r = static_cast<int64_t>(m % kDivisor);
+  uint64_t rem = 0;
+  const auto q = static_cast<int64_t>(fx::udiv_trunc(m, kDivisor, &rem));
+  const auto r = static_cast<int64_t>(rem);
   sum_ += neg ? -q : q;
   sum_rem_ += neg ? -r : r;
   if (sum_rem_ < 0) {

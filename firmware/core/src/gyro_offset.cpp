@@ -60,9 +60,10 @@ int64_t GyroOffset::take_angle_over(int64_t dt_ns) {
   // Q24 rad/s * ns -> Q28 rad: * 16 / 1e9. Whole seconds apart, so that no
   // gap overflows; the remainder of the rest carried (floor division).
   constexpr int64_t kNsPerS = 1000000000, kDiv = 62500000;
-  const int64_t secs = dt_ns / kNsPerS, ns = dt_ns % kNsPerS;
+  int64_t ns = 0, r = 0;
+  const int64_t secs = fx::div_trunc(dt_ns, kNsPerS, &ns);
   const int64_t x = int64_t{offset_} * ns + angle_rem_;  // |.| < 2^31 * 1e9 + kDiv < 2^61
-  int64_t q = x / kDiv, r = x % kDiv;
+  int64_t q = fx::div_trunc(x, kDiv, &r);
   if (r < 0) {
     r += kDiv;
     --q;

@@ -161,7 +161,7 @@ constexpr int64_t kTwoPiQ28Whole = 1686629713;
 constexpr int64_t kTwoPiQ28FracQ32 = 280256794;
 
 AngleQ28 wrap_pi(int64_t a) {
-  int64_t k = a / kTwoPiQ28Whole;  // turns, within one of the answer
+  int64_t k = div_trunc(a, kTwoPiQ28Whole);  // turns, within one of the answer
   auto rest = [a](int64_t turns) { return a - turns * kTwoPiQ28Whole - shr_round(turns * kTwoPiQ28FracQ32, 32); };
   int64_t r = rest(k);
   while (r >= kPiQ28) r = rest(++k);

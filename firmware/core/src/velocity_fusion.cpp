@@ -164,7 +164,7 @@ int64_t VelocityFusion::lag_compensation(const FusionInput& in, int64_t dt_us) {
   // sigma^2 dt / (2 tau_a + dt), sigma^2 = var / 2; and of the differential's
   // own floor (kFusionDiffFloor of the speed: a lag below it is not one the
   // differential can tell from its texture's slow errors).
-  const int64_t c = clamp64(int64_t{accel_} * tau_us / 1000000, -kLagMaxQ16, kLagMaxQ16);  // Q16
+  const int64_t c = clamp64(fx::div_trunc(int64_t{accel_} * tau_us, 1000000), -kLagMaxQ16, kLagMaxQ16);  // Q16
   const int64_t floor_sd = (kDiffFloorQ16 * std::min(abs64(in.v_differential), kLagMaxQ16)) >> 16;  // Q16
   const int64_t var_c =
       (((direct_var_ >> 1) * fx::fraction_q16(dt_us, 2 * kAccelTauUs + dt_us)) >> 16) + floor_sd * floor_sd;  // Q32

@@ -113,7 +113,7 @@ ObserverOutput VelocityObserver::update(const ObserverInput& in) {
   // texture appearing or vanishing between frames (lights, occlusion) is not
   // read as motion.
   const int64_t ss_min = ss_cur < ss_prev ? ss_cur : ss_prev;
-  out.texture = count ? static_cast<ValueQ28>(fx::isqrt64(static_cast<uint64_t>(ss_min / count))) : 0;
+  out.texture = count ? static_cast<ValueQ28>(fx::isqrt64(fx::udiv_trunc(static_cast<uint64_t>(ss_min), count))) : 0;
   int64_t num = 0, den = 0;  // Q56
   int32_t a_used[kMaxKernels];
   int32_t half[kMaxKernels];  // x_k, Q28
@@ -151,7 +151,7 @@ ObserverOutput VelocityObserver::update(const ObserverInput& in) {
     started_ = true;
     since_start_ns_ = 0;
   } else {
-    v_ = observer_step(v_, v_direct, in.dt_ns / 1000, in.tau_us, &sat);
+    v_ = observer_step(v_, v_direct, fx::div_trunc(in.dt_ns, 1000), in.tau_us, &sat);
     since_start_ns_ += in.dt_ns;
   }
   out.v = v_;

@@ -13,9 +13,9 @@ constexpr bool kDivide64By32 = true;
 constexpr bool kDivide64By32 = false;
 #endif
 
-// a / b truncated toward zero and a % b with the sign of a, as the built-in
-// operators (b > 0).
-int64_t div_trunc(int64_t a, int64_t b, int64_t* r = nullptr) {
+}  // namespace
+
+int64_t div_trunc(int64_t a, int64_t b, int64_t* r) {
   if (!kDivide64By32 || b > int64_t{0xFFFFFFFF} || a == INT64_MIN) {
     if (r) *r = a % b;
     return a / b;
@@ -27,7 +27,16 @@ int64_t div_trunc(int64_t a, int64_t b, int64_t* r = nullptr) {
   return a < 0 ? -q : q;
 }
 
-}  // namespace
+uint64_t udiv_trunc(uint64_t a, uint64_t b, uint64_t* r) {
+  if (!kDivide64By32 || b > uint64_t{0xFFFFFFFF}) {
+    if (r) *r = a % b;
+    return a / b;
+  }
+  uint32_t rm = 0;
+  const uint64_t q = udivmod64_32(a, static_cast<uint32_t>(b), &rm);
+  if (r) *r = rm;
+  return q;
+}
 
 uint64_t udivmod64_32(uint64_t n, uint32_t d, uint32_t* rem) {
   const uint32_t hi = static_cast<uint32_t>(n >> 32);

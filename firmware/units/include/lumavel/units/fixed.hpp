@@ -133,6 +133,15 @@ constexpr int64_t shr_round(int64_t v, int s) {
 // the quotient and remainder are the same, bit for bit.
 uint64_t udivmod64_32(uint64_t n, uint32_t d, uint32_t* rem);
 
+// a / b truncated toward zero and a % b (*r, if given) with the sign of a,
+// exactly as the built-in operators (b > 0), through udivmod64_32 where that
+// is the cheaper route and b < 2^32: for the per-frame 64-bit divisions by
+// constants (ns per s, the gyro's scale), which a 32-bit core otherwise
+// sends to the generic library routine.
+int64_t div_trunc(int64_t a, int64_t b, int64_t* r = nullptr);
+// The same for unsigned operands.
+uint64_t udiv_trunc(uint64_t a, uint64_t b, uint64_t* r = nullptr);
+
 // Rounded, saturated quotient num/den in Q(q) (0 <= q <= 62; beyond 31 the
 // scale moves into num or den). A zero
 // denominator saturates toward the sign of num and sets *saturated.
