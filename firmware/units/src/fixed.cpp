@@ -3,41 +3,6 @@
 #include <cstdint>
 
 namespace lumavel::fx {
-namespace {
-
-// Where a 32-bit divider is in hardware and a 64-bit one is not, div_q's
-// divisions by a 32-bit denominator go through udivmod64_32.
-#if defined(__ARM_FEATURE_IDIV) || (defined(__riscv) && defined(__riscv_div) && __riscv_xlen == 32)
-constexpr bool kDivide64By32 = true;
-#else
-constexpr bool kDivide64By32 = false;
-#endif
-
-}  // namespace
-
-int64_t div_trunc(int64_t a, int64_t b, int64_t* r) {
-  if (!kDivide64By32 || b > int64_t{0xFFFFFFFF} || a == INT64_MIN) {
-    if (r) *r = a % b;
-    return a / b;
-  }
-  uint32_t rm = 0;
-  const uint64_t m = static_cast<uint64_t>(a < 0 ? -a : a);
-  const int64_t q = static_cast<int64_t>(udivmod64_32(m, static_cast<uint32_t>(b), &rm));  // < 2^63
-  if (r) *r = a < 0 ? -int64_t{rm} : int64_t{rm};
-  return a < 0 ? -q : q;
-}
-
-uint64_t udiv_trunc(uint64_t a, uint64_t b, uint64_t* r) {
-  if (!kDivide64By32 || b > uint64_t{0xFFFFFFFF}) {
-    if (r) *r = a % b;
-    return a / b;
-  }
-  uint32_t rm = 0;
-  const uint64_t q = udivmod64_32(a, static_cast<uint32_t>(b), &rm);
-  if (r) *r = rm;
-  return q;
-}
-
 uint64_t udivmod64_32(uint64_t n, uint32_t d, uint32_t* rem) {
   const uint32_t hi = static_cast<uint32_t>(n >> 32);
   if (hi == 0) {  // one 32-bit division

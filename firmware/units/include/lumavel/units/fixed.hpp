@@ -133,14 +133,42 @@ constexpr int64_t shr_round(int64_t v, int s) {
 // the quotient and remainder are the same, bit for bit.
 uint64_t udivmod64_32(uint64_t n, uint32_t d, uint32_t* rem);
 
+// Where a 32-bit divider is in hardware and a 64-bit one is not, 64-bit
+// divisions by a 32-bit denominator go through udivmod64_32.
+#if defined(__ARM_FEATURE_IDIV) || (defined(__riscv) && defined(__riscv_div) && __riscv_xlen == 32)
+constexpr bool kDivide64By32 = true;
+#else
+constexpr bool kDivide64By32 = false;
+#endif
+
 // a / b truncated toward zero and a % b (*r, if given) with the sign of a,
 // exactly as the built-in operators (b > 0), through udivmod64_32 where that
-// is the cheaper route and b < 2^32: for the per-frame 64-bit divisions by
+// is the cheaper route and b < 2^32: for per-frame 64-bit divisions by
 // constants (ns per s, the gyro's scale), which a 32-bit core otherwise
-// sends to the generic library routine.
-int64_t div_trunc(int64_t a, int64_t b, int64_t* r = nullptr);
+// sends to the generic library routine. Inline: elsewhere it is the operator.
+inline int64_t div_trunc(int64_t a, int64_t b, int64_t* r = nullptr) {
+  if (!kDivide64By32 || b > int64_t{0xFFFFFFFF} || a == INT64_MIN) {
+    if (r) *r = a % b;
+    return a / b;
+  }
+  uint32_t rm = 0;
+  const uint64_t m = static_cast<uint64_t>(a < 0 ? -a : a);
+  const int64_t q = static_cast<int64_t>(udivmod64_32(m, static_cast<uint32_t>(b), &rm));  // < 2^63
+  if (r) *r = a < 0 ? -int64_t{rm} : int64_t{rm};
+  return a < 0 ? -q : q;
+}
+
 // The same for unsigned operands.
-uint64_t udiv_trunc(uint64_t a, uint64_t b, uint64_t* r = nullptr);
+inline uint64_t udiv_trunc(uint64_t a, uint64_t b, uint64_t* r = nullptr) {
+  if (!kDivide64By32 || b > uint64_t{0xFFFFFFFF}) {
+    if (r) *r = a % b;
+    return a / b;
+  }
+  uint32_t rm = 0;
+  const uint64_t q = udivmod64_32(a, static_cast<uint32_t>(b), &rm);
+  if (r) *r = rm;
+  return q;
+}
 
 // Rounded, saturated quotient num/den in Q(q) (0 <= q <= 62; beyond 31 the
 // scale moves into num or den). A zero
