@@ -15,10 +15,18 @@ using namespace kdot;
 // C is 2^-2 x lean x E in its units, the same size.)
 constexpr int kEdgeScaleBits = 6;  // C is 2^6 x lean x E
 int edge_scale_bits(const ColumnProfile& p) { return p.q8 ? kEdgeScaleBits - 8 : kEdgeScaleBits; }
-void edge_correction(const ColumnProfile& p, const LeanQ24* lean, int32_t* c) {
-  const int shift = fx::kLeanFrac + 2 - edge_scale_bits(p);
+template <int Shift>
+void edge_correction_by(const ColumnProfile& p, const LeanQ24* lean, int32_t* c) {
   for (uint16_t u = 0; u < p.width && u < kBandColumns; ++u)
-    c[u] = static_cast<int32_t>(fx::shr_round(int64_t{lean[u]} * p.edge4[u], shift));
+    c[u] = static_cast<int32_t>(fx::shr_round(int64_t{lean[u]} * p.edge4[u], Shift));
+}
+// (The shift a constant for each kind of profile: a 64-bit shift by a
+// variable count is a dozen instructions a column on a 32-bit core.)
+void edge_correction(const ColumnProfile& p, const LeanQ24* lean, int32_t* c) {
+  if (p.q8)
+    edge_correction_by<fx::kLeanFrac + 2 - (kEdgeScaleBits - 8)>(p, lean, c);
+  else
+    edge_correction_by<fx::kLeanFrac + 2 - kEdgeScaleBits>(p, lean, c);
 }
 
 struct CameraOutputs {
@@ -37,30 +45,48 @@ void camera_outputs(const ColumnProfile& p, const CameraKernels& ck, uint8_t cou
                     CameraOutputs& out) {
   out.no_light = false;
   out.saturated = false;
-  const int64_t n = dot(ck.norm, p);
+  // The dot products in pairs that share the profile (kdot::dot2): the same sums.
+  int64_t n = 0, n_d = 0;
+  dot2(ck.norm, ck.norm_d, p, &n, &n_d);
   if (n <= 0) {
     out.no_light = true;
     for (uint8_t k = 0; k < count; ++k) out.f[k] = out.r[k] = out.c[k] = 0;
     return;
   }
+  int64_t bk[kMaxKernels], bd[kMaxKernels], bt[kMaxKernels];
+  for (uint8_t k = 0; k < count; ++k) dot2(ck.k[k], ck.d[k], p, &bk[k], &bd[k]);
+  uint8_t k = 0;
+  for (; k + 2 <= count; k = static_cast<uint8_t>(k + 2)) dot2(ck.t[k], ck.t[k + 1], p, &bt[k], &bt[k + 1]);
+  if (k < count) bt[k] = dot(ck.t[k], p);
+  // The edge-row correction's dot products (x 2^-kEdgeScaleBits, through each
+  // table's own B kernel), or none.
+  int64_t en = 0, ek[kMaxKernels] = {};
+  if (lean) {
+    int32_t c[kBandColumns];
+    edge_correction(p, lean, c);
+    k = 0;
+    for (; k + 2 <= count; k = static_cast<uint8_t>(k + 2))
+      dot_values2(ck.k[k], ck.k[k + 1], c, p.width, &ek[k], &ek[k + 1]);
+    if (k < count)
+      dot_values2(ck.k[k], ck.norm, c, p.width, &ek[k], &en);
+    else
+      en = dot_values(ck.norm, c, p.width);
+  }
   const Reciprocal inv = reciprocal(n);
   bool sat = false;
   // value of table t = w * 2^-(31 + exp): a ratio of two dots carries 2^(exp_n - exp_t).
-  int32_t c[kBandColumns];
-  if (lean) edge_correction(p, lean, c);
-  // A correction term: x 2^-kEdgeScaleBits, through each table's own B kernel.
-  const auto corr = [&](const KernelTable& t) {
-    return lean ? int64_t{ratio(dot_values(t, c, p.width), inv, fx::kSlopeFrac - edge_scale_bits(p) + ck.norm.exp - t.exp, &sat)} : 0;
+  const auto corr = [&](int64_t e, const KernelTable& t) {
+    return lean ? int64_t{ratio(e, inv, fx::kSlopeFrac - edge_scale_bits(p) + ck.norm.exp - t.exp, &sat)} : 0;
   };
   const SlopeQ20 dn_over_n = fx::sat32(
-      int64_t{ratio(dot(ck.norm_d, p), inv, fx::kSlopeFrac + ck.norm.exp - ck.norm_d.exp, &sat)} + corr(ck.norm), &sat);
-  for (uint8_t k = 0; k < count; ++k) {
-    const ValueQ28 f = ratio(dot(ck.k[k], p), inv, fx::kValueFrac + ck.norm.exp - ck.k[k].exp, &sat);
+      int64_t{ratio(n_d, inv, fx::kSlopeFrac + ck.norm.exp - ck.norm_d.exp, &sat)} + corr(en, ck.norm), &sat);
+  for (k = 0; k < count; ++k) {
+    const ValueQ28 f = ratio(bk[k], inv, fx::kValueFrac + ck.norm.exp - ck.k[k].exp, &sat);
     const SlopeQ20 db_over_n = fx::sat32(
-        int64_t{ratio(dot(ck.d[k], p), inv, fx::kSlopeFrac + ck.norm.exp - ck.d[k].exp, &sat)} + corr(ck.k[k]), &sat);
+        int64_t{ratio(bd[k], inv, fx::kSlopeFrac + ck.norm.exp - ck.d[k].exp, &sat)} + corr(ek[k], ck.k[k]), &sat);
     out.f[k] = f;
     // T is a 16-bit table: value = w * 2^-(15 + exp), a 2^16 larger step than a q31 table.
-    out.c[k] = ratio(dot(ck.t[k], p), inv, fx::kCurvFrac + ck.norm.exp - ck.t[k].exp + 16, &sat);
+    out.c[k] = ratio(bt[k], inv, fx::kCurvFrac + ck.norm.exp - ck.t[k].exp + 16, &sat);
     out.r[k] = fx::sat32(int64_t{db_over_n} - fx::shr_round(int64_t{f} * dn_over_n, fx::kValueFrac), &sat);
   }
   out.saturated = sat;

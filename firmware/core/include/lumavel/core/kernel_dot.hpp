@@ -31,6 +31,35 @@ inline int64_t mac4(const W* w, const S* s, uint16_t n) {
   return acc;
 }
 
+// Two weight vectors against one s in one pass: each s[u] loaded once for
+// both products, and one loop step for eight of them (the same two exact sums
+// as two mac4 calls).
+template <typename W, typename S>
+inline void mac4x2(const W* w1, const W* w2, const S* s, uint16_t n, int64_t* acc1, int64_t* acc2) {
+  int64_t a1 = 0, a2 = 0;
+  const S* const end4 = s + (n & ~3u);
+  const S* const end = s + n;
+  while (s != end4) {
+    a1 += int64_t{w1[0]} * s[0];
+    a2 += int64_t{w2[0]} * s[0];
+    a1 += int64_t{w1[1]} * s[1];
+    a2 += int64_t{w2[1]} * s[1];
+    a1 += int64_t{w1[2]} * s[2];
+    a2 += int64_t{w2[2]} * s[2];
+    a1 += int64_t{w1[3]} * s[3];
+    a2 += int64_t{w2[3]} * s[3];
+    w1 += 4;
+    w2 += 4;
+    s += 4;
+  }
+  while (s != end) {
+    a1 += int64_t{*w1++} * *s;
+    a2 += int64_t{*w2++} * *s++;
+  }
+  *acc1 = a1;
+  *acc2 = a2;
+}
+
 #if defined(__ARM_ARCH_6M__)
 // sum_u w[u] * (s[u] >> Shift) for sums (so shifted) in [0, 2^15), without a
 // 32 x 32 -> 64 multiply (M0/M0+: a library call per column): w = hi 2^16 +
@@ -78,8 +107,24 @@ inline int64_t dot(const KernelTable16& t, const ColumnProfile& p) {
   return acc + mac4(t.w, p.sum, p.width);
 }
 
+// dot(a, p) and dot(b, p) in one pass where the core has a 32 x 32 -> 64
+// multiply; on M0/M0+ the two dots above (their 16-bit halves).
+template <typename T>
+inline void dot2(const T& a, const T& b, const ColumnProfile& p, int64_t* da, int64_t* db) {
+#if defined(__ARM_ARCH_6M__)
+  *da = dot(a, p);
+  *db = dot(b, p);
+#else
+  mac4x2(a.w, b.w, p.sum, p.width, da, db);
+#endif
+}
+
 // sum_u w[u] * v[u] for the edge-row profile (|v| < 2^23, as a banded sum).
 inline int64_t dot_values(const KernelTable& t, const int32_t* v, uint16_t width) { return mac4(t.w, v, width); }
+inline void dot_values2(const KernelTable& a, const KernelTable& b, const int32_t* v, uint16_t width, int64_t* da,
+                        int64_t* db) {
+  mac4x2(a.w, b.w, v, width, da, db);
+}
 
 // 1/N as a 31-bit mantissa and a power of two, so that each ratio X/N is
 // one 32x32->64 multiply instead of a 64-bit division (no divider on M0, a
