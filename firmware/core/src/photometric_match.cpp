@@ -122,12 +122,19 @@ void PhotometricMatch::jacobian(const ColumnProfile& p1, const ColumnBand* band,
                           kdot::dot_values(ck.norm, db, p1.width), {}};
     for (uint8_t k = 0; k < count; ++k) beta_dots_.k[k] = kdot::dot_values(ck.k[k], db, p1.width);
   }
+  // The image's two columns of derivatives against each table in one pass
+  // where the core allows (kdot::dot_values_shared: each weight loaded once for both).
+  int64_t dots_norm[kMatchParams], dots_k[kMatchParams][kMaxKernels];
+  kdot::dot_values_shared(ck.norm, du[0], du[1], p1.width, &dots_norm[0], &dots_norm[1]);
+  for (uint8_t k = 0; k < count; ++k)
+    kdot::dot_values_shared(ck.k[k], du[0], du[1], p1.width, &dots_k[0][k], &dots_k[1][k]);
+  static_assert(kMatchParams == 3, "two image parameters and the black level");
   for (int j = 0; j < kMatchParams; ++j) {
     // dF/dp = (dB/dp - F dN/dp) / N
-    const int64_t dot_norm = j < 2 ? kdot::dot_values(ck.norm, du[j], p1.width) : beta_dots_.norm;
+    const int64_t dot_norm = j < 2 ? dots_norm[j] : beta_dots_.norm;
     const int64_t dn = kdot::ratio(dot_norm, inv, fx::kValueFrac, &sat);
     for (uint8_t k = 0; k < count; ++k) {
-      const int64_t dot_k = j < 2 ? kdot::dot_values(ck.k[k], du[j], p1.width) : beta_dots_.k[k];
+      const int64_t dot_k = j < 2 ? dots_k[j][k] : beta_dots_.k[k];
       const int64_t db = kdot::ratio(dot_k, inv, fx::kValueFrac + ck.norm.exp - ck.k[k].exp, &sat);
       jac[k][j] = fx::sat32(db - fx::shr_round(int64_t{f1[k]} * dn, fx::kValueFrac));
     }
