@@ -10,6 +10,7 @@
 #include <string>
 
 #include "lumavel/host/calibrate.hpp"
+#include "lumavel/host/cli.hpp"
 #include "lumavel/host/device_setup_from_rig.hpp"
 #include "lumavel/host/path_check.hpp"
 #include "lumavel/host/progress.hpp"

@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "lumavel/host/cli.hpp"
 #include "lumavel/host/image_io.hpp"
 #include "lumavel/host/recording_writer.hpp"
 #include "lumavel/host/rig.hpp"

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <string>
 
+#include "lumavel/host/cli.hpp"
 #include "lumavel/host/path_check.hpp"
 #include "lumavel/host/recording.hpp"
 #include "lumavel/host/rig.hpp"

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "lumavel/core/status.hpp"
+#include "lumavel/host/cli.hpp"
 #include "lumavel/host/recording.hpp"
 #include "lumavel/host/render/frame_renderer.hpp"
 #include "lumavel/host/render/scenario_loader.hpp"

@@ -14,6 +14,7 @@
 
 #include "lumavel/core/clip_match.hpp"
 #include "lumavel/core/status.hpp"
+#include "lumavel/host/cli.hpp"
 #include "lumavel/host/file_config_store.hpp"
 #include "lumavel/host/hid_link.hpp"
 #include "lumavel/host/hid_sender.hpp"

@@ -1,6 +1,9 @@
 // `lumavel-sim run`: the command line and the report around run_recording().
 #pragma once
-#include "lumavel/host/cli.hpp"
+
+namespace lumavel::cli {
+class Tool;  // lumavel/host/cli.hpp (CLI11): only the command's own source needs it
+}  // namespace lumavel::cli
 
 namespace lumavel::host {
 

@@ -6,7 +6,10 @@
 #include <cstddef>
 #include <string>
 
-#include "lumavel/host/cli.hpp"
+
+namespace lumavel::cli {
+class Tool;  // lumavel/host/cli.hpp (CLI11): only the command's own source needs it
+}  // namespace lumavel::cli
 
 namespace lumavel::host {
 

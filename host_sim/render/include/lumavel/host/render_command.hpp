@@ -2,7 +2,10 @@
 // recording (the recording format: docs/recording-format.md; scenario keys:
 // host_sim/scenarios/README.md) from a YAML scenario.
 #pragma once
-#include "lumavel/host/cli.hpp"
+
+namespace lumavel::cli {
+class Tool;  // lumavel/host/cli.hpp (CLI11): only the command's own source needs it
+}  // namespace lumavel::cli
 
 namespace lumavel::host {
 

@@ -1,7 +1,10 @@
 // `lumavel-sim reproduce`: renders and runs the paper's studies and writes
 // docs/results.md (the paper's figures and ours side by side, both engines).
 #pragma once
-#include "lumavel/host/cli.hpp"
+
+namespace lumavel::cli {
+class Tool;  // lumavel/host/cli.hpp (CLI11): only the command's own source needs it
+}  // namespace lumavel::cli
 
 namespace lumavel::host {
 
