@@ -124,11 +124,11 @@ void PhotometricMatch::jacobian(const ColumnProfile& p1, const ColumnBand* band,
   }
   // The image's two columns of derivatives against each table in one pass
   // where the core allows (kdot::dot_values_shared: each weight loaded once for both).
-  int64_t dots_norm[kMatchParams], dots_k[kMatchParams][kMaxKernels];
+  static_assert(kMatchParams == 3, "two image parameters and the black level");
+  int64_t dots_norm[2], dots_k[2][kMaxKernels];
   kdot::dot_values_shared(ck.norm, du[0], du[1], p1.width, &dots_norm[0], &dots_norm[1]);
   for (uint8_t k = 0; k < count; ++k)
     kdot::dot_values_shared(ck.k[k], du[0], du[1], p1.width, &dots_k[0][k], &dots_k[1][k]);
-  static_assert(kMatchParams == 3, "two image parameters and the black level");
   for (int j = 0; j < kMatchParams; ++j) {
     // dF/dp = (dB/dp - F dN/dp) / N
     const int64_t dot_norm = j < 2 ? dots_norm[j] : beta_dots_.norm;

@@ -1,9 +1,6 @@
 // `lumavel-sim run`: the command line and the report around run_recording().
 #pragma once
-
-namespace lumavel::cli {
-class Tool;  // lumavel/host/cli.hpp (CLI11): only the command's own source needs it
-}  // namespace lumavel::cli
+#include "lumavel/host/cli_fwd.hpp"
 
 namespace lumavel::host {
 

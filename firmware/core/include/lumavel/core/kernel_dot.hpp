@@ -107,32 +107,32 @@ inline int64_t dot(const KernelTable16& t, const ColumnProfile& p) {
   return acc + mac4(t.w, p.sum, p.width);
 }
 
-// dot(a, p) and dot(b, p) in one pass where the core has a 32 x 32 -> 64
-// multiply; on M0/M0+ the two dots above (their 16-bit halves).
+// Paired products in one pass only where the registers hold two 64-bit sums
+// beside the loop's own: not on ARMv6-M or RV32E, whose 64-bit products are
+// library calls (paired, the M0+ frame took 1 900 instructions more; M0/M0+
+// take the kernel dots on 16-bit halves besides).
+#if defined(__ARM_ARCH_6M__) || defined(__riscv_32e) || defined(__riscv_e)
+constexpr bool kPairedDots = false;
+#else
+constexpr bool kPairedDots = true;
+#endif
+
+// dot(a, p) and dot(b, p), in one pass where kPairedDots.
 template <typename T>
 inline void dot2(const T& a, const T& b, const ColumnProfile& p, int64_t* da, int64_t* db) {
-#if defined(__ARM_ARCH_6M__)
-  *da = dot(a, p);
-  *db = dot(b, p);
-#else
-  mac4x2(a.w, b.w, p.sum, p.width, da, db);
-#endif
+  if (kPairedDots) {
+    mac4x2(a.w, b.w, p.sum, p.width, da, db);
+  } else {
+    *da = dot(a, p);
+    *db = dot(b, p);
+  }
 }
 
 // sum_u w[u] * v[u] for the edge-row profile (|v| < 2^23, as a banded sum).
 inline int64_t dot_values(const KernelTable& t, const int32_t* v, uint16_t width) { return mac4(t.w, v, width); }
-// Paired products in one pass only where the registers hold two 64-bit sums
-// beside the loop's own: not on ARMv6-M or RV32E, whose 64-bit products are
-// library calls (paired, the M0+ frame took 1 900 instructions more).
-#if defined(__ARM_ARCH_6M__) || defined(__riscv_32e) || defined(__riscv_e)
-constexpr bool kPairedValueDots = false;
-#else
-constexpr bool kPairedValueDots = true;
-#endif
-
 inline void dot_values2(const KernelTable& a, const KernelTable& b, const int32_t* v, uint16_t width, int64_t* da,
                         int64_t* db) {
-  if (kPairedValueDots) {
+  if (kPairedDots) {
     mac4x2(a.w, b.w, v, width, da, db);
   } else {
     *da = mac4(a.w, v, width);
@@ -143,7 +143,7 @@ inline void dot_values2(const KernelTable& a, const KernelTable& b, const int32_
 // One table against two value profiles.
 inline void dot_values_shared(const KernelTable& t, const int32_t* v0, const int32_t* v1, uint16_t width, int64_t* d0,
                               int64_t* d1) {
-  if (kPairedValueDots) {
+  if (kPairedDots) {
     mac4x2(v0, v1, t.w, width, d0, d1);
   } else {
     *d0 = mac4(t.w, v0, width);

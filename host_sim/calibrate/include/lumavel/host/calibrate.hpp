@@ -24,11 +24,8 @@
 #include <string>
 #include <vector>
 
+#include "lumavel/host/cli_fwd.hpp"
 #include "lumavel/host/recording.hpp"
-
-namespace lumavel::cli {
-class Tool;  // lumavel/host/cli.hpp (CLI11): only the command's own source needs it
-}  // namespace lumavel::cli
 
 namespace lumavel::host {
 

@@ -6,10 +6,7 @@
 #include <cstddef>
 #include <string>
 
-
-namespace lumavel::cli {
-class Tool;  // lumavel/host/cli.hpp (CLI11): only the command's own source needs it
-}  // namespace lumavel::cli
+#include "lumavel/host/cli_fwd.hpp"
 
 namespace lumavel::host {
 

@@ -2,10 +2,7 @@
 // recording (the recording format: docs/recording-format.md; scenario keys:
 // host_sim/scenarios/README.md) from a YAML scenario.
 #pragma once
-
-namespace lumavel::cli {
-class Tool;  // lumavel/host/cli.hpp (CLI11): only the command's own source needs it
-}  // namespace lumavel::cli
+#include "lumavel/host/cli_fwd.hpp"
 
 namespace lumavel::host {
 

@@ -1,10 +1,7 @@
 // `lumavel-sim reproduce`: renders and runs the paper's studies and writes
 // docs/results.md (the paper's figures and ours side by side, both engines).
 #pragma once
-
-namespace lumavel::cli {
-class Tool;  // lumavel/host/cli.hpp (CLI11): only the command's own source needs it
-}  // namespace lumavel::cli
+#include "lumavel/host/cli_fwd.hpp"
 
 namespace lumavel::host {
 
