@@ -49,6 +49,8 @@ ConfigError Estimator::configure(const EstimatorConfig& cfg) {
   tof_max_rotation_ = static_cast<AngleQ28>((kRotationQ16 * narrowest) >> 16);
   constexpr int64_t kMatchRotationQ16 = fx::q_of(params::kMatchMaxRotationSigma, 16);
   match_max_rotation_ = static_cast<AngleQ28>((kMatchRotationQ16 * narrowest) >> 16);
+  constexpr int64_t kScaleTurnQ16 = fx::q_of(params::kFusionScaleMaxTurnSigma, 16);
+  scale_max_turn_ = static_cast<AngleQ28>((kScaleTurnQ16 * narrowest) >> 16);
   // The lens tables are the caller's: the kernel tables are built from them now.
   cfg_.edge_offsets[0] = cfg_.edge_offsets[1] = nullptr;
   configured_ = true;
@@ -197,6 +199,7 @@ Estimate Estimator::step_profiles(uint64_t t_ns, ColumnProfile& p0, ColumnProfil
       fin.tof = &tof;
       fin.y = y_;
       fin.baseline = cfg_.baseline;
+      fin.scale_max_turn = scale_max_turn_;
       const FusionOutput fo = fusion_.update(fin);
       if (!fo.used_tof) status |= kStatusNoTof;
       if (fo.saturated) status |= kStatusSaturated;

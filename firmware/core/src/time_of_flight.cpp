@@ -70,9 +70,11 @@ bool TimeOfFlight::search(const TofTrackInput& in, int trail, int64_t want_ns, i
   }
   bool found = false;
   int64_t best_dd = 1, best_span = 0;  // of the best segment, for its uncertainty
+  int64_t turned = 0;  // |rotation| summed frame by frame back to a (Q28): a turn that reverses does not cancel
   for (uint16_t back = 0; back + 1 < count_; ++back) {
     const TofFrame& b = at(back);
     const TofFrame& a = at(static_cast<uint16_t>(back + 1));
+    turned += abs64(b.heading - a.heading);
     // Only segments whose time span reaches [min_ns, max_ns]; older ones lie further back.
     const int64_t lo = static_cast<int64_t>(now.t_ns - b.t_ns), hi = static_cast<int64_t>(now.t_ns - a.t_ns);
     if (lo > max_ns) break;
@@ -116,6 +118,7 @@ bool TimeOfFlight::search(const TofTrackInput& in, int trail, int64_t want_ns, i
     found = true;
     out.stau_ns = stau;
     out.res = res;
+    out.turn = static_cast<AngleQ28>(std::min<int64_t>(turned, fx::kInt32Max));
     best_dd = dd;
     best_span = span;
     out.y_then = a.y + static_cast<TravelQ16Ns>((fx::travel_between(b.y, a.y) * fr) >> 16);
@@ -206,6 +209,7 @@ TofResult TimeOfFlight::track(const TofTrackInput& in) {
   r.v = speed_of(in.baseline, r.direction, r.tau_ns);
   r.sig = fx::div_q(pick.sig_ns, r.tau_ns, fx::kFracFrac);
   r.y_then = pick.y_then;
+  r.turn = pick.turn;
   return r;
 }
 

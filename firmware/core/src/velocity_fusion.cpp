@@ -81,8 +81,9 @@ FusionOutput VelocityFusion::update(const FusionInput& in) {
     const bool whole_window = measured_us_ >= tau_us + dt_us;
     // q_short = kFusionScaleShortFrames dt / tau (tau_us > 0: tau >= 1 us)
     const int64_t q_short = fx::div_q(kShortFramesQ16 * dt_us, tau_us > 0 ? tau_us : 1, 0);
-    if (whole_window && q_res < kSoftCutQ16 && q_change < kSoftCutQ16 && q_short < kSoftCutQ16)
-      learn_scale(in, dt_us, q_res, q_change, q_short);
+    const int64_t q_turn = in.scale_max_turn > 0 ? fx::div_q(abs64(tof.turn), in.scale_max_turn, 16) : 0;
+    if (whole_window && q_res < kSoftCutQ16 && q_change < kSoftCutQ16 && q_short < kSoftCutQ16 && q_turn < kSoftCutQ16)
+      learn_scale(in, dt_us, q_res, q_change, q_short, q_turn);
   }
 
   const int64_t vd = fx::shr_round(int64_t{in.v_differential} * inv_scale_, fx::kScaleFrac) + lag_compensation(in, dt_us);  // Q16
@@ -186,7 +187,7 @@ int64_t VelocityFusion::lag_compensation(const FusionInput& in, int64_t dt_us) {
 }
 
 void VelocityFusion::learn_scale(const FusionInput& in, int64_t dt_us, int64_t q_res, int64_t q_change,
-                                 int64_t q_short) {
+                                 int64_t q_short, int64_t q_turn) {
   const TofResult& tof = *in.tof;
   const int64_t disp = int64_t{tof.direction} * in.baseline;  // Q24 m
   // travel (Q16 m/s x ns) over h (Q24 m) in Q24: travel 2^8 / (h 1e9); travel < 2^50 over the window
@@ -205,8 +206,9 @@ void VelocityFusion::learn_scale(const FusionInput& in, int64_t dt_us, int64_t q
       dt_us > 0 ? static_cast<int64_t>((static_cast<uint32_t>(tof.tau_ns) + dt32 - 1) / dt32) : 1;
   const int64_t r = ((sig * sig * 4) << 8) * (frames > 1 ? frames : 1);  // Q32 -> Q40, < 2^48
   // 1 + q_res^4 + q_change^4 + q_short^4 in Q16, < 244 with q < 3
-  const int64_t qr2 = (q_res * q_res) >> 16, qc2 = (q_change * q_change) >> 16, qs2 = (q_short * q_short) >> 16;
-  const int64_t penalty = kOneQ16 + ((qr2 * qr2) >> 16) + ((qc2 * qc2) >> 16) + ((qs2 * qs2) >> 16);
+  const int64_t qr2 = (q_res * q_res) >> 16, qc2 = (q_change * q_change) >> 16, qs2 = (q_short * q_short) >> 16,
+                qt2 = (q_turn * q_turn) >> 16;
+  const int64_t penalty = kOneQ16 + ((qr2 * qr2) >> 16) + ((qc2 * qc2) >> 16) + ((qs2 * qs2) >> 16) + ((qt2 * qt2) >> 16);
   const int64_t r_weighed = (r >> 16) * penalty;  // < 2^56
   // The gain in Q24 and rounded steps: the gain falls to 1e-4 and below
   // once the scale is known, where Q16 and truncation drift the scale by

@@ -25,6 +25,7 @@ FloatEstimator::FloatEstimator(const EstimatorSettings& s) : s_(s) {
   for (const KernelModel& k : s.kernels) narrowest = std::min(narrowest, k.sigma);
   tof_max_rotation_ = params::kTofMaxRotationSigma * narrowest;
   match_max_rotation_ = params::kMatchMaxRotationSigma * narrowest;
+  scale_max_turn_ = params::kFusionScaleMaxTurnSigma * narrowest;
   bank_ = build_float_kernel_bank(s_);
   balance_ = FloatPhotometricBalance(static_cast<int>(s_.kernels.size()));
 }
@@ -131,6 +132,7 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
       fin.tof = &tof;
       fin.y = y_;
       fin.baseline = s_.baseline;
+      fin.scale_max_turn = scale_max_turn_;
       const FloatFusionOutput fo = fusion_.update(fin);
       if (!fo.used_tof) status |= kStatusNoTof;
       est.tof_s = tof.ok ? tof.tau_ns * 1e-9 : 0;

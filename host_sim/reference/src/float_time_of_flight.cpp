@@ -37,9 +37,11 @@ bool FloatTimeOfFlight::search(int trail, double max_rotation, double want_ns, d
   const FloatTofFrame& before = at(1);
   const double motion = (now.f[trail] - before.f[trail]).squaredNorm();
   bool found = false;
+  double turned = 0;  // as the core: a turn that reverses does not cancel
   for (size_t back = 0; back + 1 < ring_.size(); ++back) {
     const FloatTofFrame& b = at(back);
     const FloatTofFrame& a = at(back + 1);
+    turned += std::fabs(b.heading - a.heading);
     const double lo = static_cast<double>(now.t_ns - b.t_ns), hi = static_cast<double>(now.t_ns - a.t_ns);
     if (lo > max_ns) break;
     if (hi < min_ns) continue;
@@ -71,6 +73,7 @@ bool FloatTimeOfFlight::search(int trail, double max_rotation, double want_ns, d
     out.res = res;
     out.sig_ns = span * std::sqrt(res / dd);
     out.y_then = a.y + fr * (b.y - a.y);
+    out.turn = turned;
   }
   return found;
 }
@@ -145,6 +148,7 @@ FloatTofResult FloatTimeOfFlight::track(double baseline, double max_rotation, do
   r.v = r.direction * baseline * 1e9 / r.tau_ns;
   r.sig = pick.sig_ns / r.tau_ns;
   r.y_then = pick.y_then;
+  r.turn = pick.turn;
   return r;
 }
 

@@ -30,8 +30,9 @@ FloatFusionOutput FloatVelocityFusion::update(const FloatFusionInput& in) {
   const double q_res = std::max(residual_, 0.0) / kFusionScaleMaxResidual;
   const double q_change = change_limit > 0 ? change / change_limit : HUGE_VAL;
   const double q_short = kFusionScaleShortFrames * static_cast<double>(dt_us) / static_cast<double>(std::max<int64_t>(tau_us, 1));
+  const double q_turn = in.scale_max_turn > 0 ? tof.turn / in.scale_max_turn : 0;
   if (use_tof && whole_window && q_res < kFusionScaleSoftCut && q_change < kFusionScaleSoftCut &&
-      q_short < kFusionScaleSoftCut) {
+      q_short < kFusionScaleSoftCut && q_turn < kFusionScaleSoftCut) {
     const double ratio = (in.y - tof.y_then) / (tof.direction * in.baseline);
     if (ratio > 0) {
       const double measured = std::clamp(ratio, kFusionScaleMin, kFusionScaleMax);
@@ -42,7 +43,7 @@ FloatFusionOutput FloatVelocityFusion::update(const FloatFusionInput& in) {
       }
       const double sig = std::clamp(tof.sig, kFusionTofFloor, 1.0);
       const double frames = std::max(1.0, std::ceil(tof.tau_ns / (dt * 1e9)));
-      const double penalty = 1 + std::pow(q_res, 4) + std::pow(q_change, 4) + std::pow(q_short, 4);
+      const double penalty = 1 + std::pow(q_res, 4) + std::pow(q_change, 4) + std::pow(q_short, 4) + std::pow(q_turn, 4);
       const double k = scale_var_ / (scale_var_ + 4 * sig * sig * frames * penalty);
       scale_ = std::clamp(scale_ + k * (measured - scale_), kFusionScaleMin, kFusionScaleMax);
       scale_var_ *= 1 - k;

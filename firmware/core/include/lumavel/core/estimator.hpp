@@ -86,6 +86,7 @@ class Estimator {
   VelocityFusion fusion_{};
   AngleQ28 tof_max_rotation_ = 0;  // rotation allowed between the two sightings
   AngleQ28 match_max_rotation_ = 0;  // ... of a photometric match's sample
+  AngleQ28 scale_max_turn_ = 0;     // ... weighing a scale measurement as its limit (fusion_params.hpp)
   TravelQ16Ns y_ = 0;              // integral of the differential observer's direct values
   StereoMeasurement meas_[2]{};  // previous and current frame
   int cur_ = 0;

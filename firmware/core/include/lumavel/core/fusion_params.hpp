@@ -83,6 +83,17 @@ constexpr double kFusionScaleMaxChange = 0.01;
 // differential travel (the scale was learned 2-3 % high there once the
 // differential itself was right).
 constexpr double kFusionScaleShortFrames = 2.0;
+// ... and where the rig turned little over the window: the gyro's rotation
+// summed frame by frame in absolute value (a slalom's change of direction
+// does not cancel), in units of the narrowest kernel's sigma, weighed as the
+// three above. The differential's rotation term is good to a few percent
+// (the columns against the texture: docs/design.md), so while turning it
+// errs by a few percent of the turn's share of the image motion, with the
+// turn's sign: a scale learned there is that error, and the next turn the
+// other way doubles it (the gyro-offset slalom, +-0.27 rad/s along a wall at
+// 2 m: a scale of 1.018 learned where one arc met the next, then -0.014 m/s
+// through the following 4 s of turning; -0.004 with this).
+constexpr double kFusionScaleMaxTurnSigma = 0.05;
 constexpr double kFusionScaleSoftCut = 3.0;
 constexpr double kFusionScaleWalk = 1e-4;
 constexpr double kFusionScaleStartVar = 1e-3;  // the prior: 1 +- 3 %

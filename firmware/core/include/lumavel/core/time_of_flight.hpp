@@ -50,6 +50,7 @@ struct TofResult {
   SpeedQ16 v;         // displacement over tau: direction * h / tau
   FracQ16 sig;        // relative uncertainty of v (the match's timing uncertainty over tau)
   TravelQ16Ns y_then; // TofFrame::y at the match (the differential's travel over the window: travel_between)
+  AngleQ28 turn;      // the gyro's rotation over the window, frame by frame in absolute value (>= 0)
 };
 
 struct TofTrackInput {
@@ -75,6 +76,7 @@ class TimeOfFlight {
     int64_t res;       // residual, Q48
     int64_t sig_ns;    // timing uncertainty
     TravelQ16Ns y_then;
+    AngleQ28 turn;     // the gyro's rotation over the window, frame by frame in absolute value
   };
   const TofFrame& at(uint16_t back) const;  // 0 = newest
   // The best candidate of one direction on the segments whose time span

@@ -53,6 +53,7 @@ struct FusionInput {
   const TofResult* tof;     // this frame's time of flight (ok or not)
   TravelQ16Ns y;            // integral of v_differential (TofFrame::y of this frame)
   LengthQ24 baseline;
+  AngleQ28 scale_max_turn;  // the window's rotation that weighs a scale measurement as kFusionScaleMaxTurn
 };
 
 struct FusionOutput {
@@ -96,7 +97,7 @@ class VelocityFusion {
   int64_t direct_var_ = 0;         // ... of their differences (Q32 (m/s)^2, smoothed over kFusionAccelTau)
   bool have_direct_ = false;
   int64_t lag_compensation(const FusionInput& in, int64_t dt_us);        // how long the observer has measured without a break (us, capped)
-  void learn_scale(const FusionInput& in, int64_t dt_us, int64_t q_res, int64_t q_change, int64_t q_short);
+  void learn_scale(const FusionInput& in, int64_t dt_us, int64_t q_res, int64_t q_change, int64_t q_short, int64_t q_turn);
 
   ScaleQ24 scale_ = int32_t{1} << fx::kScaleFrac;
   ScaleQ24 inv_scale_ = int32_t{1} << fx::kScaleFrac;  // 1 / scale_

@@ -41,6 +41,7 @@ class FloatEstimator {
   FloatVelocityFusion fusion_;
   double tof_max_rotation_ = 0;  // rotation allowed between the two sightings, rad
   double match_max_rotation_ = 0;  // ... of a photometric match's sample, rad
+  double scale_max_turn_ = 0;      // ... weighing a scale measurement as its limit, rad
   double y_ = 0;                 // integral of the differential observer's direct values, m
   FloatStereoMeasurement prev_;  // the previous frame's
   bool have_prev_ = false;

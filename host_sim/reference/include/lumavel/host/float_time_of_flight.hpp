@@ -22,6 +22,7 @@ struct FloatTofResult {
   double v = 0;        // m/s
   double sig = 0;      // relative uncertainty of v
   double y_then = 0;
+  double turn = 0;     // rad: the gyro's rotation over the window, frame by frame in absolute value
 };
 
 class FloatTimeOfFlight {
@@ -32,7 +33,7 @@ class FloatTimeOfFlight {
 
  private:
   struct Candidate {
-    double stau_ns = 0, res = 0, sig_ns = 0, y_then = 0;
+    double stau_ns = 0, res = 0, sig_ns = 0, y_then = 0, turn = 0;
   };
   const FloatTofFrame& at(size_t back) const;
   bool search(int trail, double max_rotation, double want_ns, double min_ns, double max_ns, Candidate& out) const;

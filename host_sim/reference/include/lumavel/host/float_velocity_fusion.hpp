@@ -17,6 +17,7 @@ struct FloatFusionInput {
   const FloatTofResult* tof = nullptr;
   double y = 0;               // m
   double baseline = 0;        // m
+  double scale_max_turn = 0;  // rad (the core's FusionInput::scale_max_turn)
 };
 
 struct FloatFusionOutput {
