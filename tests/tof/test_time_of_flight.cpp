@@ -319,18 +319,18 @@ TEST(TimeOfFlight, AHoldDoesNotTeachTheScale) {
 
 TEST_GROUP(VelocityFusion){};
 
-// Near texture can turn the differential over while its kernels still agree
-// (near clutter: -1.3 m/s for 1.2 s of a 0.7 m/s pass, residual near zero).
-// Where it points against the tracked time of flight's direction by more
-// than kFusionAgainstSigmas of its own sigmas, the fusion takes the time of
-// flight alone: plain data into both fusions, 2 s agreeing, then 1 s with
-// the differential at -1.3 m/s and a clean residual; V must stay with the
-// time of flight (0.7 m/s) in both, and return to the differential after.
-TEST(VelocityFusion, ADifferentialAgainstTheTimeOfFlightIsOutvoted) {
+namespace {
+
+// The outvoting run below; `missing(i)`: frame i has no time of flight.
+struct OutvoteRun {
+  double worst_fixed = 0, worst_double = 0;
+};
+OutvoteRun run_outvoted(const std::function<bool(int)>& missing) {
   constexpr double kH = 0.08, kV = 0.7, kDt = 1.0 / 60;
   VelocityFusion fixed;
   host::FloatVelocityFusion dbl;
-  double y = 0, worst_fixed = 0, worst_double = 0;
+  OutvoteRun r;
+  double y = 0;
   for (int i = 0; i < 240; ++i) {
     const double t = i * kDt;
     const bool turned = t >= 2.0 && t < 3.0;
@@ -338,7 +338,7 @@ TEST(VelocityFusion, ADifferentialAgainstTheTimeOfFlightIsOutvoted) {
     y += vd * kDt;
     const double tau = kH / kV;
     TofResult tf{};
-    tf.ok = true;
+    tf.ok = !missing(i);
     tf.direction = 1;
     tf.tau_ns = std::llround(tau * 1e9);
     tf.v = static_cast<SpeedQ16>(std::lround(kV * 65536));
@@ -354,7 +354,7 @@ TEST(VelocityFusion, ADifferentialAgainstTheTimeOfFlightIsOutvoted) {
     in.baseline = static_cast<LengthQ24>(std::lround(kH * (1 << 24)));
     const double vf = fixed.update(in).v / 65536.0;
     host::FloatTofResult tfd;
-    tfd.ok = true;
+    tfd.ok = !missing(i);
     tfd.direction = 1;
     tfd.tau_ns = tau * 1e9;
     tfd.v = kV;
@@ -370,19 +370,45 @@ TEST(VelocityFusion, ADifferentialAgainstTheTimeOfFlightIsOutvoted) {
     ind.baseline = kH;
     const double vdbl = dbl.update(ind).v;
     if (turned && t > 2.1) {
-      worst_fixed = std::max(worst_fixed, std::fabs(vf - kV));
-      worst_double = std::max(worst_double, std::fabs(vdbl - kV));
+      r.worst_fixed = std::max(r.worst_fixed, std::fabs(vf - kV));
+      r.worst_double = std::max(r.worst_double, std::fabs(vdbl - kV));
     }
     if (t > 3.5) {
       DOUBLES_EQUAL(kV, vf, 0.01);
       DOUBLES_EQUAL(kV, vdbl, 0.01);
     }
   }
+  return r;
+}
+
+}  // namespace
+
+// Near texture can turn the differential over while its kernels still agree
+// (near clutter: -1.3 m/s for 1.2 s of a 0.7 m/s pass, residual near zero).
+// Where it points against the tracked time of flight's direction by more
+// than kFusionAgainstSigmas of its own sigmas, the fusion takes the time of
+// flight alone: plain data into both fusions, 2 s agreeing, then 1 s with
+// the differential at -1.3 m/s and a clean residual; V must stay with the
+// time of flight (0.7 m/s) in both, and return to the differential after.
+TEST(VelocityFusion, ADifferentialAgainstTheTimeOfFlightIsOutvoted) {
+  const OutvoteRun r = run_outvoted([](int) { return false; });
   std::printf("\n  differential turned over to -1.3 m/s against a time of flight of 0.7 m/s: worst |V - 0.7| %.4f m/s "
               "fixed, %.4f double",
-              worst_fixed, worst_double);
-  CHECK(worst_fixed < 0.05);
-  CHECK(worst_double < 0.05);
+              r.worst_fixed, r.worst_double);
+  CHECK(r.worst_fixed < 0.05);
+  CHECK(r.worst_double < 0.05);
+}
+
+// ... and it stays outvoted on the frames where the track is lost (every
+// fifth frame and a run of five while it is turned over): V is held, not
+// pulled to -1.3 m/s on each of them (it was: V fell by up to 1 m/s).
+TEST(VelocityFusion, AFailedDifferentialStaysOutvotedWhileTheTrackIsLost) {
+  const OutvoteRun r = run_outvoted([](int i) { return i % 5 == 0 || (i >= 150 && i < 155); });
+  std::printf("\n  ... with the time of flight missing on every fifth frame and on five in a row: worst |V - 0.7| "
+              "%.4f m/s fixed, %.4f double",
+              r.worst_fixed, r.worst_double);
+  CHECK(r.worst_fixed < 0.05);
+  CHECK(r.worst_double < 0.05);
 }
 
 namespace {

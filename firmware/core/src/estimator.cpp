@@ -187,7 +187,7 @@ Estimate Estimator::step_profiles(uint64_t t_ns, ColumnProfile& p0, ColumnProfil
             tf.f[i][k] = m.f[i][k];
             tf.r[i][k] = m.r[i][k];
           }
-        tof = tof_.track({cfg_.baseline, tof_max_rotation_, fusion_.v(), o.updated ? fusion_.rescaled(o.v_direct) : fusion_.v(), m.count});
+        tof = tof_.track({cfg_.baseline, tof_max_rotation_, fusion_.v(), o.updated && !fusion_.differential_failed() ? fusion_.rescaled(o.v_direct) : fusion_.v(), m.count});
       }
       FusionInput fin{};
       fin.dt_ns = dt_ns;

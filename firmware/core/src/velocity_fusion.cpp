@@ -41,6 +41,7 @@ constexpr int64_t kSoftCutQ16 = fx::q_of(kFusionScaleSoftCut, 16);
 constexpr int64_t kLagSigmas2Q8 = fx::q_of(kFusionLagSigmas * kFusionLagSigmas, 8);
 constexpr int64_t kLagMaxQ16 = int64_t{1} << 23;  // speed differences held to 128 m/s: squares x a Q16 gain < 2^62
 constexpr int64_t kShortFramesQ16 = fx::q_of(kFusionScaleShortFrames, 16);
+constexpr int64_t kFailedHoldUs = fx::q_of(kFusionFailedHold * 1e6, 0);
 
 int64_t abs64(int64_t v) { return v < 0 ? -v : v; }
 int64_t clamp64(int64_t v, int64_t lo, int64_t hi) { return v < lo ? lo : (v > hi ? hi : v); }
@@ -117,6 +118,8 @@ FusionOutput VelocityFusion::update(const FusionInput& in) {
     const int64_t st = ((rel * abs64(tof.v)) >> 16) + kSpeedFloorQ16;
     const int64_t st2 = st * st;  // Q32
     const bool against = (vd > 0) != (tof.v > 0) && abs64(vd) > ((kAgainstSigmasQ16 * sd) >> 16);
+    failed_ = against;
+    failed_us_ = 0;
     const int64_t w = against ? kOneQ16 : fx::fraction_q16(sd2, sd2 + st2);
     target = vd + ((w * (zc - vd)) >> 16);
     // How far the time of flight really scatters, seen against a clean differential.
@@ -125,6 +128,18 @@ FusionOutput VelocityFusion::update(const FusionInput& in) {
       const int64_t g = fx::div_q(nu * nu, st2 + sd2, 16);  // Q16
       tof_inflation_ = static_cast<int32_t>(
           clamp64(tof_inflation_ + fx::shr_round(kInflationGainQ16 * (g - tof_inflation_), 16), kOneQ16, kInflationMaxQ16));
+    }
+  }
+  if (!use_tof && failed_) {
+    // Failed against the last time of flight: held until it agrees again (fusion_params.hpp).
+    failed_us_ = std::min<int64_t>(failed_us_ + dt_us, kInt31);
+    const bool agrees = (vd > 0) == (v_ > 0) || abs64(vd) <= ((kAgainstSigmasQ16 * sd) >> 16);
+    if (agrees || failed_us_ > kFailedHoldUs) {
+      failed_ = false;
+    } else {
+      out.v = v_;
+      out.saturated = sat;
+      return out;
     }
   }
   // Smoothing, slower without a time of flight when the differential is doubtful,

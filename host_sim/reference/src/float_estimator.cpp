@@ -120,7 +120,7 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
           tf.r[i] = m.r[i];
         }
         tof_.push(tf);
-        tof = tof_.track(s_.baseline, tof_max_rotation_, fusion_.v(), o.updated ? o.v_direct / fusion_.scale() : fusion_.v());
+        tof = tof_.track(s_.baseline, tof_max_rotation_, fusion_.v(), o.updated && !fusion_.differential_failed() ? o.v_direct / fusion_.scale() : fusion_.v());
       }
       FloatFusionInput fin;
       fin.dt = dt;

@@ -72,12 +72,24 @@ FloatFusionOutput FloatVelocityFusion::update(const FloatFusionInput& in) {
     const double rel = std::max(tof.sig * std::sqrt(tof_inflation_), kFusionTofFloor);
     const double st = rel * std::fabs(tof.v) + kFusionSpeedFloor;
     const bool against = (vd > 0) != (tof.v > 0) && std::fabs(vd) > kFusionAgainstSigmas * sd;
+    failed_ = against;
+    failed_us_ = 0;
     const double w = against ? 1.0 : sd2 / (sd2 + st * st);
     target = vd + w * (zc - vd);
     if (residual_ < kFusionScaleMaxResidual && !against) {
       const double g = (tof.v - vd) * (tof.v - vd) / (st * st + sd2);
       tof_inflation_ = std::clamp(tof_inflation_ + kFusionTofInflationGain * (g - tof_inflation_), 1.0,
                                   kFusionTofInflationMax);
+    }
+  }
+  if (!use_tof && failed_) {  // held until it agrees again (the core's comment)
+    failed_us_ = std::min<int64_t>(failed_us_ + dt_us, int64_t{1} << 31);
+    const bool agrees = (vd > 0) == (v_ > 0) || std::fabs(vd) <= kFusionAgainstSigmas * sd;
+    if (agrees || failed_us_ > static_cast<int64_t>(kFusionFailedHold * 1e6)) {
+      failed_ = false;
+    } else {
+      out.v = v_;
+      return out;
     }
   }
   since_start_us_ = std::min<int64_t>(since_start_us_ + dt_us, int64_t{1} << 31);

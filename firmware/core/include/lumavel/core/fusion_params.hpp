@@ -62,6 +62,16 @@ constexpr double kFusionTofFloor = 0.01;
 // kernels still agree): the time of flight alone, and its scatter is not
 // judged against it. (Near clutter: V -1.3 m/s for 1.2 s of a 0.7 m/s pass.)
 constexpr double kFusionAgainstSigmas = 2.0;
+// Once it has so failed, it stays failed on the frames without a time of
+// flight that follow (a track lost for a few frames while near texture still
+// turns the differential over): V is held until the differential agrees again
+// (the fused V's sign, or within kFusionAgainstSigmas of 0), for at most this
+// long (s) since the last time of flight, and the time of flight's
+// re-acquisition is guided by the fused V, not by the failed direct value.
+// (Near clutter, mismatched cameras: a track lost for 3 frames let V follow
+// the differential to -1.1 m/s, and a wrong-direction track guided by it held
+// it there for 1 s of a 0.65 m/s pass.)
+constexpr double kFusionFailedHold = 0.5;
 constexpr double kFusionTofInflationGain = 0.02;
 constexpr double kFusionTofInflationMax = 100.0;
 // The differential's scale is learned from the time of flight where its

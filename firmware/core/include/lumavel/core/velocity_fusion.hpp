@@ -73,12 +73,15 @@ class VelocityFusion {
     measured_us_ = 0;
     since_start_us_ = 0;
     have_direct_ = false;
+    failed_ = false;
   }
   FusionOutput update(const FusionInput& in);
   // The fused V: held over frames without an update (no light, gaps, low
   // texture) and before the first one (0).
   SpeedQ16 v() const { return v_; }
   ScaleQ24 scale() const { return scale_; }
+  // The differential pointed against the last time of flight and has not agreed since (kFusionFailedHold).
+  bool differential_failed() const { return failed_; }
   // A differential value divided by the learned scale.
   SpeedQ16 rescaled(SpeedQ16 v_differential) const {
     return fx::sat32(fx::shr_round(int64_t{v_differential} * inv_scale_, fx::kScaleFrac));
@@ -96,6 +99,8 @@ class VelocityFusion {
   SpeedQ16 prev_direct_ = 0;       // the last direct value, for the scatter ...
   int64_t direct_var_ = 0;         // ... of their differences (Q32 (m/s)^2, smoothed over kFusionAccelTau)
   bool have_direct_ = false;
+  bool failed_ = false;            // the differential failed against the time of flight ...
+  int64_t failed_us_ = 0;          // ... this long ago (us, capped)
   int64_t lag_compensation(const FusionInput& in, int64_t dt_us);        // how long the observer has measured without a break (us, capped)
   void learn_scale(const FusionInput& in, int64_t dt_us, int64_t q_res, int64_t q_change, int64_t q_short, int64_t q_turn);
 

@@ -33,10 +33,12 @@ class FloatVelocityFusion {
     measured_us_ = 0;
     since_start_us_ = 0;
     have_direct_ = false;
+    failed_ = false;
   }
   FloatFusionOutput update(const FloatFusionInput& in);
   double v() const { return v_; }
   double scale() const { return scale_; }
+  bool differential_failed() const { return failed_; }  // (the core's comment)
 
  private:
   bool started_ = false;
@@ -50,6 +52,8 @@ class FloatVelocityFusion {
   double half_ = 0;                          // the observer at half its time constant (m/s)
   double prev_direct_ = 0, direct_var_ = 0;  // the direct values' scatter (m/s, (m/s)^2)
   bool have_direct_ = false;
+  bool failed_ = false;     // the differential failed against the time of flight ...
+  int64_t failed_us_ = 0;   // ... this long ago (us)
   double lag_compensation(const FloatFusionInput& in, double dt);
 };
 
