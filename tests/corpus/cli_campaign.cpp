@@ -192,6 +192,15 @@ void set_yaml(const std::string& yaml, const std::string& key, const std::string
   edit_lines(yaml, [&](const std::string& l) { return l.rfind(key + ":", 0) == 0 ? key + ": " + value : l; });
 }
 
+// The key set to value, added at the end where the file has no such line.
+void put_yaml(const std::string& yaml, const std::string& key, const std::string& value) {
+  const std::string text = read_text(yaml);
+  if (text.find("\n" + key + ":") == std::string::npos && text.rfind(key + ":", 0) != 0)
+    write_text(yaml, text + key + ": " + value + "\n");
+  else
+    set_yaml(yaml, key, value);
+}
+
 // Number `i` (0-based, row-major) of T_BS.data in a sensor.yaml: where it starts and ends.
 std::pair<size_t, size_t> tbs_number(const std::string& text, int i) {
   size_t at = text.find("data: [") + 7;
@@ -364,6 +373,8 @@ std::vector<Case> recording_cases(const std::string& base) {
   refused("YAML cv outside", [=](const std::string& r) { edit_lines(r + m + y1, [](const std::string& l) { if (l.rfind("intrinsics:", 0) != 0) return l; const size_t end = l.find(']'); return l.substr(0, l.find_last_of(',', end) + 1) + " -1e5" + l.substr(end); }); }, y1, "cv");
   refused("YAML resolution unlike the PNGs", [=](const std::string& r) { set_yaml(r + m + y0, "resolution", "[64, 48]"); set_yaml(r + m + y1, "resolution", "[64, 48]"); }, "cam0/data/", "resolution [64, 48]");
   refused("YAML lens not invertible", [=](const std::string& r) { set_yaml(r + m + y1, "distortion_coefficients", "[-5, 0, 0, 0]"); }, y1, "distortion_coefficients");
+  refused("YAML negative exposure", [=](const std::string& r) { put_yaml(r + m + y0, "exposure_s", "-0.01"); }, y0, "exposure_s");
+  refused("YAML negative gyro noise density", [=](const std::string& r) { put_yaml(r + m + yi, "gyroscope_noise_density", "-1e-4"); }, yi, "gyroscope_noise_density");
   refused("YAML lens p1 = 3", [=](const std::string& r) { set_yaml(r + m + y0, "distortion_coefficients", "[0, 0, 3, 0]"); }, y0, "distortion_coefficients");
   // Column 0 of the rotation (numbers 0, 4, 8) doubled, or negated: a mirror.
   auto scale_column0 = [](const std::string& yaml, double by) {

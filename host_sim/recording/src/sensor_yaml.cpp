@@ -183,9 +183,15 @@ Pose read_pose(const YAML::Node& root, const std::string& path) {
   return p;
 }
 
+// -1 when absent (the optional physical quantities are never negative: a
+// negative value in the file is an error, not a way to say "absent").
 double optional_number(const YAML::Node& root, const char* key, const std::string& path) {
   const YAML::Node n = root[key];
-  return n ? number(n, key, path) : -1.0;
+  if (!n) return -1.0;
+  const double v = number(n, key, path);
+  if (v < 0)
+    throw recording_error_at(path, line_of(n), std::string(key) + " = " + format_double(v) + " must not be negative");
+  return v;
 }
 
 std::string optional_text(const YAML::Node& root, const char* key) {
