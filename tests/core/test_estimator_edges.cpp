@@ -56,6 +56,63 @@ TEST(EstimatorEdges, AllBlackFramesRaiseNoLightAndHoldV) {
   }
 }
 
+// Lights off: the sensor's noise clipped at 0 (mean 0.6 DN, most pixels 0),
+// different in each camera and frame. Divided by its own tiny N it read as
+// texture and moved V by metres per second; it is no light (kNoLightMeanDn),
+// V held, in both engines. A dim scene (the rig at 1/25 of its brightness,
+// mean about 5 DN) is still measured.
+TEST(EstimatorEdges, BlackFramesOfSensorNoiseAreNoLightAndHoldV) {
+  for (auto kind : {host::EngineKind::kFixed, host::EngineKind::kFloat}) {
+    test::SyntheticRig rig;
+    rig.width = 40;
+    rig.height = 30;
+    auto s = rig.settings();
+    s.frame_period = 1.0 / 60;
+    auto eng = host::make_engine(kind, s);
+    uint32_t seed = 12345;
+    const auto noise_frame = [&] {
+      std::vector<uint8_t> f(40 * 30);
+      for (auto& px : f) {
+        seed = seed * 1664525u + 1013904223u;
+        const int v = static_cast<int>((seed >> 24) % 7) - 3;  // -3..3 DN about black
+        px = static_cast<uint8_t>(v < 0 ? 0 : v);
+      }
+      return f;
+    };
+    const auto dim = [](std::vector<uint8_t> f) {
+      for (auto& px : f) px = static_cast<uint8_t>(px / 25);
+      return f;
+    };
+    host::EngineEstimate e{};
+    int i = 0;
+    for (; i < 30; ++i) {
+      const uint64_t t = static_cast<uint64_t>(i) * kFrameNs;
+      eng->push_gyro(t, 0);
+      const test::Pose2 p{0.5 * i / 60.0, 0, 0};
+      e = eng->step(t, rig.render(0, p).data(), rig.render(1, p).data());
+    }
+    const double v = e.v;
+    DOUBLES_EQUAL(0.5, v, 0.01);
+    for (; i < 50; ++i) {
+      const uint64_t t = static_cast<uint64_t>(i) * kFrameNs;
+      eng->push_gyro(t, 0);
+      const auto a = noise_frame(), b = noise_frame();
+      e = eng->step(t, a.data(), b.data());
+      CHECK(e.status & kStatusNoLight);
+      DOUBLES_EQUAL(v, e.v, 1e-12);
+    }
+    int dim_no_light = 0;
+    for (; i < 80; ++i) {
+      const uint64_t t = static_cast<uint64_t>(i) * kFrameNs;
+      eng->push_gyro(t, 0);
+      const test::Pose2 p{0.5 * i / 60.0, 0, 0};
+      e = eng->step(t, dim(rig.render(0, p)).data(), dim(rig.render(1, p)).data());
+      if (e.status & kStatusNoLight) ++dim_no_light;
+    }
+    LONGS_EQUAL(0, dim_no_light);
+  }
+}
+
 TEST(EstimatorEdges, AllWhiteFramesAreSaturatedAndUntextured) {
   Harness h;
   std::vector<uint8_t> white(40 * 30, 255);

@@ -310,6 +310,7 @@ void build_kernel_bank(const EstimatorConfig& cfg, KernelBank& bank) {
       return s;
     };
     const int64_t n = uniform_dot(bank.cam[i].norm);
+    bank.cam[i].dark_n = n * params::kNoLightMeanDn;  // (n < 2^54, times 2: below 2^56)
     for (int k = 0; k < cfg.kernel_count; ++k)
       bank.dc[i][k] = fx::div_q(uniform_dot(bank.cam[i].k[k]), n > 0 ? n : 1,
                                 fx::kValueFrac + bank.cam[i].norm.exp - bank.cam[i].k[k].exp);

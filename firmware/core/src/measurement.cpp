@@ -48,7 +48,8 @@ void camera_outputs(const ColumnProfile& p, const CameraKernels& ck, uint8_t cou
   // The dot products in pairs that share the profile (kdot::dot2): the same sums.
   int64_t n = 0, n_d = 0;
   dot2(ck.norm, ck.norm_d, p, &n, &n_d);
-  if (n <= 0) {
+  // No light: below a uniform image of kNoLightMeanDn (dark_n is in q8 sums).
+  if (n <= 0 || n < (p.q8 ? ck.dark_n : ck.dark_n >> 8)) {
     out.no_light = true;
     for (uint8_t k = 0; k < count; ++k) out.f[k] = out.r[k] = out.c[k] = 0;
     return;

@@ -109,6 +109,7 @@ FloatKernelBank build_float_kernel_bank(const EstimatorSettings& s) {
     const Eigen::VectorXd& rows = b.band.rows;
     c.dc.resize(static_cast<Eigen::Index>(n));
     for (size_t k = 0; k < n; ++k) c.dc[static_cast<Eigen::Index>(k)] = c.k[k].dot(rows) / c.norm.dot(rows);
+    c.dark_n = params::kNoLightMeanDn * c.norm.dot(rows);
   }
   // Each column's lean, as column_lean_q24: a central difference of the
   // elevation scale (one-sided at the ends), clamped to +-4.

@@ -24,7 +24,7 @@ CameraOutputs camera_outputs(const FloatColumnProfile& p, const FloatCameraKerne
   out.f = Eigen::VectorXd::Zero(n);
   out.r = Eigen::VectorXd::Zero(n);
   out.c = Eigen::VectorXd::Zero(n);
-  if (nrm <= 0) {
+  if (nrm <= 0 || nrm < k.dark_n) {  // (the core's kNoLightMeanDn)
     out.no_light = true;
     return out;
   }

@@ -22,6 +22,16 @@ constexpr double kKernelCutoffSigma = 7.0;
 constexpr int kClipRowStep = 8;
 
 // ---- measurement (measurement.hpp) ----
+// No light: the normaliser below that of a uniform image this bright (DN of
+// 255). A black frame is the sensor's noise clipped at 0 (lights off, a lens
+// cap: mean 0.6 DN, 63 % of the pixels at 0 with 1.5 DN of noise); divided by
+// its own N, that noise reads as texture far above the low-texture threshold
+// and as wild velocities (the dark-frames study: V went from 1 to -0.27 m/s
+// through 1.2 s of darkness). A dim scene is brighter than this; a camera with
+// a black-level offset shows darkness above it (low signal, not caught here).
+constexpr int kNoLightMeanDn = 2;
+
+// ---- measurement (measurement.hpp) ----
 // Each kernel's local spatial frequency w, as (sigma w)^2, is clamped to this
 // band, the one a Gaussian-derivative kernel passes: continuous, so that noise
 // near w^2 = 0 cannot switch the finite-baseline correction on and off.

@@ -62,6 +62,7 @@ struct CameraKernels {
   KernelTable k[kMaxKernels];       // B kernels
   KernelTable d[kMaxKernels];       // dB/dtheta kernels
   KernelTable16 t[kMaxKernels];     // d3B/dtheta3 kernels (finite-baseline correction)
+  int64_t dark_n;                   // the normaliser of a uniform image at kNoLightMeanDn, in q8 sums
 };
 
 struct KernelBank {

@@ -13,6 +13,7 @@ namespace lumavel::host {
 struct FloatCameraKernels {
   Eigen::VectorXd norm, norm_d;          // normaliser window (order 0) and its angular derivative
   Eigen::VectorXd dc;                    // F of a uniform image, per kernel (sum K / sum N)
+  double dark_n = 0;                     // the normaliser of a uniform image at kNoLightMeanDn
   std::vector<Eigen::VectorXd> k, d, t;  // B, dB/dtheta, d3B/dtheta3 kernels
   Eigen::VectorXd lean;                  // -d ln(elevation scale)/d(yaw) per column (when leaning)
 };
