@@ -321,6 +321,55 @@ TEST_GROUP(VelocityFusion){};
 
 namespace {
 
+// One frame of plain data into both fusions: a clean differential (and direct
+// value) vd, the integral y of it, and a time of flight at v_tof over tau
+// whose window started at y_then and turned by `turn` rad (ok or missing).
+struct TofStep {
+  double vd, y, v_tof, tau, y_then, turn = 0, max_turn = 0;
+  bool ok = true;
+};
+struct BothV {
+  double fixed, dbl;
+};
+BothV step_with_tof(VelocityFusion& fixed, host::FloatVelocityFusion& dbl, const TofStep& s) {
+  constexpr double kH = 0.08, kDt = 1.0 / 60;
+  TofResult tf{};
+  tf.ok = s.ok;
+  tf.direction = 1;
+  tf.tau_ns = std::llround(s.tau * 1e9);
+  tf.v = static_cast<SpeedQ16>(std::lround(s.v_tof * 65536));
+  tf.sig = static_cast<FracQ16>(std::lround(0.005 * 65536));
+  tf.y_then = static_cast<TravelQ16Ns>(std::llround(s.y_then * 65536 * 1e9));
+  tf.turn = static_cast<AngleQ28>(std::lround(s.turn * (1 << 28)));
+  FusionInput in{};
+  in.dt_ns = std::llround(kDt * 1e9);
+  in.v_differential = in.v_direct = static_cast<SpeedQ16>(std::lround(s.vd * 65536));
+  in.direct = true;
+  in.residual = static_cast<FracQ16>(std::lround(0.001 * 65536));
+  in.tof = &tf;
+  in.y = static_cast<TravelQ16Ns>(std::llround(s.y * 65536 * 1e9));
+  in.baseline = static_cast<LengthQ24>(std::lround(kH * (1 << 24)));
+  in.scale_max_turn = static_cast<AngleQ28>(std::lround(s.max_turn * (1 << 28)));
+  host::FloatTofResult tfd;
+  tfd.ok = s.ok;
+  tfd.direction = 1;
+  tfd.tau_ns = s.tau * 1e9;
+  tfd.v = s.v_tof;
+  tfd.sig = 0.005;
+  tfd.y_then = s.y_then;
+  tfd.turn = s.turn;
+  host::FloatFusionInput ind;
+  ind.dt = kDt;
+  ind.v_differential = ind.v_direct = s.vd;
+  ind.direct = true;
+  ind.residual = 0.001;
+  ind.tof = &tfd;
+  ind.y = s.y;
+  ind.baseline = kH;
+  ind.scale_max_turn = s.max_turn;
+  return {fixed.update(in).v / 65536.0, dbl.update(ind).v};
+}
+
 // The outvoting run below; `missing(i)`: frame i has no time of flight.
 struct OutvoteRun {
   double worst_fixed = 0, worst_double = 0;
@@ -337,45 +386,16 @@ OutvoteRun run_outvoted(const std::function<bool(int)>& missing) {
     const double vd = turned ? -1.3 : kV;
     y += vd * kDt;
     const double tau = kH / kV;
-    TofResult tf{};
-    tf.ok = !missing(i);
-    tf.direction = 1;
-    tf.tau_ns = std::llround(tau * 1e9);
-    tf.v = static_cast<SpeedQ16>(std::lround(kV * 65536));
-    tf.sig = static_cast<FracQ16>(std::lround(0.005 * 65536));
-    tf.y_then = static_cast<TravelQ16Ns>(std::llround((y - kV * tau) * 65536 * 1e9));
-    FusionInput in{};
-    in.dt_ns = std::llround(kDt * 1e9);
-    in.v_differential = in.v_direct = static_cast<SpeedQ16>(std::lround(vd * 65536));
-    in.direct = true;
-    in.residual = static_cast<FracQ16>(std::lround(0.001 * 65536));
-    in.tof = &tf;
-    in.y = static_cast<TravelQ16Ns>(std::llround(y * 65536 * 1e9));
-    in.baseline = static_cast<LengthQ24>(std::lround(kH * (1 << 24)));
-    const double vf = fixed.update(in).v / 65536.0;
-    host::FloatTofResult tfd;
-    tfd.ok = !missing(i);
-    tfd.direction = 1;
-    tfd.tau_ns = tau * 1e9;
-    tfd.v = kV;
-    tfd.sig = 0.005;
-    tfd.y_then = y - kV * tau;
-    host::FloatFusionInput ind;
-    ind.dt = kDt;
-    ind.v_differential = ind.v_direct = vd;
-    ind.direct = true;
-    ind.residual = 0.001;
-    ind.tof = &tfd;
-    ind.y = y;
-    ind.baseline = kH;
-    const double vdbl = dbl.update(ind).v;
+    TofStep st{vd, y, kV, tau, y - kV * tau};
+    st.ok = !missing(i);
+    const BothV v = step_with_tof(fixed, dbl, st);
     if (turned && t > 2.1) {
-      r.worst_fixed = std::max(r.worst_fixed, std::fabs(vf - kV));
-      r.worst_double = std::max(r.worst_double, std::fabs(vdbl - kV));
+      r.worst_fixed = std::max(r.worst_fixed, std::fabs(v.fixed - kV));
+      r.worst_double = std::max(r.worst_double, std::fabs(v.dbl - kV));
     }
     if (t > 3.5) {
-      DOUBLES_EQUAL(kV, vf, 0.01);
-      DOUBLES_EQUAL(kV, vdbl, 0.01);
+      DOUBLES_EQUAL(kV, v.fixed, 0.01);
+      DOUBLES_EQUAL(kV, v.dbl, 0.01);
     }
   }
   return r;
@@ -426,42 +446,10 @@ ScalePair scale_after(double turn, double max_turn) {
   for (int i = 0; i < 180; ++i) {
     const double vd = kV * kBias, tau = kH / kV;
     y += vd * kDt;
-    TofResult tf{};
-    tf.ok = true;
-    tf.direction = 1;
-    tf.tau_ns = std::llround(tau * 1e9);
-    tf.v = static_cast<SpeedQ16>(std::lround(kV * 65536));
-    tf.sig = static_cast<FracQ16>(std::lround(0.005 * 65536));
-    tf.y_then = static_cast<TravelQ16Ns>(std::llround((y - vd * tau) * 65536 * 1e9));
-    tf.turn = static_cast<AngleQ28>(std::lround(turn * (1 << 28)));
-    FusionInput in{};
-    in.dt_ns = std::llround(kDt * 1e9);
-    in.v_differential = in.v_direct = static_cast<SpeedQ16>(std::lround(vd * 65536));
-    in.direct = true;
-    in.residual = static_cast<FracQ16>(std::lround(0.001 * 65536));
-    in.tof = &tf;
-    in.y = static_cast<TravelQ16Ns>(std::llround(y * 65536 * 1e9));
-    in.baseline = static_cast<LengthQ24>(std::lround(kH * (1 << 24)));
-    in.scale_max_turn = static_cast<AngleQ28>(std::lround(max_turn * (1 << 28)));
-    fixed.update(in);
-    host::FloatTofResult tfd;
-    tfd.ok = true;
-    tfd.direction = 1;
-    tfd.tau_ns = tau * 1e9;
-    tfd.v = kV;
-    tfd.sig = 0.005;
-    tfd.y_then = y - vd * tau;
-    tfd.turn = turn;
-    host::FloatFusionInput ind;
-    ind.dt = kDt;
-    ind.v_differential = ind.v_direct = vd;
-    ind.direct = true;
-    ind.residual = 0.001;
-    ind.tof = &tfd;
-    ind.y = y;
-    ind.baseline = kH;
-    ind.scale_max_turn = max_turn;
-    dbl.update(ind);
+    TofStep st{vd, y, kV, tau, y - vd * tau};
+    st.turn = turn;
+    st.max_turn = max_turn;
+    step_with_tof(fixed, dbl, st);
   }
   return {fixed.scale() / double{1 << fx::kScaleFrac}, dbl.scale()};
 }
