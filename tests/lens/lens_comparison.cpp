@@ -14,14 +14,14 @@ namespace lumavel::host::lens_test {
 namespace {
 
 Variant run_variant(const std::string& rec_dir, EngineKind engine, int w, int h, bool ignore_distortion,
-                    bool elevation_band, bool by_columns = false) {
+                    RunOptions::Band band, bool by_columns = false) {
   const Recording rec = load_recording(rec_dir);
   RunOptions o;
   o.engine = engine;
   o.size = {w, h};
   o.ignore_distortion = ignore_distortion;
   o.lens_by_columns = by_columns;
-  o.elevation_band = elevation_band;
+  o.elevation_band = band;
   Variant v;
   v.track = run_recording(rec, o, nullptr).track;
   v.metrics = compute_metrics(v.track);
@@ -75,12 +75,12 @@ RenderedPair render_pair(const Render& r, const std::string& dir) {
   return p;
 }
 
-Comparison compare(const RenderedPair& p, EngineKind engine, int work_width, int work_height, bool elevation_band) {
+Comparison compare(const RenderedPair& p, EngineKind engine, int work_width, int work_height, RunOptions::Band band) {
   Comparison c;
-  c.undistorted = run_variant(p.undistorted, engine, work_width, work_height, false, elevation_band);
-  c.corrected = run_variant(p.distorted, engine, work_width, work_height, false, elevation_band);
-  c.ignored = run_variant(p.distorted, engine, work_width, work_height, true, elevation_band);
-  c.columns = run_variant(p.distorted, engine, work_width, work_height, false, elevation_band, true);
+  c.undistorted = run_variant(p.undistorted, engine, work_width, work_height, false, band);
+  c.corrected = run_variant(p.distorted, engine, work_width, work_height, false, band);
+  c.ignored = run_variant(p.distorted, engine, work_width, work_height, true, band);
+  c.columns = run_variant(p.distorted, engine, work_width, work_height, false, band, true);
   fit(c.undistorted, c.corrected, p.scenario, c.corrected_slope, c.corrected_rms);
   fit(c.undistorted, c.columns, p.scenario, c.columns_slope, c.columns_rms);
   fit(c.undistorted, c.ignored, p.scenario, c.ignored_slope, c.ignored_rms);

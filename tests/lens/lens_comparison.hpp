@@ -9,6 +9,7 @@
 #include "lumavel/host/engine.hpp"
 #include "lumavel/host/render/scenario.hpp"
 #include "lumavel/host/run_metrics.hpp"
+#include "lumavel/host/run_recording.hpp"
 
 namespace lumavel::host::lens_test {
 
@@ -38,9 +39,9 @@ struct Comparison {
   double corrected_slope = 0, columns_slope = 0, ignored_slope = 0;
   double corrected_rms = 0, columns_rms = 0, ignored_rms = 0;
 };
-// elevation_band: run with kOptionElevationBand (off by default).
+// band: the elevation band as run would choose it (by the field of view), or forced.
 Comparison compare(const RenderedPair& p, EngineKind engine, int work_width, int work_height,
-                   bool elevation_band = false);
+                   RunOptions::Band band = RunOptions::Band::kByView);
 
 // One line of figures for the test log.
 std::string describe(const Comparison& c);

@@ -201,6 +201,19 @@ TEST(DeviceConfig, DefaultsCarryTheEstimatorsOwnDefaults) {
   CHECK_EQUAL(0, c.lens);
 }
 
+// The elevation band is the default for wide views only (one rule for the
+// device and the host: config::elevation_band_for).
+TEST(DeviceConfig, TheElevationBandIsTheDefaultFromEightyDegrees) {
+  const double deg = lumavel::config::kDeg;
+  CHECK_EQUAL(0, default_device_config().options & lumavel::kOptionElevationBand);  // 60 degrees
+  CHECK_EQUAL(0, defaults_for(40, 30, lumavel::config::field_of_view(79.9 * deg)).options & lumavel::kOptionElevationBand);
+  CHECK_EQUAL(lumavel::kOptionElevationBand,
+              defaults_for(40, 30, lumavel::config::field_of_view(80 * deg)).options & lumavel::kOptionElevationBand);
+  CHECK_EQUAL(lumavel::kOptionElevationBand,
+              defaults_for(40, 30, lumavel::config::field_of_view(120 * deg)).options & lumavel::kOptionElevationBand);
+  CHECK_TRUE(validate(defaults_for(40, 30, lumavel::config::field_of_view(120 * deg))) == ConfigField::kOk);
+}
+
 TEST(DeviceConfig, LooksLeftByDefault) {
   EstimatorConfig e{};
   CHECK_TRUE(to_estimator_config(default_device_config(), e));

@@ -252,7 +252,10 @@ DeviceConfig defaults_for(uint16_t width, uint16_t height, config::FieldOfView f
   // The estimator's defaults: finite-baseline correction and gyro-offset
   // learning on, stillness judged over 2 mm and 0.5 s (gyro_offset.hpp).
   // the balance off (settings.hpp); the match where it is built in
-  c.options = kOptionBaselineCorrection | kOptionGyroOffsetLearning | (kHavePhotometricMatch ? kOptionPhotometricMatch : 0);
+  // and the elevation band for wide views (config::kElevationBandMinHfovRad).
+  c.options = static_cast<uint8_t>(kOptionBaselineCorrection | kOptionGyroOffsetLearning |
+                                   (kHavePhotometricMatch ? kOptionPhotometricMatch : 0) |
+                                   (fov.elevation_band ? kOptionElevationBand : 0));
   c.still_distance = static_cast<LengthQ24>(config::default_of<Quantity::kStillDistance>);
   c.still_min_us = static_cast<uint32_t>(config::default_of<Quantity::kStillDuration>);
   c.lens = 0;  // pinhole

@@ -7,6 +7,7 @@
 
 #include "lumavel/host/lens_distortion.hpp"
 #include "lumavel/host/recording_layout.hpp"
+#include "lumavel/units/config_fields.hpp"
 
 namespace lumavel::host {
 namespace {
@@ -251,6 +252,7 @@ EstimatorSettings derive_settings(const Recording& rec, WorkingSize size) {
   s.gyro_gap = gyro_gap_s(rec.imu_period_s);
   const double hfov = 2.0 * std::atan(0.5 * rec.cam[0].width / rec.cam[0].fu);
   s.kernels = default_kernels(hfov);
+  s.elevation_band = config::elevation_band_for(hfov);
   return s;
 }
 

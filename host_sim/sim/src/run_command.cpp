@@ -66,6 +66,7 @@ struct RunArgs {
   bool no_photometric_match = false;
   bool no_clip_match = false;
   bool elevation_band = false;
+  bool no_elevation_band = false;
 };
 
 // --hid-linger: seconds >= 0, or -1 for "until interrupted".
@@ -276,7 +277,9 @@ int run(const RunArgs& a) {
   options.gyro_offset_learning = !a.no_gyro_offset_learning;
   options.photometric_balance = a.photometric_balance;
   options.photometric_match = !a.no_photometric_match;
-  options.elevation_band = a.elevation_band;
+  options.elevation_band = a.elevation_band      ? RunOptions::Band::kOn
+                           : a.no_elevation_band ? RunOptions::Band::kOff
+                                                 : RunOptions::Band::kByView;
   options.clip_match = !a.no_clip_match;
 
   std::unique_ptr<HidSender> hid;
@@ -443,10 +446,15 @@ void add_run_command(cli::Tool& tool) {
               "first 4 m of travel and correct it (for cameras that are\n"
               "not photometric twins; experimental, off by default:\n"
               "docs/design.md)");
-  c->add_flag("--elevation-band", a->elevation_band,
-              "every column sums only the elevation band that all columns\n"
-              "see, so that turning wide cameras do not read as motion\n"
-              "(experimental, off by default: docs/design.md)");
+  auto* band_on = c->add_flag("--elevation-band", a->elevation_band,
+                              "every column sums only the elevation band that all\n"
+                              "columns see, so that turning wide cameras do not read\n"
+                              "as motion (the default from a horizontal field of view\n"
+                              "of 80 degrees: docs/design.md)");
+  c->add_flag("--no-elevation-band", a->no_elevation_band,
+              "every column sums all rows, whatever the field of view\n"
+              "(the turn's elevation reach corrected by the edge rows)")
+      ->excludes(band_on);
   c->add_option("--plot", a->plot,
                 "plot file (default: REC_estimates.svg next to the -o file,\n"
                 "or in the current folder when the output is standard output\n"

@@ -98,7 +98,7 @@ EstimatorSettings run_settings(const Recording& rec, const RunOptions& options) 
   s.gyro_offset_learning = options.gyro_offset_learning;
   s.photometric_balance = options.photometric_balance;
   s.photometric_match = options.photometric_match;
-  s.elevation_band = options.elevation_band;
+  if (options.elevation_band != RunOptions::Band::kByView) s.elevation_band = options.elevation_band == RunOptions::Band::kOn;
   return s;
 }
 

@@ -60,7 +60,7 @@ enum ConfigOption : uint8_t {
   kOptionBaselineCorrection = 1u << 0,  // finite-baseline correction (x / tan x), see velocity_observer.hpp
   kOptionGyroOffsetLearning = 1u << 1,  // learn the gyro offset at standstill, see gyro_offset.hpp
   kOptionPhotometricBalance = 1u << 2,  // learn and correct cam1's response to cam0's, see photometric_balance.hpp
-  kOptionElevationBand = 1u << 3,       // every column sums one elevation band (kernel_bank.hpp); experimental, off
+  kOptionElevationBand = 1u << 3,       // every column sums one elevation band (kernel_bank.hpp); default for wide views (config_fields.hpp)
   kOptionPhotometricMatch = 1u << 4,    // map cam1's black level and vignetting onto cam0's, see photometric_match.hpp
 };
 // (the photometric match only where it is built in: limits.hpp)

@@ -54,8 +54,9 @@ struct EstimatorSettings {
   // Map cam1's black level and vignetting onto cam0's, learned where one
   // camera stands where the other stood (photometric_match.hpp).
   bool photometric_match = true;
-  // kOptionElevationBand: every column sums one elevation band (experimental,
-  // off: see docs/design.md, "Column profile").
+  // kOptionElevationBand: every column sums one elevation band (the default
+  // from config::kElevationBandMinHfovRad on: derive_settings; docs/design.md,
+  // "Column profile").
   bool elevation_band = false;
   double still_distance = config::spec(Q::kStillDistance).def;  // m: image change below this is standstill
   double still_min = config::spec(Q::kStillDuration).def;       // s of stillness before the offset is taken

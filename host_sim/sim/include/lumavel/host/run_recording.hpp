@@ -42,7 +42,9 @@ struct RunOptions {
   // off by default: the cameras are taken as twins.
   bool photometric_balance = false;
   bool photometric_match = true;
-  bool elevation_band = false;
+  // The elevation band: by the field of view (config::elevation_band_for)
+  // unless forced on or off (run --elevation-band / --no-elevation-band).
+  enum class Band { kByView, kOn, kOff } elevation_band = Band::kByView;
   // Clamp the camera that clips less where the other clips (clip_match.hpp;
   // the default); off: the frames as the cameras clipped them
   // (run --no-clip-match).
