@@ -24,6 +24,7 @@
 #include "lumavel/host/run_recording.hpp"
 #include "lumavel/host/track_plot.hpp"
 #include "lumavel/protocol/device_config.hpp"
+#include "lumavel/units/config_fields.hpp"
 
 namespace lumavel::host {
 namespace {
@@ -362,6 +363,12 @@ int run(const RunArgs& a) {
     std::fprintf(stderr, "%s\n", format_flag_counts(count_flags(result.track)).c_str());
     if (result.lens_distorted || a.ignore_distortion || a.lens_columns)
       std::fprintf(stderr, "%s\n", lens_line(result.lens_distorted, a.ignore_distortion, a.lens_columns));
+    // Say which rows the columns summed where it is not the narrow view's default.
+    if (result.elevation_band || result.hfov_deg >= config::kElevationBandMinHfovRad / config::kDeg)
+      std::fprintf(stderr, "columns: %s (hfov %.0f deg; the band is the default from %.0f)\n",
+                   result.elevation_band ? "one elevation band (the rows every column sees)"
+                                         : "all rows, edge rows correcting the turn (--no-elevation-band)",
+                   result.hfov_deg, config::kElevationBandMinHfovRad / config::kDeg);
     if (result.pinhole_outside_px > 0)
       std::fprintf(stderr,
                    "lens: warning: %d pixels of the two cameras' pinhole views (%d each at the sensor's size) look "

@@ -9,6 +9,7 @@
 #include "lumavel/host/recording_layout.hpp"
 #include "lumavel/host/rig_settings_check.hpp"
 #include "lumavel/host/vo_engine.hpp"
+#include "lumavel/units/config_fields.hpp"
 #include "native_camera.hpp"
 
 namespace lumavel::host {
@@ -142,6 +143,8 @@ RunResult run_recording(const Recording& rec, const EstimatorSettings& settings,
   result.has_truth = !rec.groundtruth.empty();
   if (binned) result.pinhole_outside_px = binned->pinhole_outside(0) + binned->pinhole_outside(1);
   result.width = settings.width;
+  result.elevation_band = settings.elevation_band;
+  result.hfov_deg = 2 * std::atan(0.5 * rec.cam[0].width / rec.cam[0].fu) / config::kDeg;
   result.height = settings.height;
   result.track.reserve(rec.frames.size());
   if (csv) std::fprintf(csv, "%s\n", kEstimatesHeader);

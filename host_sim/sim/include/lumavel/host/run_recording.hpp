@@ -58,6 +58,8 @@ struct RunResult {
   int width = 0, height = 0;      // working resolution used
   bool lens_distorted = false;    // sensor.yaml gives a distortion (corrected unless ignored)
   int pinhole_outside_px = 0;     // undistorted frames: pixels (both cameras) outside the sensor, edge repeated
+  bool elevation_band = false;    // the columns summed one elevation band (by the view or forced)
+  double hfov_deg = 0;            // cam0's horizontal field of view
   size_t clip_clamped[2] = {};    // frames of each camera clamped at a clip ceiling (RunOptions::clip_match)
   int clip_lowest[2] = {255, 255};  // the lowest ceiling of each camera
   double wall_s = 0;              // time spent in the frame loop
