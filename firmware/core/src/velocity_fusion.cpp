@@ -220,11 +220,11 @@ void VelocityFusion::learn_scale(const FusionInput& in, int64_t dt_us, int64_t q
   const int64_t frames =
       dt_us > 0 ? static_cast<int64_t>((static_cast<uint32_t>(tof.tau_ns) + dt32 - 1) / dt32) : 1;
   const int64_t r = ((sig * sig * 4) << 8) * (frames > 1 ? frames : 1);  // Q32 -> Q40, < 2^48
-  // 1 + q_res^4 + q_change^4 + q_short^4 in Q16, < 244 with q < 3
+  // 1 + q_res^4 + q_change^4 + q_short^4 + q_turn^4 in Q16, < 325 with q < 3
   const int64_t qr2 = (q_res * q_res) >> 16, qc2 = (q_change * q_change) >> 16, qs2 = (q_short * q_short) >> 16,
                 qt2 = (q_turn * q_turn) >> 16;
   const int64_t penalty = kOneQ16 + ((qr2 * qr2) >> 16) + ((qc2 * qc2) >> 16) + ((qs2 * qs2) >> 16) + ((qt2 * qt2) >> 16);
-  const int64_t r_weighed = (r >> 16) * penalty;  // < 2^56
+  const int64_t r_weighed = (r >> 16) * penalty;  // < 2^32 x 325 x 2^16 < 2^57
   // The gain in Q24 and rounded steps: the gain falls to 1e-4 and below
   // once the scale is known, where Q16 and truncation drift the scale by
   // 1e-3 an hour against the twin. var <= kFusionScaleStartVar (2^30 in
