@@ -82,7 +82,7 @@ FusionOutput VelocityFusion::update(const FusionInput& in) {
     const bool whole_window = measured_us_ >= tau_us + dt_us;
     // q_short = kFusionScaleShortFrames dt / tau (tau_us > 0: tau >= 1 us)
     const int64_t q_short = fx::div_q(kShortFramesQ16 * dt_us, tau_us > 0 ? tau_us : 1, 0);
-    const int64_t q_turn = in.scale_max_turn > 0 ? fx::div_q(abs64(tof.turn), in.scale_max_turn, 16) : 0;
+    const int64_t q_turn = in.scale_max_turn > 0 ? fx::div_q(tof.turn, in.scale_max_turn, 16) : 0;
     if (whole_window && q_res < kSoftCutQ16 && q_change < kSoftCutQ16 && q_short < kSoftCutQ16 && q_turn < kSoftCutQ16)
       learn_scale(in, dt_us, q_res, q_change, q_short, q_turn);
   }

@@ -55,6 +55,8 @@ CameraModel derive_camera(const CameraSensor& c, int work_width, const std::stri
   return m;
 }
 
+double horizontal_fov(const CameraSensor& c) { return 2.0 * std::atan(0.5 * c.width / c.fu); }
+
 bool lens_applies(const CameraSensor& c) {
   const std::vector<double>& d = c.distortion;
   return c.distortion_model == "radial-tangential" && std::any_of(d.begin(), d.end(), [](double k) { return k != 0; });
@@ -250,7 +252,7 @@ EstimatorSettings derive_settings(const Recording& rec, WorkingSize size) {
   }
   s.frame_period = rec.frame_period_s;
   s.gyro_gap = gyro_gap_s(rec.imu_period_s);
-  const double hfov = 2.0 * std::atan(0.5 * rec.cam[0].width / rec.cam[0].fu);
+  const double hfov = horizontal_fov(rec.cam[0]);
   s.kernels = default_kernels(hfov);
   s.elevation_band = config::elevation_band_for(hfov);
   return s;

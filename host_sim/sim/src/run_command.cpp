@@ -364,11 +364,12 @@ int run(const RunArgs& a) {
     if (result.lens_distorted || a.ignore_distortion || a.lens_columns)
       std::fprintf(stderr, "%s\n", lens_line(result.lens_distorted, a.ignore_distortion, a.lens_columns));
     // Say which rows the columns summed where it is not the narrow view's default.
-    if (result.elevation_band || result.hfov_deg >= config::kElevationBandMinHfovRad / config::kDeg)
+    const double band_from_deg = config::kElevationBandMinHfovRad / config::kDeg;
+    if (result.elevation_band || result.hfov_deg >= band_from_deg)
       std::fprintf(stderr, "columns: %s (hfov %.0f deg; the band is the default from %.0f)\n",
                    result.elevation_band ? "one elevation band (the rows every column sees)"
                                          : "all rows, edge rows correcting the turn (--no-elevation-band)",
-                   result.hfov_deg, config::kElevationBandMinHfovRad / config::kDeg);
+                   result.hfov_deg, band_from_deg);
     if (result.pinhole_outside_px > 0)
       std::fprintf(stderr,
                    "lens: warning: %d pixels of the two cameras' pinhole views (%d each at the sensor's size) look "

@@ -144,7 +144,7 @@ RunResult run_recording(const Recording& rec, const EstimatorSettings& settings,
   if (binned) result.pinhole_outside_px = binned->pinhole_outside(0) + binned->pinhole_outside(1);
   result.width = settings.width;
   result.elevation_band = settings.elevation_band;
-  result.hfov_deg = 2 * std::atan(0.5 * rec.cam[0].width / rec.cam[0].fu) / config::kDeg;
+  result.hfov_deg = horizontal_fov(rec.cam[0]) / config::kDeg;
   result.height = settings.height;
   result.track.reserve(rec.frames.size());
   if (csv) std::fprintf(csv, "%s\n", kEstimatesHeader);

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "lumavel/host/recording_layout.hpp"
+#include "lumavel/host/rig.hpp"
 
 namespace lumavel::host::vo {
 namespace {
@@ -38,7 +39,7 @@ VoCamera camera_at(const CameraSensor& s, int width, int height, bool ignore_dis
   if (off > 1e-3 || cv::determinant(c.R_BC) <= 0)
     throw recording_error_in(yaml, "T_BS: the rotation part is not a rotation (R^T R differs from I by " +
                                        fmt("%.2g", off) + " or det <= 0): the VO needs the camera's true pose");
-  c.hfov = 2 * std::atan(0.5 * s.width / s.fu);
+  c.hfov = horizontal_fov(s);
   return c;
 }
 

@@ -31,7 +31,6 @@ constexpr int kClipRowStep = 8;
 // a black-level offset shows darkness above it (low signal, not caught here).
 constexpr int kNoLightMeanDn = 2;
 
-// ---- measurement (measurement.hpp) ----
 // Each kernel's local spatial frequency w, as (sigma w)^2, is clamped to this
 // band, the one a Gaussian-derivative kernel passes: continuous, so that noise
 // near w^2 = 0 cannot switch the finite-baseline correction on and off.

@@ -53,7 +53,7 @@ struct FusionInput {
   const TofResult* tof;     // this frame's time of flight (ok or not)
   TravelQ16Ns y;            // integral of v_differential (TofFrame::y of this frame)
   LengthQ24 baseline;
-  AngleQ28 scale_max_turn;  // the window's rotation that weighs a scale measurement as kFusionScaleMaxTurn
+  AngleQ28 scale_max_turn;  // the window's turn at which a scale measurement is weighed as at its limit (kFusionScaleMaxTurnSigma)
 };
 
 struct FusionOutput {

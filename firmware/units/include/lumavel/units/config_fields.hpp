@@ -167,11 +167,6 @@ static_assert(sizeof kDefaultKernels / sizeof kDefaultKernels[0] == kDefaultKern
 // 3) takes the first ones of the default set.
 constexpr int kDefaultKernelsBuilt = kDefaultKernelCount < kMaxKernels ? kDefaultKernelCount : kMaxKernels;
 
-// A horizontal field of view as the defaults use it: the focal length at the
-// default working width (kDefaultColumns), Q16 px, and the default kernels'
-// sigmas for it, Q28 rad. Other widths scale the focal length (defaults_for
-// in protocol/device_config.hpp); the kernels keep their angles.
-// Firmware: constexpr only.
 // The elevation band (kOptionElevationBand: every column sums the rows all
 // columns see) is the default from this horizontal field of view on. Under a
 // turn the scene slides through each column's elevation reach, which narrows
@@ -186,6 +181,11 @@ constexpr int kDefaultKernelsBuilt = kDefaultKernelCount < kMaxKernels ? kDefaul
 constexpr double kElevationBandMinHfovRad = 80 * kDeg;
 constexpr bool elevation_band_for(double hfov_rad) { return hfov_rad >= kElevationBandMinHfovRad; }
 
+// A horizontal field of view as the defaults use it: the focal length at the
+// default working width (kDefaultColumns), Q16 px, and the default kernels'
+// sigmas for it, Q28 rad, and whether it bands by default. Other widths scale
+// the focal length (defaults_for in protocol/device_config.hpp); the kernels
+// keep their angles. Firmware: constexpr only.
 struct FieldOfView {
   int32_t fu_at_default_width;                // PixelQ16
   int32_t kernel_sigma[kDefaultKernelCount];  // AngleQ28, kDefaultKernels sized to this view

@@ -21,6 +21,9 @@ constexpr int kMinWorkWidth = kMinColumns, kMaxWorkWidth = kMaxColumns, kMaxWork
 // axis where it is smaller (limits.hpp, default_columns/default_rows).
 WorkingSize default_working_size(const Recording& rec);
 
+// The camera's horizontal field of view (rad) from its width and focal length.
+double horizontal_fov(const CameraSensor& c);
+
 // The sensor's radial-tangential distortion applies: a coefficient is not 0.
 bool lens_applies(const CameraSensor& c);
 // k1, k2, p1, p2 of the sensor (missing ones 0).
