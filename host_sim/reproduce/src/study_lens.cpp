@@ -153,8 +153,9 @@ std::string lens_table(const StudyResult& sr, std::vector<SectionTarget>& target
   md << "\nReading: undistorting the frames makes a lens camera a pinhole camera for the estimator: the "
         "corrected runs follow the undistorted ones (the spin's spurious V is the pinhole's), where the column "
         "tables alone leave the part of the lens that bends each column across its rows (docs/design.md, \"Lens "
-        "distortion\"). What the pinhole itself leaves in the spin (0.04 m/s at hfov 90) is the column sums' "
-        "geometry on a wide camera (the elevation band, off by default, halves it; docs/design.md).\n";
+        "distortion\"). At hfov 90 the columns sum one elevation band by default (from 80 degrees; docs/design.md, "
+        "\"Column profile\"): without it the pinhole itself leaves twice the spin's spurious V (0.04 m/s), the "
+        "column sums' geometry on a wide camera.\n";
   md << "\nPlots (fixed engine, first working size):";
   for (const CaseResult& c : sr.cases)
     if (c.engine == EngineKind::kFixed && !c.plot.empty()) md << " [" << c.c.id << "](" << c.plot << ")";
