@@ -13,8 +13,10 @@
 #include <vector>
 
 #include "lumavel/core/status.hpp"
+#include "lumavel/core/time_of_flight.hpp"
 #include "lumavel/core/velocity_fusion.hpp"
 #include "lumavel/host/engine.hpp"
+#include "lumavel/host/float_time_of_flight.hpp"
 #include "lumavel/host/float_velocity_fusion.hpp"
 #include "synthetic_rig.hpp"
 
@@ -237,6 +239,67 @@ TEST(TimeOfFlight, AStartIsTakenUpWhileTheFusedSpeedLags) {
     CHECK(first > 0);
     CHECK(first < reachable + 0.3);
     CHECK(with > 0.85 * after);
+  }
+}
+
+// The tracker on its own, both engines: four kernels that see a scene of
+// incommensurate waves along the path (cam1 h ahead of cam0), at 0.7 m/s,
+// with both hints wrong at 0.25 m/s (a failed differential holding the fused
+// V there: no candidate agrees with them). A track is taken up unguided once
+// none has held for kTofLostTime, after kTofLostAcquireFrames consistent
+// frames, and kept; never before that time. Without the rule no track at all.
+TEST(TimeOfFlight, ALostTrackIsTakenUpWhereTheHintsAreWrong) {
+  const double h = 0.08, v = 0.7, hint = 0.25, dt = 1 / kRate;
+  const double wavelength[4] = {0.13, 0.21, 0.34, 0.55};
+  auto scene = [&](int k, double s) { return 0.05 * std::sin(2 * M_PI * s / wavelength[k] + k); };
+  TimeOfFlight fixed;
+  host::FloatTimeOfFlight dbl;
+  fixed.reset();
+  dbl.reset();
+  double first[2] = {-1, -1}, worst[2] = {0, 0};
+  int after[2] = {0, 0}, with[2] = {0, 0};
+  for (int i = 0; i < 2 * kRate; ++i) {
+    const double t = i * dt, x0 = v * t;
+    const uint64_t t_ns = static_cast<uint64_t>(std::llround(t * 1e9)) + 1000000000;
+    TofFrame& slot = fixed.push();
+    slot = TofFrame{};
+    slot.t_ns = t_ns;
+    host::FloatTofFrame f;
+    f.t_ns = t_ns;
+    for (int c = 0; c < 2; ++c) {
+      f.f[c].resize(4);
+      f.r[c] = Eigen::VectorXd::Zero(4);
+      for (int k = 0; k < 4; ++k) {
+        const double value = scene(k, x0 + c * h);
+        f.f[c][k] = value;
+        slot.f[c][k] = static_cast<ValueQ28>(std::llround(std::ldexp(value, 28)));
+      }
+    }
+    dbl.push(f);
+    TofTrackInput in{};
+    in.baseline = static_cast<LengthQ24>(std::llround(std::ldexp(h, 24)));
+    in.max_rotation = static_cast<AngleQ28>(std::llround(std::ldexp(0.01, 28)));
+    in.v_fused = in.v_direct = static_cast<SpeedQ16>(std::llround(std::ldexp(hint, 16)));
+    in.count = 4;
+    const TofResult a = fixed.track(in);
+    const host::FloatTofResult b = dbl.track(h, 0.01, hint, hint);
+    const double got[2] = {a.ok ? std::ldexp(a.v, -16) : 0, b.ok ? b.v : 0};
+    for (int e = 0; e < 2; ++e) {
+      if (first[e] < 0 && got[e] != 0) first[e] = t;
+      if (first[e] >= 0 && t > first[e]) {
+        ++after[e];
+        with[e] += got[e] != 0;
+      }
+      if (got[e] != 0) worst[e] = std::max(worst[e], std::fabs(got[e] / v - 1));
+    }
+  }
+  for (int e = 0; e < 2; ++e) {
+    std::printf("\n  hints %.2f m/s at %.1f m/s, %s: a track from %.3f s, then on %d of %d frames, worst |h/tau / V - 1| %.4f",
+                hint, v, e == 0 ? "fixed" : "float", first[e], with[e], after[e], worst[e]);
+    CHECK(first[e] >= params::kTofLostTime);
+    CHECK(first[e] < params::kTofLostTime + 0.2);
+    CHECK(with[e] > 0.95 * after[e]);
+    CHECK(worst[e] < 0.02);
   }
 }
 

@@ -17,6 +17,7 @@ constexpr int64_t kGateFramesQ16 = fx::q_of(kTofTrackGateFrames, 16);
 constexpr int64_t kGateFractionQ16 = fx::q_of(kTofTrackGateFraction, 16);
 constexpr int64_t kAgreementQ16 = fx::q_of(kTofAcquireAgreement, 16);
 constexpr int64_t kAcquireMinSpeedQ16 = fx::q_of(kTofAcquireMinSpeed, fx::kSpeedFrac);
+constexpr int64_t kLostNs = fx::q_of(kTofLostTime * 1e9, 0);
 constexpr int64_t kOneQ16 = int64_t{1} << 16;
 
 int64_t abs64(int64_t v) { return v < 0 ? -v : v; }
@@ -135,6 +136,7 @@ TofResult TimeOfFlight::track(const TofTrackInput& in) {
   TofResult r{};
   if (count_ < 3) {
     misses_ = 255;
+    track_t_ns_ = at(0).t_ns;  // lost since the history began
     return r;
   }
   const int64_t frame_ns = static_cast<int64_t>(at(0).t_ns - at(1).t_ns);
@@ -162,36 +164,43 @@ TofResult TimeOfFlight::track(const TofTrackInput& in) {
     bool guided = false;
     for (int64_t h : hints) guided = guided || abs64(h) > kAcquireMinSpeedQ16;
     const int64_t num = int64_t{in.baseline < 0 ? -in.baseline : in.baseline} * 1000000000;  // Q24 m ns
+    // Lost long (kTofLostTime): unguided as well where the hints agree with nothing.
+    const bool lost_long = at(0).t_ns - track_t_ns_ >= static_cast<uint64_t>(kLostNs);
     Candidate best{};
-    bool any = false;
-    for (int trail = 0; trail < 2; ++trail) {
-      int64_t min_ns = guided ? kTofMaxTauNs : 0, max_ns = guided ? 0 : kTofMaxTauNs;
-      for (int64_t h : hints) {
-        if (!guided || !guiding(h, trail)) continue;
-        const int64_t fast = ((kOneQ16 + kAgreementQ16) * abs64(h)) >> 16, slow = ((kOneQ16 - kAgreementQ16) * abs64(h)) >> 16;
-        min_ns = std::min<int64_t>(min_ns, int64_t{fx::div_q(num, fast * 256, 0)} - frame_ns);
-        max_ns = std::max<int64_t>(max_ns, slow > 0 ? int64_t{fx::div_q(num, slow * 256, 0)} + frame_ns : kTofMaxTauNs);
+    bool any = false, unguided = false;
+    for (int pass = 0; pass < 2 && !any; ++pass) {
+      if (pass == 1 && !(guided && lost_long)) break;
+      const bool g = pass == 0 && guided;
+      for (int trail = 0; trail < 2; ++trail) {
+        int64_t min_ns = g ? kTofMaxTauNs : 0, max_ns = g ? 0 : kTofMaxTauNs;
+        for (int64_t h : hints) {
+          if (!g || !guiding(h, trail)) continue;
+          const int64_t fast = ((kOneQ16 + kAgreementQ16) * abs64(h)) >> 16, slow = ((kOneQ16 - kAgreementQ16) * abs64(h)) >> 16;
+          min_ns = std::min<int64_t>(min_ns, int64_t{fx::div_q(num, fast * 256, 0)} - frame_ns);
+          max_ns = std::max<int64_t>(max_ns, slow > 0 ? int64_t{fx::div_q(num, slow * 256, 0)} + frame_ns : kTofMaxTauNs);
+        }
+        max_ns = std::min<int64_t>(max_ns, kTofMaxTauNs);
+        if (min_ns >= max_ns) continue;  // no hint in this direction
+        Candidate c{};
+        if (!search(in, trail, 0, min_ns, max_ns, c)) continue;
+        const SpeedQ16 v = speed_of(in.baseline, c.stau_ns > 0 ? 1 : -1, abs64(c.stau_ns));
+        bool agrees = !g;
+        for (int64_t h : hints)
+          agrees = agrees || (guiding(h, trail) && abs64(int64_t{v} - h) <= ((kAgreementQ16 * abs64(h)) >> 16));
+        if (!agrees) continue;
+        if (!any || c.res < best.res) {
+          best = c;
+          any = true;
+        }
       }
-      max_ns = std::min<int64_t>(max_ns, kTofMaxTauNs);
-      if (min_ns >= max_ns) continue;  // no hint in this direction
-      Candidate c{};
-      if (!search(in, trail, 0, min_ns, max_ns, c)) continue;
-      const SpeedQ16 v = speed_of(in.baseline, c.stau_ns > 0 ? 1 : -1, abs64(c.stau_ns));
-      bool agrees = !guided;
-      for (int64_t h : hints)
-        agrees = agrees || (guiding(h, trail) && abs64(int64_t{v} - h) <= ((kAgreementQ16 * abs64(h)) >> 16));
-      if (!agrees) continue;
-      if (!any || c.res < best.res) {
-        best = c;
-        any = true;
-      }
+      unguided = pass == 1;
     }
     if (any) {
       const bool same = acquire_count_ > 0 && (best.stau_ns > 0) == (acquire_ns_ > 0) &&
                         abs64(abs64(best.stau_ns) - abs64(acquire_ns_)) < gate_ns(acquire_ns_, frame_ns);
       acquire_count_ = same ? static_cast<uint8_t>(acquire_count_ + 1) : 1;
       acquire_ns_ = best.stau_ns;
-      if (acquire_count_ >= kTofAcquireFrames) {
+      if (acquire_count_ >= (unguided ? kTofLostAcquireFrames : kTofAcquireFrames)) {
         pick = best;
         have = true;
         acquire_count_ = 0;
@@ -202,6 +211,7 @@ TofResult TimeOfFlight::track(const TofTrackInput& in) {
   }
   if (!have) return r;
   track_ns_ = pick.stau_ns;
+  track_t_ns_ = at(0).t_ns;
   misses_ = 0;
   r.ok = true;
   r.direction = pick.stau_ns > 0 ? 1 : -1;

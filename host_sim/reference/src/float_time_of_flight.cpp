@@ -82,6 +82,7 @@ FloatTofResult FloatTimeOfFlight::track(double baseline, double max_rotation, do
   FloatTofResult r;
   if (ring_.size() < 3) {
     misses_ = 255;
+    track_t_ns_ = at(0).t_ns;  // lost since the history began
     return r;
   }
   const double frame_ns = static_cast<double>(at(0).t_ns - at(1).t_ns);
@@ -103,34 +104,41 @@ FloatTofResult FloatTimeOfFlight::track(double baseline, double max_rotation, do
     bool guided = false;
     for (double h : hints) guided = guided || std::fabs(h) > kTofAcquireMinSpeed;
     const double num = std::fabs(baseline) * 1e9;
+    // Lost long: unguided as well where the hints agree with nothing (the core's comment).
+    const bool lost_long = at(0).t_ns - track_t_ns_ >= static_cast<uint64_t>(std::llround(kTofLostTime * 1e9));
     Candidate best;
-    bool any = false;
-    for (int trail = 0; trail < 2; ++trail) {
-      double min_ns = guided ? kTofMaxTau * 1e9 : 0, max_ns = guided ? 0 : kTofMaxTau * 1e9;
-      for (double h : hints) {
-        if (!guided || !guiding(h, trail)) continue;
-        min_ns = std::min(min_ns, num / ((1 + kTofAcquireAgreement) * std::fabs(h)) - frame_ns);
-        max_ns = std::max(max_ns, num / ((1 - kTofAcquireAgreement) * std::fabs(h)) + frame_ns);
+    bool any = false, unguided = false;
+    for (int pass = 0; pass < 2 && !any; ++pass) {
+      if (pass == 1 && !(guided && lost_long)) break;
+      const bool g = pass == 0 && guided;
+      for (int trail = 0; trail < 2; ++trail) {
+        double min_ns = g ? kTofMaxTau * 1e9 : 0, max_ns = g ? 0 : kTofMaxTau * 1e9;
+        for (double h : hints) {
+          if (!g || !guiding(h, trail)) continue;
+          min_ns = std::min(min_ns, num / ((1 + kTofAcquireAgreement) * std::fabs(h)) - frame_ns);
+          max_ns = std::max(max_ns, num / ((1 - kTofAcquireAgreement) * std::fabs(h)) + frame_ns);
+        }
+        max_ns = std::min(max_ns, kTofMaxTau * 1e9);
+        if (min_ns >= max_ns) continue;
+        Candidate c;
+        if (!search(trail, max_rotation, 0, min_ns, max_ns, c)) continue;
+        const double v = (c.stau_ns > 0 ? baseline : -baseline) * 1e9 / std::fabs(c.stau_ns);
+        bool agrees = !g;
+        for (double h : hints) agrees = agrees || (guiding(h, trail) && std::fabs(v - h) <= kTofAcquireAgreement * std::fabs(h));
+        if (!agrees) continue;
+        if (!any || c.res < best.res) {
+          best = c;
+          any = true;
+        }
       }
-      max_ns = std::min(max_ns, kTofMaxTau * 1e9);
-      if (min_ns >= max_ns) continue;
-      Candidate c;
-      if (!search(trail, max_rotation, 0, min_ns, max_ns, c)) continue;
-      const double v = (c.stau_ns > 0 ? baseline : -baseline) * 1e9 / std::fabs(c.stau_ns);
-      bool agrees = !guided;
-      for (double h : hints) agrees = agrees || (guiding(h, trail) && std::fabs(v - h) <= kTofAcquireAgreement * std::fabs(h));
-      if (!agrees) continue;
-      if (!any || c.res < best.res) {
-        best = c;
-        any = true;
-      }
+      unguided = pass == 1;
     }
     if (any) {
       const bool same = acquire_count_ > 0 && (best.stau_ns > 0) == (acquire_ns_ > 0) &&
                         std::fabs(std::fabs(best.stau_ns) - std::fabs(acquire_ns_)) < gate_ns(acquire_ns_, frame_ns);
       acquire_count_ = same ? acquire_count_ + 1 : 1;
       acquire_ns_ = best.stau_ns;
-      if (acquire_count_ >= kTofAcquireFrames) {
+      if (acquire_count_ >= (unguided ? kTofLostAcquireFrames : kTofAcquireFrames)) {
         pick = best;
         have = true;
         acquire_count_ = 0;
@@ -141,6 +149,7 @@ FloatTofResult FloatTimeOfFlight::track(double baseline, double max_rotation, do
   }
   if (!have) return r;
   track_ns_ = pick.stau_ns;
+  track_t_ns_ = at(0).t_ns;
   misses_ = 0;
   r.ok = true;
   r.direction = pick.stau_ns > 0 ? 1 : -1;

@@ -33,6 +33,15 @@ constexpr double kTofAcquireAgreement = 0.3;
 constexpr double kTofAcquireMinSpeed = 0.1;
 // Longest time of flight used (s): beyond it the window mean lags a varying V.
 constexpr double kTofMaxTau = 0.6;
+// A track lost this long (s) while no candidate agrees with the hints is
+// looked for unguided as well (both directions, every usable tau), and taken
+// after this many consistent frames (twice the guided count: nothing vouches
+// for it but its own consistency). Where a failed differential holds the
+// fused V wrong, no candidate agrees with it, and the right track could
+// never be taken up again (near clutter at h = 12 cm: V 0.25 m/s for 2.5 s of
+// a 0.7 m/s pass, no time of flight).
+constexpr double kTofLostTime = 0.5;
+constexpr int kTofLostAcquireFrames = 6;
 
 // ---- fusion (velocity_fusion.hpp) ----
 // The differential's residual ratio is tracked only while it moves (m/s) ...

@@ -16,6 +16,8 @@
 // time of flight (it moves smoothly from frame to frame); without a track it
 // takes a new one only after the same candidate held for several frames and
 // agrees with the fused velocity (periodic scenes offer wrong matches too).
+// A track lost for kTofLostTime while no candidate agrees with the hints is
+// also looked for unguided, and taken after kTofLostAcquireFrames.
 // Reversals, standstill and speeds too slow for the history simply leave no
 // candidate: the caller falls back to the differential observer alone.
 //
@@ -91,6 +93,7 @@ class TimeOfFlight {
   uint8_t misses_ = 255;
   uint8_t acquire_count_ = 0;
   int64_t acquire_ns_ = 0;
+  uint64_t track_t_ns_ = 0;     // the newest frame's time when a track last held, or the history began
 };
 
 }  // namespace lumavel
