@@ -60,7 +60,7 @@ struct Case {
   std::string where;  // and the line, frame or value ("" for a file-level rule)
   // The argument the tool gets, from the damaged copy (default: the copy).
   std::function<std::string(const std::string& dir)> arg;
-  std::vector<std::string> options = {};  // more command-line options
+  std::vector<std::string> options = {};  // more command-line options ("@ARG" at the start: the argument)
 };
 
 struct Outcome {
@@ -497,6 +497,15 @@ std::vector<Case> read_cases(const std::string& report) {
   replay("zero-length record", [](const std::string& b) { return b + std::string(1, '\0'); }, "record");
   replay("no magic", [](const std::string& b) { return b.substr(8); }, "not a lumavel report file");
   replay("empty", [](const std::string&) { return std::string(); }, "not a lumavel report file");
+  // The CSV written over the report file being read (was: exit 0, the report file gone).
+  for (const char* to : {"run.hidrep", "link.csv"}) {
+    c.push_back({std::string("replay: -o onto the report file") + (to[0] == 'l' ? " (a symlink to it)" : ""), "replay",
+                 [report](const std::string& d) {
+                   write_text(d + "/run.hidrep", read_text(report));
+                   fs::create_symlink("run.hidrep", d + "/link.csv");
+                 },
+                 Expect::kRefused, "run.hidrep", "-o", {}, {"-o", std::string("@ARG/") + to}});
+  }
   return c;
 }
 
@@ -537,16 +546,22 @@ std::string judge(const Case& k, const Outcome& o, const std::string& csv, const
 }
 
 std::vector<std::string> command(const Tools& t, const Case& k, const std::string& arg, const std::string& work) {
+  std::vector<std::string> options = k.options;
+  for (std::string& o : options)
+    if (o.rfind("@ARG", 0) == 0) o.replace(0, 4, arg);
   std::vector<std::string> a;
   if (k.tool == "run") a = {t.sim, "run", arg, "-q", "-o", work + "/out.csv", "--plot", work + "/plot.svg"};
   if (k.tool == "calibrate") a = {t.sim, "calibrate", arg, "-q"};
   if (!a.empty()) {
-    a.insert(a.end(), k.options.begin(), k.options.end());
+    a.insert(a.end(), options.begin(), options.end());
     return a;
   }
   if (k.tool == "import") return {t.sim, "import-slider", arg, work + "/imported", "--baseline", "0.02"};
   if (k.tool == "config") return {t.read, "config", "check", "--file", arg + "/rig.cfg"};
-  return {t.read, "replay", arg + "/run.hidrep", "-o", work + "/out.csv"};
+  a = {t.read, "replay", arg + "/run.hidrep"};  // its options, or -o to the work folder
+  if (options.empty()) options = {"-o", work + "/out.csv"};
+  a.insert(a.end(), options.begin(), options.end());
+  return a;
 }
 
 }  // namespace

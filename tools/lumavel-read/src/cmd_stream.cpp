@@ -7,13 +7,16 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <stdexcept>
 #include <memory>
 #include <thread>
 
 #include "commands.hpp"
 #include "device.hpp"
+#include "lumavel/host/cli.hpp"
 #include "lumavel/host/output_file.hpp"
+#include "lumavel/host/path_check.hpp"
 #include "lumavel/host/report_file.hpp"
 #include "sink.hpp"
 
@@ -129,6 +132,14 @@ int cmd_stream(const Common& c, const StreamOptions& o) {
 
 int cmd_replay(const std::string& file, const StreamOptions& o) {
   host::ReportFileReader in(file);  // a file that is not a report file is refused before any CSV is created
+  // The CSV written over the report file (or a link to it) would destroy
+  // what is being read: refused before anything is written.
+  if (!o.output.empty() && o.output != "-") {
+    std::error_code ec;
+    if (std::filesystem::equivalent(o.output, file, ec) && !ec)
+      throw cli::UsageError(host::shown_path(o.output) + " (-o): that is the report file being read (" +
+                            host::shown_path(file) + "); write the CSV elsewhere");
+  }
   Outputs out;
   open_outputs(o, false, out);
   Sink sink(out.csv, false);
