@@ -286,6 +286,9 @@ std::vector<Case> recording_cases(const std::string& base) {
   }, "cam0/data/", "frame 0");
   refused("PNG 16000x16000", [=](const std::string& r) { write_png(img0(r), 16000, 16000, 8, PNG_COLOR_TYPE_GRAY); },
           "cam0/data/", mid_frame);
+  // Sparse: no disk space taken (was: "error: std::bad_alloc", naming nothing).
+  refused("frame a 100 GB file", [=](const std::string& r) { fs::resize_file(img0(r), uintmax_t{100} << 30); },
+          "cam0/data/", mid_frame);
   refused("frame file missing", [=](const std::string& r) { fs::remove(img1(r)); }, "cam1/data.csv", mid_line);
   refused("folder where a frame is", [=](const std::string& r) { replace_by_folder(img0(r)); }, c0, mid_line);
   refused("frame a symlink loop", [=](const std::string& r) {

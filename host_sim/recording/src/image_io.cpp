@@ -16,6 +16,11 @@ namespace lumavel::host {
 namespace {
 
 constexpr int kMaxSide = 16384;  // refuses absurd headers before allocating
+// The largest file read as an image: twice the pixels of the largest image
+// (an uncompressed PNG or a PGM of it is a little over one byte a pixel). A
+// bigger file (a video, a disk image under a frame's name) is refused by its
+// size, rather than read whole into memory.
+constexpr uint64_t kMaxImageFileBytes = uint64_t{2} * kMaxSide * kMaxSide;
 
 struct FileCloser {
   void operator()(std::FILE* f) const { std::fclose(f); }
@@ -27,14 +32,23 @@ std::vector<uint8_t> read_whole_file(const std::string& path) {
   FilePtr f(std::fopen(path.c_str(), "rb"));
   if (!f) throw recording_error_in(path, std::string("cannot open image: ") + std::strerror(errno));
   std::vector<uint8_t> bytes;
+  const auto too_big = [&](uint64_t n) {
+    return recording_error_in(path, "the file is " + std::to_string(n) + " bytes: more than an 8-bit grayscale image of "
+                                    "at most " + std::to_string(kMaxSide) + "x" + std::to_string(kMaxSide) +
+                                    " pixels takes (at most " + std::to_string(kMaxImageFileBytes) + " bytes are read)");
+  };
   if (std::fseek(f.get(), 0, SEEK_END) == 0) {
     const long n = std::ftell(f.get());
+    if (n > 0 && static_cast<uint64_t>(n) > kMaxImageFileBytes) throw too_big(static_cast<uint64_t>(n));
     if (n > 0) bytes.reserve(static_cast<size_t>(n));
     std::fseek(f.get(), 0, SEEK_SET);
   }
   uint8_t buf[65536];
   size_t got;
-  while ((got = std::fread(buf, 1, sizeof buf, f.get())) > 0) bytes.insert(bytes.end(), buf, buf + got);
+  while ((got = std::fread(buf, 1, sizeof buf, f.get())) > 0) {
+    bytes.insert(bytes.end(), buf, buf + got);
+    if (bytes.size() > kMaxImageFileBytes) throw too_big(bytes.size());  // grew while read
+  }
   if (std::ferror(f.get())) throw recording_error_in(path, "read error");
   return bytes;
 }
