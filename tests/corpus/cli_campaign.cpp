@@ -320,6 +320,9 @@ std::vector<Case> recording_cases(const std::string& base) {
     const std::string l = read_lines(r + m + imu)[line_of_row(imu_mid) - 1];
     fixture::set_line(r + m + imu, line_of_row(imu_mid), l.substr(0, l.find_last_of(',')));
   }, imu, imu_line);
+  refused("CSV NUL inside a filename", [=](const std::string& r) {
+    set_field(r + m + c0, line_of_row(mid), 1, frame_name(r, 0, mid) + std::string("\0junk", 5));
+  }, c0, mid_line);  // was: exit 0, the frame before the NUL read
   refused("CSV non-numeric timestamp", [=](const std::string& r) { set_field(r + m + c0, line_of_row(mid), 0, "abc"); }, c0, mid_line);
   refused("CSV NaN timestamp", [=](const std::string& r) { set_field(r + m + c0, line_of_row(mid), 0, "nan"); }, c0, mid_line);
   refused("CSV negative timestamp", [=](const std::string& r) { both_csv(r, [](const std::string& f) { set_field(f, 2, 0, "-1000000000"); }); }, c0, ":2:");
