@@ -466,6 +466,7 @@ std::vector<Case> slider_cases() {
   refused("image truncated", [=](const std::string& d) { truncate_file(d + "/images/frame_00000004.png", 70); }, "images.txt", ":5:");
   refused("image of another size", [=](const std::string& d) { write_png(d + "/images/frame_00000004.png", 40, 36, 8, PNG_COLOR_TYPE_GRAY); }, "images.txt", ":5:");
   refused("image RGB", [=](const std::string& d) { write_png(d + "/images/frame_00000004.png", 48, 36, 8, PNG_COLOR_TYPE_RGB); }, "images.txt", ":5:");
+  refused("NUL inside an image name", [=](const std::string& d) { line5(d + "/images.txt", [](const std::string& l) { return l + std::string("\0junk", 5); }); }, "images.txt", ":5:");  // was: exit 0
   refused("empty images.txt", [=](const std::string& d) { write_text(d + "/images.txt", ""); }, "images.txt", "");
   c.push_back({"import: BOM and CRLF", "import", [](const std::string& d) {
     write_text(d + "/images.txt", "\xEF\xBB\xBF" + read_text(d + "/images.txt"));
