@@ -160,6 +160,23 @@ void write_png(const std::string& path, int w, int h, int depth, int color) {
   std::fclose(f);
 }
 
+// A PNG whose header claims w x h 8-bit gray pixels and whose data holds a
+// few rows only: a few hundred bytes.
+void write_png_header_only(const std::string& path, int w, int h) {
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png_create_info_struct(png);
+  png_init_io(png, f);
+  png_set_IHDR(png, info, static_cast<png_uint_32>(w), static_cast<png_uint_32>(h), 8, PNG_COLOR_TYPE_GRAY,
+               PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_BASE, PNG_FILTER_TYPE_BASE);
+  png_write_info(png, info);
+  std::vector<png_byte> row(static_cast<size_t>(w), 0x55);
+  for (int y = 0; y < 4; ++y) png_write_row(png, row.data());
+  png_write_flush(png);
+  png_destroy_write_struct(&png, &info);
+  std::fclose(f);
+}
+
 void truncate_file(const std::string& path, size_t keep) {
   const std::string b = read_text(path);
   write_text(path, b.substr(0, std::min(keep, b.size())));
@@ -284,6 +301,10 @@ std::vector<Case> recording_cases(const std::string& base) {
     const auto [w, h] = sensor_size(r);
     write_png(image_of(r, 0, 0), w, h - 1, 8, PNG_COLOR_TYPE_GRAY);
   }, "cam0/data/", "frame 0");
+  // Refused by its header, not decoded (was: 256 MB allocated per decoding
+  // thread, then "corrupt PNG: Not enough image data", naming no size).
+  refused("PNG header claims 16384x16384 (a small file)", [=](const std::string& r) { write_png_header_only(img0(r), 16384, 16384); },
+          "cam0/data/", "16384x16384");
   refused("PNG 16000x16000", [=](const std::string& r) { write_png(img0(r), 16000, 16000, 8, PNG_COLOR_TYPE_GRAY); },
           "cam0/data/", mid_frame);
   // Sparse: no disk space taken (was: "error: std::bad_alloc", naming nothing).

@@ -53,6 +53,37 @@ TEST(ImageIo, PngRoundTripIsExact) {
   CHECK(img.px == px);
 }
 
+TEST(ImageIo, AnImageOfAnotherSizeThanExpectedIsNotDecoded) {
+  const std::vector<uint8_t> px = ramp(41, 30);
+  write_png_gray(path("a.png"), px.data(), 41, 30);
+  write_pgm(path("a.pgm"), px.data(), 41, 30);
+  for (const char* name : {"a.png", "a.pgm"}) {
+    const GrayImage other = read_gray_image(path(name), 40, 30);
+    LONGS_EQUAL(41, other.width);
+    LONGS_EQUAL(30, other.height);
+    CHECK(other.px.empty());
+    CHECK(read_gray_image(path(name), 41, 30).px == px);
+  }
+  // A header claiming 16384 x 16384 pixels with a few rows of data: its size,
+  // not "corrupt PNG", and nothing allocated for its pixels.
+  std::FILE* f = std::fopen(path("big.png").c_str(), "wb");
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png_create_info_struct(png);
+  png_init_io(png, f);
+  png_set_IHDR(png, info, 16384, 16384, 8, PNG_COLOR_TYPE_GRAY, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_BASE,
+               PNG_FILTER_TYPE_BASE);
+  png_write_info(png, info);
+  std::vector<uint8_t> row(16384, 0x55);
+  png_write_row(png, row.data());
+  png_write_flush(png);
+  png_destroy_write_struct(&png, &info);
+  std::fclose(f);
+  const GrayImage big = read_gray_image(path("big.png"), 40, 30);
+  LONGS_EQUAL(16384, big.width);
+  CHECK(big.px.empty());
+  STRCMP_CONTAINS("corrupt PNG", error_of([&] { read_gray_image(path("big.png")); }).c_str());
+}
+
 TEST(ImageIo, PgmRoundTripIsExact) {
   const std::vector<uint8_t> px = ramp(640, 3);
   write_pgm(path("a.pgm"), px.data(), 640, 3);

@@ -63,12 +63,12 @@ void FileStereoCamera::decode_into(size_t index, Slot& slot) const {
   ImageView view[2];
   for (int c = 0; c < 2; ++c) {
     const std::string frame = frame_of(c);
+    const CameraSensor& s = rec_.cam[c];
     try {
-      img[c] = read_gray_image(f.path[c]);
+      img[c] = read_gray_image(f.path[c], s.width, s.height);  // of another size: not decoded
     } catch (const RecordingError& e) {
       throw RecordingError(frame + e.what());
     }
-    const CameraSensor& s = rec_.cam[c];
     if (img[c].width != s.width || img[c].height != s.height)
       throw RecordingError(frame + f.path[c] + ": image is " + std::to_string(img[c].width) + "x" +
                            std::to_string(img[c].height) + ", sensor.yaml says resolution [" +

@@ -78,9 +78,31 @@ void png_read_mem(png_structp png, png_bytep out, png_size_t n) {
   src->pos += n;
 }
 
+// The size a caller expects (0 x 0: any): an image of another size is
+// returned with its width and height only, its pixels not decoded.
+struct Expect {
+  int width = 0, height = 0;
+  bool other(long w, long h) const { return width > 0 && (w != width || h != height); }
+};
+
 // Returns an empty string on success, the problem otherwise. Only plain data
 // lives in this frame across setjmp, as longjmp requires.
-std::string decode_png(const uint8_t* data, size_t size, GrayImage& img) {
+std::string decode_png(const uint8_t* data, size_t size, GrayImage& img, Expect expect) {
+  // The size in the header (IHDR, the first chunk), read before libpng: an
+  // image of another size is answered by it, whatever follows (a header
+  // claiming 60000x60000 pixels, a file truncated after its header).
+  if (size >= 24 && std::memcmp(data + 12, "IHDR", 4) == 0) {
+    const auto be32 = [&](size_t at) {
+      return static_cast<long>((uint32_t{data[at]} << 24) | (uint32_t{data[at + 1]} << 16) |
+                               (uint32_t{data[at + 2]} << 8) | uint32_t{data[at + 3]});
+    };
+    const long w = be32(16), h = be32(20);
+    if (w >= 1 && h >= 1 && w <= 0x7fffffff && h <= 0x7fffffff && expect.other(w, h)) {
+      img.width = static_cast<int>(w);
+      img.height = static_cast<int>(h);
+      return {};
+    }
+  }
   PngSource src{data, size, 0, {0}, {}};
   png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &src, png_fail, png_quiet_warning);
   if (!png) return "out of memory";
@@ -151,7 +173,7 @@ bool pgm_int(const uint8_t* d, size_t n, size_t& pos, long& value) {
   return true;
 }
 
-std::string decode_pgm(const uint8_t* d, size_t n, GrayImage& img) {
+std::string decode_pgm(const uint8_t* d, size_t n, GrayImage& img, Expect expect) {
   size_t pos = 2;
   long w = 0, h = 0, maxval = 0;
   if (!pgm_int(d, n, pos, w) || !pgm_int(d, n, pos, h) || !pgm_int(d, n, pos, maxval))
@@ -161,6 +183,11 @@ std::string decode_pgm(const uint8_t* d, size_t n, GrayImage& img) {
   ++pos;  // exactly one whitespace byte before the raster
   if (w <= 0 || h <= 0 || w > kMaxSide || h > kMaxSide) return "PGM size out of range";
   if (maxval != 255) return "wrong depth: PGM maxval " + std::to_string(maxval) + ", need 255 (8-bit)";
+  if (expect.other(w, h)) {
+    img.width = static_cast<int>(w);
+    img.height = static_cast<int>(h);
+    return {};
+  }
   const size_t need = static_cast<size_t>(w) * static_cast<size_t>(h);
   if (n - pos < need)
     return "truncated PGM: " + std::to_string(n - pos) + " of " + std::to_string(need) + " pixel bytes";
@@ -217,14 +244,16 @@ void check_size(const std::string& path, int w, int h) {
 
 }  // namespace
 
-GrayImage decode_gray_image(const uint8_t* data, size_t size, const std::string& name) {
+namespace {
+
+GrayImage decode(const uint8_t* data, size_t size, const std::string& name, Expect expect) {
   GrayImage img;
   std::string problem;
   static const uint8_t kPngSig[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
   if (size >= 8 && std::memcmp(data, kPngSig, 8) == 0) {
-    problem = decode_png(data, size, img);
+    problem = decode_png(data, size, img, expect);
   } else if (size >= 2 && data[0] == 'P' && data[1] == '5') {
-    problem = decode_pgm(data, size, img);
+    problem = decode_pgm(data, size, img, expect);
   } else if (size >= 2 && data[0] == 'P' && data[1] >= '1' && data[1] <= '7') {
     problem = std::string("unsupported netpbm type P") + static_cast<char>(data[1]) +
               " (need binary PGM, P5)";
@@ -237,9 +266,20 @@ GrayImage decode_gray_image(const uint8_t* data, size_t size, const std::string&
   return img;
 }
 
+}  // namespace
+
+GrayImage decode_gray_image(const uint8_t* data, size_t size, const std::string& name) {
+  return decode(data, size, name, Expect{});
+}
+
 GrayImage read_gray_image(const std::string& path) {
   const std::vector<uint8_t> bytes = read_whole_file(path);
-  return decode_gray_image(bytes.data(), bytes.size(), path);
+  return decode(bytes.data(), bytes.size(), path, Expect{});
+}
+
+GrayImage read_gray_image(const std::string& path, int expect_width, int expect_height) {
+  const std::vector<uint8_t> bytes = read_whole_file(path);
+  return decode(bytes.data(), bytes.size(), path, Expect{expect_width, expect_height});
 }
 
 void write_png_gray(const std::string& path, const uint8_t* px, int w, int h) {

@@ -22,7 +22,7 @@ hal::CaptureStatus NativeStereoCamera::capture(hal::StereoImage& out) {
     const std::string frame = "frame " + std::to_string(next_) + " (t=" + std::to_string(f.t_ns) + " ns, " +
                               layout::kCamDir[c] + "): ";
     try {
-      const GrayImage img = read_gray_image(f.path[c]);
+      const GrayImage img = read_gray_image(f.path[c], width_, height_);  // of another size: not decoded
       if (img.width != width_ || img.height != height_) {
         error_ = frame + f.path[c] + ": image is " + std::to_string(img.width) + "x" + std::to_string(img.height) +
                  ", sensor.yaml says resolution [" + std::to_string(width_) + ", " + std::to_string(height_) + "]";

@@ -21,6 +21,12 @@ struct GrayImage {
 // depth, truncated or corrupt files throw RecordingError naming `path`.
 GrayImage read_gray_image(const std::string& path);
 
+// Same, for a frame whose size is known (its sensor.yaml's resolution): an
+// image of another size comes back with its width and height and no pixels
+// (px empty), never decoded nor allocated, so that a small file whose header
+// claims 16384x16384 pixels costs nothing; the caller refuses it by its size.
+GrayImage read_gray_image(const std::string& path, int expect_width, int expect_height);
+
 // Same, from bytes already in memory; `name` is used in error messages.
 GrayImage decode_gray_image(const uint8_t* data, size_t size, const std::string& name);
 
