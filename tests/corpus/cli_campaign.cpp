@@ -61,6 +61,7 @@ struct Case {
   // The argument the tool gets, from the damaged copy (default: the copy).
   std::function<std::string(const std::string& dir)> arg;
   std::vector<std::string> options = {};  // more command-line options ("@ARG" at the start: the argument)
+  std::string stdout_to = {};  // where standard output goes (default: a file of the work folder)
 };
 
 struct Outcome {
@@ -525,6 +526,11 @@ std::vector<Case> read_cases(const std::string& report) {
   replay("zero-length record", [](const std::string& b) { return b + std::string(1, '\0'); }, "record");
   replay("no magic", [](const std::string& b) { return b.substr(8); }, "not a lumavel report file");
   replay("empty", [](const std::string&) { return std::string(); }, "not a lumavel report file");
+  // Output lost to a full disk (was: exit 0, nothing said).
+  c.push_back({"replay: CSV to a full standard output", "replay", [report](const std::string& d) { write_text(d + "/run.hidrep", read_text(report)); },
+               Expect::kRefused, "standard output", "write error", {}, {"-o", "-"}, "/dev/full"});
+  c.push_back({"config: 'ok' to a full standard output", "config", [](const std::string& d) { write_text(d + "/rig.cfg", "width=40\n"); },
+               Expect::kRefused, "standard output", "write error", {}, {}, "/dev/full"});
   // The CSV written over the report file being read (was: exit 0, the report file gone).
   for (const char* to : {"run.hidrep", "link.csv"}) {
     c.push_back({std::string("replay: -o onto the report file") + (to[0] == 'l' ? " (a symlink to it)" : ""), "replay",
@@ -664,7 +670,7 @@ int main(int argc, char** argv) {
     const std::string arg = k.arg ? k.arg(copy) : copy;
     fs::remove_all(work + "/imported");
     fs::remove(work + "/out.csv");
-    o = run(command(t, k, arg, work), work, work + "/stdout.txt", t.timeout_s);
+    o = run(command(t, k, arg, work), work, k.stdout_to.empty() ? work + "/stdout.txt" : k.stdout_to, t.timeout_s);
     std::string csv = work + "/out.csv", reference = k.tool == "run" ? intact_csv : "";
     if (k.tool == "import" && o.code == 0) {  // judged by the estimates of what it wrote
       o = run({t.sim, "run", work + "/imported", "-q", "-o", csv, "--plot", work + "/plot.svg"}, work, work + "/stdout.txt", t.timeout_s);

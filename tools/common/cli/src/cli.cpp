@@ -8,6 +8,7 @@
 #include <iostream>
 #include <memory>
 #include <sstream>
+#include <stdexcept>
 
 namespace lumavel::cli {
 namespace {
@@ -122,7 +123,10 @@ int Tool::run(int argc, const char* const* argv) {
   for (const auto& [sub, action] : actions_) {
     if (sub != chosen) continue;
     try {
-      return action();
+      const int status = action();
+      // Output lost on its way (a full disk) is a failure, not exit 0.
+      if (std::fflush(stdout) != 0 || std::ferror(stdout)) throw std::runtime_error("standard output: write error");
+      return status;
     } catch (const UsageError& e) {
       const std::string who = path_of(sub);
       std::fprintf(stderr, "%s: %s\n(see %s --help)\n", who.c_str(), e.what(), who.c_str());
