@@ -126,7 +126,7 @@ const std::vector<RecordingCase>& recording_corpus() {
       {"k1 = 1e10", [](const std::string& m) { replace_in(m + "cam0/sensor.yaml", "[0.01, ", "[1e10, "); },
        "cannot be inverted"},
       {"p2 = 20", [](const std::string& m) { replace_in(m + "cam1/sensor.yaml", "-0.0004]", "20]"); },
-       "cam1/sensor.yaml: distortion_coefficients"},
+       "cam1/sensor.yaml:19: distortion_coefficients"},
       {"baseline 40 m", [](const std::string& m) { replace_in(m + "cam1/sensor.yaml", "0.04,", "40.04,"); },
        "baseline h = 40"},
       {"no baseline", [](const std::string& m) { replace_in(m + "cam1/sensor.yaml", "0.04,", "-0.04,"); },

@@ -86,6 +86,11 @@ void check_lens_invertible(const CameraSensor& c, const std::string& yaml_path) 
   const LensDistortion lens = lens_of(c);
   const std::string coeffs = "distortion_coefficients [" + g(lens.k[0]) + ", " + g(lens.k[1]) + ", " +
                              g(lens.k[2]) + ", " + g(lens.k[3]) + "]: ";
+  // At the coefficients' line where they were read from a file.
+  auto refused = [&](const std::string& what) {
+    return c.line.distortion > 0 ? recording_error_at(yaml_path, c.line.distortion, coeffs + what)
+                                 : recording_error_in(yaml_path, coeffs + what);
+  };
   // Every pixel edge of the principal row (its order is checked), then the
   // top and bottom rows' edges (the whole image, over which the columns'
   // angles and elevation scales are taken).
@@ -103,15 +108,15 @@ void check_lens_invertible(const CameraSensor& c, const std::string& yaml_path) 
       // check naming it) must not make that look like a lens fault.
       const bool exact = std::hypot(ru - xd, rv - yd) <= 1e-12;
       if (!(miss <= kLensInverseTolerancePx || exact))
-        throw recording_error_in(yaml_path, coeffs + "the lens model cannot be inverted at pixel (" + g(u) + ", " +
-                                                g(v) + "): no undistorted point maps to it (" +
-                                                (std::isfinite(miss) ? "the nearest misses by " + g(miss) + " px"
-                                                                     : std::string("the inverse diverges")) +
-                                                "); is a coefficient wrong?");
+        throw refused("the lens model cannot be inverted at pixel (" + g(u) + ", " + g(v) +
+                      "): no undistorted point maps to it (" +
+                      (std::isfinite(miss) ? "the nearest misses by " + g(miss) + " px"
+                                           : std::string("the inverse diverges")) +
+                      "); is a coefficient wrong?");
       if (v == c.cv) {
         if (!(x > prev_x))
-          throw recording_error_in(yaml_path, coeffs + "the undistorted columns are not in order at column edge " +
-                                                  g(u) + " of the principal row: the lens folds the image");
+          throw refused("the undistorted columns are not in order at column edge " + g(u) +
+                        " of the principal row: the lens folds the image");
         prev_x = x;
       }
     }
