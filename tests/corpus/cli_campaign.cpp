@@ -403,13 +403,24 @@ std::vector<Case> recording_cases(const std::string& base) {
   refused("YAML lens not invertible", [=](const std::string& r) { set_yaml(r + m + y1, "distortion_coefficients", "[-5, 0, 0, 0]"); }, y1, "distortion_coefficients");
   refused("YAML negative exposure", [=](const std::string& r) { put_yaml(r + m + y0, "exposure_s", "-0.01"); }, y0, "exposure_s");
   refused("YAML negative gyro noise density", [=](const std::string& r) { put_yaml(r + m + yi, "gyroscope_noise_density", "-1e-4"); }, yi, "gyroscope_noise_density");
-  {  // k1 = 50 folds the undistortion map: refused at the coefficients' line (was: the file only)
-    const std::vector<std::string> y = read_lines(base + m + y0);
+  // "FILE:LINE" of `key:` in a sensor.yaml of the intact recording.
+  auto at_key = [&](const std::string& yaml, const std::string& key) {
+    const std::vector<std::string> y = read_lines(base + m + yaml);
     size_t line = 0;
-    while (line < y.size() && y[line].rfind("distortion_coefficients:", 0) != 0) ++line;
-    refused("YAML k1 = 50", [=](const std::string& r) { set_yaml(r + m + y0, "distortion_coefficients", "[50, 0, 0, 0]"); },
-            y0 + ":" + n(line + 1) + ": distortion_coefficients", "[50, 0, 0, 0]");
-  }
+    while (line < y.size() && y[line].rfind(key + ":", 0) != 0) ++line;
+    return yaml + ":" + n(line + 1) + ":";
+  };
+  // k1 = 50 folds the undistortion map: refused at the coefficients' line (was: the file only).
+  refused("YAML k1 = 50", [=](const std::string& r) { set_yaml(r + m + y0, "distortion_coefficients", "[50, 0, 0, 0]"); },
+          at_key(y0, "distortion_coefficients"), "[50, 0, 0, 0]");
+  // With one frame (one gyro sample) the period is 1 / rate_hz: refused at its line (was: the file only).
+  refused("YAML rate_hz 1e-300, one frame", [=](const std::string& r) { set_yaml(r + m + y0, "rate_hz", "1e-300"); keep_frames(r, 1); },
+          at_key(y0, "rate_hz"), "frame period");
+  refused("YAML imu rate_hz 1e-300, one gyro sample", [=](const std::string& r) {
+    set_yaml(r + m + yi, "rate_hz", "1e-300");
+    std::vector<std::string> l = read_lines(r + m + imu);
+    write_lines(r + m + imu, {l[0], l[l.size() / 4]});
+  }, at_key(yi, "rate_hz"), "gyro gap");
   refused("YAML lens p1 = 3", [=](const std::string& r) { set_yaml(r + m + y0, "distortion_coefficients", "[0, 0, 3, 0]"); }, y0, "distortion_coefficients");
   // Column 0 of the rotation (numbers 0, 4, 8) doubled, or negated: a mirror.
   auto scale_column0 = [](const std::string& yaml, double by) {

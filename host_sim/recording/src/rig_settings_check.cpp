@@ -24,11 +24,13 @@ std::string setting_source(const Recording& rec, const std::string& setting) {
            ": T_BS (the baseline is cam1's x minus cam0's)";
   // With one frame or one gyro sample the period is 1 / rate_hz (load_recording).
   if (setting == "frame_period")
-    return rec.frames.size() < 2 ? cam[0] + ": rate_hz (one frame: the frame period is 1 / rate_hz)"
-                                 : rec.root + "/" + layout::kCamDir[0] + "/data.csv: the median interval between frames";
+    return rec.frames.size() < 2
+               ? at(cam[0], rec.cam[0].line.rate_hz) + ": rate_hz (one frame: the frame period is 1 / rate_hz)"
+               : rec.root + "/" + layout::kCamDir[0] + "/data.csv: the median interval between frames";
   if (setting == "gyro_gap")
     return rec.imu_samples.size() < 2
-               ? rec.root + "/" + layout::kImuDir + "/sensor.yaml: rate_hz (one gyro sample: its period is 1 / rate_hz)"
+               ? at(rec.root + "/" + layout::kImuDir + "/sensor.yaml", rec.imu.line.rate_hz) +
+                     ": rate_hz (one gyro sample: its period is 1 / rate_hz)"
                : rec.root + "/" + layout::kImuDir + "/data.csv: the median interval between samples";
   if (setting == "kernels")
     return at(cam[0], rec.cam[0].line.intrinsics) + ": the field of view (resolution and intrinsics) sizes the kernels";

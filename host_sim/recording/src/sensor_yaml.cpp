@@ -252,8 +252,9 @@ CameraSensor read_camera_yaml(const std::string& path) {
   check_sensor_type(root, "camera", path);
   CameraSensor c;
   c.rate_hz = number(require(root, "rate_hz", path), "rate_hz", path);
+  c.line.rate_hz = line_of(root["rate_hz"]);
   if (c.rate_hz <= 0)
-    throw recording_error_at(path, line_of(root["rate_hz"]), "rate_hz = " + format_double(c.rate_hz) + " must be positive");
+    throw recording_error_at(path, c.line.rate_hz, "rate_hz = " + format_double(c.rate_hz) + " must be positive");
   const YAML::Node res = require(root, "resolution", path);
   const std::vector<double> r = numbers(res, "resolution", 2, path);
   if (r[0] < 1 || r[1] < 1 || r[0] > 16384 || r[1] > 16384 || r[0] != std::floor(r[0]) || r[1] != std::floor(r[1]))
@@ -296,8 +297,9 @@ ImuSensor read_imu_yaml(const std::string& path) {
   check_sensor_type(root, "imu", path);
   ImuSensor s;
   s.rate_hz = number(require(root, "rate_hz", path), "rate_hz", path);
+  s.line.rate_hz = line_of(root["rate_hz"]);
   if (s.rate_hz <= 0)
-    throw recording_error_at(path, line_of(root["rate_hz"]), "rate_hz = " + format_double(s.rate_hz) + " must be positive");
+    throw recording_error_at(path, s.line.rate_hz, "rate_hz = " + format_double(s.rate_hz) + " must be positive");
   s.T_BS = read_pose(root, path);
   s.gyroscope_noise_density = optional_number(root, "gyroscope_noise_density", path);
   s.gyroscope_random_walk = optional_number(root, "gyroscope_random_walk", path);

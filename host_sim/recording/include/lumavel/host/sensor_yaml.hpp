@@ -23,7 +23,7 @@ struct CameraSensor {
   // The line of each key in the file it was read from (0: not from a file),
   // so that a value the firmware cannot take is blamed on its line.
   struct Lines {
-    long resolution = 0, intrinsics = 0, distortion = 0, T_BS = 0;
+    long rate_hz = 0, resolution = 0, intrinsics = 0, distortion = 0, T_BS = 0;
   } line;
 };
 
@@ -33,6 +33,9 @@ struct ImuSensor {
   double gyroscope_noise_density = -1;  // optional; < 0 when absent
   double gyroscope_random_walk = -1;    // optional; < 0 when absent
   std::string comment;
+  struct Lines {  // as CameraSensor's
+    long rate_hz = 0;
+  } line;
 };
 
 // The intrinsics' own rules, checked as they are read, before the lens
