@@ -15,6 +15,7 @@
 //     --read build/tools/lumavel-read/lumavel-read --base /tmp/wall_40x30 --keep /tmp/campaign
 #include <png.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -62,6 +63,7 @@ struct Case {
   std::function<std::string(const std::string& dir)> arg;
   std::vector<std::string> options = {};  // more command-line options ("@ARG" at the start: the argument)
   std::string stdout_to = {};  // where standard output goes (default: a file of the work folder)
+  size_t memory_mb = 0;  // the tool's address space limited to it (0: not), for files of gigabytes
 };
 
 struct Outcome {
@@ -70,15 +72,20 @@ struct Outcome {
   std::string err;
 };
 
-// Runs argv in `cwd` (stdout to out_path, stderr captured), killed at `timeout_s`.
+// Runs argv in `cwd` (stdout to out_path, stderr captured), killed at
+// `timeout_s`, its address space limited to `memory_mb` (0: not).
 Outcome run(const std::vector<std::string>& argv, const std::string& cwd, const std::string& out_path,
-            double timeout_s) {
+            double timeout_s, size_t memory_mb = 0) {
   const std::string err_path = cwd + "/stderr.txt";
   std::fflush(stdout);  // else the child's freopen writes our buffered lines again
   const pid_t pid = ::fork();
   if (pid == 0) {
     if (::chdir(cwd.c_str()) != 0) _exit(126);
     if (!std::freopen(out_path.c_str(), "wb", stdout) || !std::freopen(err_path.c_str(), "wb", stderr)) _exit(126);
+    if (memory_mb > 0) {
+      const rlimit limit{static_cast<rlim_t>(memory_mb) << 20, static_cast<rlim_t>(memory_mb) << 20};
+      if (::setrlimit(RLIMIT_AS, &limit) != 0) _exit(126);
+    }
     std::vector<char*> a;
     for (const std::string& s : argv) a.push_back(const_cast<char*>(s.c_str()));
     a.push_back(nullptr);
@@ -544,6 +551,12 @@ std::vector<Case> read_cases(const std::string& report) {
   replay("zero-length record", [](const std::string& b) { return b + std::string(1, '\0'); }, "record");
   replay("no magic", [](const std::string& b) { return b.substr(8); }, "not a lumavel report file");
   replay("empty", [](const std::string&) { return std::string(); }, "not a lumavel report file");
+  // 4 GB (sparse) of NUL bytes, the tool limited to 1 GB (was: read whole:
+  // "error: std::bad_alloc", or minutes and gigabytes without the limit).
+  c.push_back({"config: a 4 GB file", "config", [](const std::string& d) {
+    write_text(d + "/rig.cfg", "width=40\n");
+    fs::resize_file(d + "/rig.cfg", uintmax_t{4} << 30);
+  }, Expect::kRefused, "rig.cfg", "4294967296 bytes", {}, {}, {}, 1024});
   // Output lost to a full disk (was: exit 0, nothing said).
   c.push_back({"replay: CSV to a full standard output", "replay", [report](const std::string& d) { write_text(d + "/run.hidrep", read_text(report)); },
                Expect::kRefused, "standard output", "write error", {}, {"-o", "-"}, "/dev/full"});
@@ -688,7 +701,8 @@ int main(int argc, char** argv) {
     const std::string arg = k.arg ? k.arg(copy) : copy;
     fs::remove_all(work + "/imported");
     fs::remove(work + "/out.csv");
-    o = run(command(t, k, arg, work), work, k.stdout_to.empty() ? work + "/stdout.txt" : k.stdout_to, t.timeout_s);
+    o = run(command(t, k, arg, work), work, k.stdout_to.empty() ? work + "/stdout.txt" : k.stdout_to, t.timeout_s,
+            k.memory_mb);
     std::string csv = work + "/out.csv", reference = k.tool == "run" ? intact_csv : "";
     if (k.tool == "import" && o.code == 0) {  // judged by the estimates of what it wrote
       o = run({t.sim, "run", work + "/imported", "-q", "-o", csv, "--plot", work + "/plot.svg"}, work, work + "/stdout.txt", t.timeout_s);
