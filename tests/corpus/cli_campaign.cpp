@@ -514,6 +514,9 @@ std::vector<Case> slider_cases() {
   refused("image of another size", [=](const std::string& d) { write_png(d + "/images/frame_00000004.png", 40, 36, 8, PNG_COLOR_TYPE_GRAY); }, "images.txt", ":5:");
   refused("image RGB", [=](const std::string& d) { write_png(d + "/images/frame_00000004.png", 48, 36, 8, PNG_COLOR_TYPE_RGB); }, "images.txt", ":5:");
   refused("NUL inside an image name", [=](const std::string& d) { line5(d + "/images.txt", [](const std::string& l) { return l + std::string("\0junk", 5); }); }, "images.txt", ":5:");  // was: exit 0
+  c.push_back({"import: groundtruth.txt of 4 GB", "import", [](const std::string& d) {  // as config: a 4 GB file
+    fs::resize_file(d + "/groundtruth.txt", uintmax_t{4} << 30);
+  }, Expect::kRefused, "groundtruth.txt", "line is longer than", {}, {}, {}, 1024});
   refused("empty images.txt", [=](const std::string& d) { write_text(d + "/images.txt", ""); }, "images.txt", "");
   c.push_back({"import: BOM and CRLF", "import", [](const std::string& d) {
     write_text(d + "/images.txt", "\xEF\xBB\xBF" + read_text(d + "/images.txt"));

@@ -19,8 +19,11 @@ void for_each_row(const std::string& path, Row row) {
   std::ifstream in(path);
   if (!in) throw recording_error_in(path, "cannot open");
   std::string line;
+  std::vector<char> buf;
   long no = 0;
-  while (std::getline(in, line)) {
+  // As a recording's tables are read: a line too long for a row (a binary or
+  // damaged file) is refused before it is all in memory.
+  while (next_table_line(in, buf, line, path, no + 1)) {
     ++no;
     if (no == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);  // UTF-8 byte order mark
     if (!line.empty() && line.back() == '\r') line.pop_back();

@@ -78,9 +78,10 @@ namespace {
 // than read whole into memory looking for its end.
 constexpr std::streamsize kMaxLineChars = std::streamsize{1} << 24;
 
-// The next line into `out` (its end of line removed), read a chunk at a
-// time; false at the end of the file.
-bool next_line(std::istream& in, std::vector<char>& buf, std::string& out, const std::string& path, long line) {
+}  // namespace
+
+bool next_table_line(std::istream& in, std::vector<char>& buf, std::string& out, const std::string& path, long line) {
+  if (buf.size() < 2) buf.resize(4096);
   out.clear();
   for (;;) {
     in.getline(buf.data(), static_cast<std::streamsize>(buf.size()));
@@ -108,8 +109,6 @@ bool next_line(std::istream& in, std::vector<char>& buf, std::string& out, const
   }
 }
 
-}  // namespace
-
 void for_each_csv_row(const std::string& path, const std::vector<std::string>& columns,
                       const std::function<void(const CsvRow&)>& on_row) {
   if (const std::string why = why_not_a_file(path); !why.empty()) throw recording_error_in(path, why);
@@ -117,7 +116,7 @@ void for_each_csv_row(const std::string& path, const std::vector<std::string>& c
   if (!in) throw recording_error_in(path, std::string("cannot open: ") + std::strerror(errno));
   std::string text;
   std::vector<char> buf(4096);
-  if (!next_line(in, buf, text, path, 1)) throw recording_error_at(path, 1, "empty file: missing header line");
+  if (!next_table_line(in, buf, text, path, 1)) throw recording_error_at(path, 1, "empty file: missing header line");
   if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);  // UTF-8 byte order mark
   const std::vector<std::string> header = split(trim(text));
   if (header.empty() || header[0].empty() || header[0][0] != '#')
@@ -141,7 +140,7 @@ void for_each_csv_row(const std::string& path, const std::vector<std::string>& c
   uint64_t prev_t = 0;
   long prev_line = 0;
   long line = 1;
-  while (next_line(in, buf, text, path, line + 1)) {
+  while (next_table_line(in, buf, text, path, line + 1)) {
     ++line;
     const std::string t = trim(text);
     if (t.empty()) continue;  // blank lines (a trailing newline) carry nothing

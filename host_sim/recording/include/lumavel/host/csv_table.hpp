@@ -4,6 +4,7 @@
 #pragma once
 #include <cstdint>
 #include <functional>
+#include <istream>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,14 @@ std::vector<CsvRow> read_csv_table(const std::string& path, const std::vector<st
 // are parsed without keeping every field as text.
 void for_each_csv_row(const std::string& path, const std::vector<std::string>& columns,
                       const std::function<void(const CsvRow&)>& row);
+
+// The next line of a text table `path` into `out`, its end of line (LF or CR
+// LF) removed; false at the end of the file. `line` is its number, for
+// messages; `buf` is scratch, read a chunk at a time. A line longer than a
+// row of a table could be (a binary or damaged file) or with a CR inside it
+// (CR-only line ends) throws RecordingError "FILE:LINE: ...", before the
+// whole of it is in memory.
+bool next_table_line(std::istream& in, std::vector<char>& buf, std::string& out, const std::string& path, long line);
 
 // Parses a finite number; throws "FILE:LINE: column NAME: ..." otherwise.
 double parse_finite(const std::string& text, const std::string& path, long line, const std::string& column);
