@@ -577,6 +577,16 @@ std::vector<Case> read_cases(const std::string& report) {
   return c;
 }
 
+// ---- scenario files (render) ------------------------------------------------------
+
+std::vector<Case> render_cases() {
+  // 4 GB (sparse), render limited to 1 GB (was: "error: std::bad_alloc", naming nothing).
+  return {{"render: a 4 GB scenario", "render", [](const std::string& d) {
+             write_text(d + "/scenario.yaml", "duration_s: 1\n");
+             fs::resize_file(d + "/scenario.yaml", uintmax_t{4} << 30);
+           }, Expect::kRefused, "scenario.yaml", "4294967296 bytes", {}, {}, {}, 1024}};
+}
+
 // ---- running and judging -----------------------------------------------------------
 
 struct Tools {
@@ -625,6 +635,7 @@ std::vector<std::string> command(const Tools& t, const Case& k, const std::strin
     return a;
   }
   if (k.tool == "import") return {t.sim, "import-slider", arg, work + "/imported", "--baseline", "0.02"};
+  if (k.tool == "render") return {t.sim, "render", arg + "/scenario.yaml", work + "/rendered", "-q", "--force"};
   if (k.tool == "config") return {t.read, "config", "check", "--file", arg + "/rig.cfg"};
   a = {t.read, "replay", arg + "/run.hidrep"};  // its options, or -o to the work folder
   if (options.empty()) options = {"-o", work + "/out.csv"};
@@ -687,6 +698,7 @@ int main(int argc, char** argv) {
   std::vector<Case> cases = recording_cases(intact);
   for (Case& k : slider_cases()) cases.push_back(std::move(k));
   for (Case& k : read_cases(report)) cases.push_back(std::move(k));
+  for (Case& k : render_cases()) cases.push_back(std::move(k));
 
   int failures = 0, i = 0;
   for (const Case& k : cases) {
