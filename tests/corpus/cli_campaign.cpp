@@ -545,6 +545,9 @@ std::vector<Case> read_cases(const std::string& report) {
   config("only comments", "# nothing\n\n", "no KEY=VALUE");
   config("trailing comment", "width=40 # columns\n", ":1:");
   config("lens table short", "width=40\nlens_cam0=0,0,0\n", ":2:");
+  // --file takes several names (was: "width=80: does not exist", no more said).
+  c.push_back({"config: a setting after --file FILE", "config", [](const std::string& d) { write_text(d + "/rig.cfg", "width=40\n"); },
+               Expect::kRefused, "width=80", "give the settings before --file", {}, {"width=80"}});
   auto replay = [&](std::string name, std::function<std::string(const std::string&)> bytes, std::string where) {
     c.push_back({"replay: " + name, "replay", [bytes, report](const std::string& d) { write_text(d + "/run.hidrep", bytes(read_text(report))); },
                  Expect::kRefused, "run.hidrep", std::move(where), {}});
@@ -636,7 +639,11 @@ std::vector<std::string> command(const Tools& t, const Case& k, const std::strin
   }
   if (k.tool == "import") return {t.sim, "import-slider", arg, work + "/imported", "--baseline", "0.02"};
   if (k.tool == "render") return {t.sim, "render", arg + "/scenario.yaml", work + "/rendered", "-q", "--force"};
-  if (k.tool == "config") return {t.read, "config", "check", "--file", arg + "/rig.cfg"};
+  if (k.tool == "config") {
+    a = {t.read, "config", "check", "--file", arg + "/rig.cfg"};
+    a.insert(a.end(), options.begin(), options.end());
+    return a;
+  }
   a = {t.read, "replay", arg + "/run.hidrep"};  // its options, or -o to the work folder
   if (options.empty()) options = {"-o", work + "/out.csv"};
   a.insert(a.end(), options.begin(), options.end());

@@ -218,8 +218,14 @@ std::pair<std::string, std::string> split_setting(const std::string& kv) {
 
 // The text of FILE; refuses what is not a readable regular file by its name.
 std::string read_settings_file(const std::string& path) {
-  if (const std::string why = why_not_a_file(path, "configuration file"); !why.empty())
-    throw std::runtime_error(shown_path(path) + ": " + why);
+  if (const std::string why = why_not_a_file(path, "configuration file"); !why.empty()) {
+    // --file takes several names: in `--file rig.cfg width=40` the setting is one.
+    const bool setting = why == "does not exist" && path.find('=') != std::string::npos;
+    throw std::runtime_error(shown_path(path) + ": " + why +
+                             (setting ? " (a KEY=VALUE after --file is read as another file name: give the settings "
+                                        "before --file, or after --)"
+                                      : ""));
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error(path + ": cannot open configuration file: " + std::strerror(errno));
   // A configuration file holds a few KEY=VALUE lines (`config get` prints a
