@@ -375,6 +375,7 @@ std::vector<Case> recording_cases(const std::string& base) {
   // The gyro.
   refused("IMU NaN rate", [=](const std::string& r) { set_field(r + m + imu, line_of_row(imu_mid), 3, "nan"); }, imu, imu_line);
   refused("IMU inf rate", [=](const std::string& r) { set_field(r + m + imu, line_of_row(imu_mid), 1, "-inf"); }, imu, imu_line);
+  refused("IMU hexadecimal rate 0x10", [=](const std::string& r) { set_field(r + m + imu, line_of_row(imu_mid), 3, "0x10"); }, imu, imu_line);  // was: read as 16 rad/s
   refused("IMU 1e999 rate", [=](const std::string& r) { set_field(r + m + imu, line_of_row(imu_mid), 2, "1e999"); }, imu, imu_line);
   flagged("IMU 1e30 yaw rate (saturates)", [=](const std::string& r) { set_field(r + m + imu, line_of_row(imu_mid), 3, "1e30"); });
   flagged("IMU hole of a third", [=](const std::string& r) {

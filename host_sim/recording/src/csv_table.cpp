@@ -57,6 +57,11 @@ double parse_finite(const std::string& text, const std::string& path, long line,
   const double v = std::strtod(text.c_str(), &end);
   if (end == text.c_str() || end != text.c_str() + text.size())
     throw recording_error_at(path, line, "column '" + column + "': '" + shown(text) + "' is not a number");
+  // strtod also reads C's hexadecimal numbers ("0x10" is 16): no CSV writer
+  // means those, and a damaged field must not pass as one.
+  if (text.find_first_of("xX") != std::string::npos)
+    throw recording_error_at(path, line, "column '" + column + "': '" + shown(text) +
+                                             "' is a hexadecimal number: the numbers of a recording are decimal");
   if (std::isinf(v) && errno == ERANGE)
     throw recording_error_at(path, line, "column '" + column + "': value '" + shown(text) +
                                              "' is beyond the largest number (about 1.8e308)");
