@@ -456,6 +456,10 @@ std::vector<Case> recording_cases(const std::string& base) {
   c.push_back({"path with spaces", "run", [](const std::string& r) { fs::rename(r, r + " with spaces"); fs::create_directory(r); }, Expect::kSame, "", "", [](const std::string& r) { return r + " with spaces"; }});
   c.push_back({"symlink loop as REC", "run", [](const std::string& r) { fs::create_symlink(r + "/loop_b", r + "/loop_a"); fs::create_symlink(r + "/loop_a", r + "/loop_b"); }, Expect::kRefused, "loop_a", "loop", [](const std::string& r) { return r + "/loop_a"; }});
 
+  // Beyond the clock's range the deadline overflowed: it ended at once, exit 0.
+  c.push_back({"--hid-linger 1e300", "run", nullptr, Expect::kRefused, "--hid-linger", "1e300", {},
+               {"--hid", "file:/dev/null", "--hid-linger", "1e300"}});
+
   // calibrate reads the recording the same way.
   for (const char* name : {"PNG truncated", "YAML key given twice", "cam1 at another resolution", "CSV timestamp beyond int64"})
     for (const Case& k : std::vector<Case>(c))

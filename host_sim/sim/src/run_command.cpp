@@ -70,7 +70,8 @@ struct RunArgs {
   bool no_elevation_band = false;
 };
 
-// --hid-linger: seconds >= 0, or -1 for "until interrupted".
+// --hid-linger: seconds 0..1e9 (about 32 years: the clock's deadline must
+// not overflow, which ended 1e10 s at once), or -1 for "until interrupted".
 CLI::Validator linger_seconds() {
   return CLI::Validator(
       [](std::string& s) -> std::string {
@@ -78,6 +79,7 @@ CLI::Validator linger_seconds() {
         const double v = std::strtod(s.c_str(), &end);
         if (s.empty() || *end != '\0' || !std::isfinite(v) || (v < 0 && v != -1))
           return "must be a number of seconds >= 0, or -1 (until interrupted), not '" + s + "'";
+        if (v > 1e9) return "must be at most 1e9 seconds (about 32 years), or -1 (until interrupted), not '" + s + "'";
         return {};
       },
       "");
@@ -492,7 +494,7 @@ void add_run_command(cli::Tool& tool) {
       ->check(cli::whole_number_in(0, 600000));
   c->add_option("--hid-linger", a->hid_linger_s,
                 "with --hid: after the last estimate keep the device and\n"
-                "answer feature reports (info, config) for S seconds;\n"
+                "answer feature reports (info, config) for S seconds (up to 1e9);\n"
                 "-1 until interrupted (SIGINT/SIGTERM, exit 0); default 0")
       ->type_name("S")
       ->check(linger_seconds());
