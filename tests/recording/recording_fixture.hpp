@@ -104,12 +104,15 @@ inline std::string write_recording(const std::string& dir, const Options& o = {}
     for (uint64_t t = o.t0 - o.frame_dt; t <= end; t += 5000000ull) {
       GroundTruthSample g;
       g.t_ns = t;
-      const double yaw = o.yaw_rate * static_cast<double>(t - o.t0) * 1e-9;
+      // Signed: the rows before the first frame (t < t0) are at negative times
+      // (an unsigned t - t0 wrapped to 1.8e10 s, 1.8e10 m away).
+      const double since_t0_s = (static_cast<double>(t) - static_cast<double>(o.t0)) * 1e-9;
+      const double yaw = o.yaw_rate * since_t0_s;
       g.q[0] = std::cos(yaw / 2);
       g.q[3] = std::sin(yaw / 2);
       g.v[0] = o.speed * std::cos(yaw);
       g.v[1] = o.speed * std::sin(yaw);
-      g.p[0] = o.speed * static_cast<double>(t - o.t0) * 1e-9;
+      g.p[0] = o.speed * since_t0_s;
       w.add_groundtruth(g);
     }
   }
