@@ -394,6 +394,9 @@ std::vector<Case> recording_cases(const std::string& base) {
   // Ground truth.
   refused("GT zero quaternion", [=](const std::string& r) { for (size_t k = 4; k <= 7; ++k) set_field(r + m + gt, 3, k, "0"); }, gt, ":3:");
   refused("GT NaN velocity", [=](const std::string& r) { set_field(r + m + gt, 3, 8, "nan"); }, gt, ":3:");
+  // Beyond a physical bound (was: exit 0, "RMS error: 1e+06 m/s").
+  refused("GT velocity 1e6 m/s", [=](const std::string& r) { set_field(r + m + gt, 3, 8, "1e6"); }, gt, ":3: column 'v_RS_R_x [m s^-1]': 1e+06");
+  refused("GT position 1e300 m", [=](const std::string& r) { set_field(r + m + gt, 3, 1, "1e300"); }, gt, ":3: column 'p_RS_R_x [m]': 1e+300");
   refused("GT header only", [=](const std::string& r) { write_lines(r + m + gt, {read_lines(r + m + gt)[0]}); }, gt, ":2:");
   refused("GT a folder", [=](const std::string& r) { fs::remove(r + m + gt); fs::create_directory(r + m + gt); }, gt, "folder");
 

@@ -99,6 +99,16 @@ const std::vector<RecordingCase>& recording_corpus() {
          set_field(m + "state_groundtruth_estimate0/data.csv", 6, 8, std::string("1\0" "7", 3));
        },
        "followed by a NUL byte"},
+      // Beyond a physical bound (was: exit 0, "RMS error: 1e+06 m/s").
+      {"1e6 m/s ground-truth velocity",
+       [](const std::string& m) { set_field(m + "state_groundtruth_estimate0/data.csv", 6, 8, "1e6"); },
+       "state_groundtruth_estimate0/data.csv:6: column 'v_RS_R_x [m s^-1]': 1e+06 m/s is beyond +-1000 m/s"},
+      {"1e300 m ground-truth position",
+       [](const std::string& m) { set_field(m + "state_groundtruth_estimate0/data.csv", 6, 1, "1e300"); },
+       "state_groundtruth_estimate0/data.csv:6: column 'p_RS_R_x [m]': 1e+300 m is beyond +-1e+07 m"},
+      {"1e9 rad/s ground-truth gyro bias",
+       [](const std::string& m) { set_field(m + "state_groundtruth_estimate0/data.csv", 6, 13, "1e9"); },
+       "state_groundtruth_estimate0/data.csv:6: column 'b_w_RS_S_z [rad s^-1]': 1e+09 is beyond +-1000"},
       {"no gyro samples",
        [](const std::string& m) { filter_gyro(m, [](uint64_t) { return false; }); }, "no gyro samples"},
       {"gyro 1000 s away", [](const std::string& m) { shift_gyro(m, 1000000000000ll); },

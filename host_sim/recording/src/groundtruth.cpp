@@ -4,7 +4,28 @@
 #include <cmath>
 #include <limits>
 
+#include "lumavel/host/csv_table.hpp"
+#include "lumavel/host/recording_layout.hpp"
+
 namespace lumavel::host {
+
+std::string why_implausible_position(double p_m) {
+  if (std::fabs(p_m) <= layout::kGroundTruthMaxPositionM) return "";
+  return format_double(p_m) + " m is beyond +-" + format_double(layout::kGroundTruthMaxPositionM) +
+         " m, farther than any point on Earth: a corrupt position";
+}
+
+std::string why_implausible_speed(double v_mps) {
+  if (std::fabs(v_mps) <= layout::kGroundTruthMaxSpeedMps) return "";
+  return format_double(v_mps) + " m/s is beyond +-" + format_double(layout::kGroundTruthMaxSpeedMps) +
+         " m/s, faster than any vehicle: a corrupt velocity";
+}
+
+std::string why_not_unit_quaternion(double norm) {
+  if (std::fabs(norm - 1.0) <= layout::kGroundTruthQuaternionNormTolerance) return "";
+  return "is not a unit quaternion (norm " + format_double(norm) + "): its norm must be within " +
+         format_double(layout::kGroundTruthQuaternionNormTolerance) + " of 1";
+}
 
 double body_forward_velocity(const GroundTruthSample& g) {
   const double n = std::sqrt(g.q[0] * g.q[0] + g.q[1] * g.q[1] + g.q[2] * g.q[2] + g.q[3] * g.q[3]);

@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "lumavel/host/csv_table.hpp"
+#include "lumavel/host/groundtruth.hpp"
 #include "lumavel/host/image_io.hpp"
 #include "lumavel/host/path_check.hpp"
 #include "lumavel/host/recording_layout.hpp"
@@ -120,7 +121,21 @@ std::vector<GroundTruthSample> read_groundtruth(const std::string& csv) {
   std::vector<GroundTruthSample> out;
   for_each_csv_row(csv, layout::groundtruth_columns(), [&](const CsvRow& r) {
     double v[16];
-    for (size_t k = 0; k < 16; ++k) v[k] = parse_finite(r.fields[k], csv, r.line, layout::groundtruth_columns()[k]);
+    for (size_t k = 0; k < 16; ++k) {
+      const std::string& column = layout::groundtruth_columns()[k];
+      v[k] = parse_finite(r.fields[k], csv, r.line, column);
+      // Positions, velocities and biases each within their bound (the
+      // quaternion's norm is checked below).
+      std::string why;
+      if (k < 3) why = why_implausible_position(v[k]);
+      else if (k >= 7 && k < 10) why = why_implausible_speed(v[k]);
+      else if (k >= 10) {
+        const double limit = k < 13 ? layout::kImuMaxRateRadps : layout::kImuMaxAccelMps2;
+        if (std::fabs(v[k]) > limit)
+          why = format_double(v[k]) + " is beyond +-" + format_double(limit) + ", more than any IMU measures: a corrupt bias";
+      }
+      if (!why.empty()) throw recording_error_at(csv, r.line, "column '" + column + "': " + why);
+    }
     GroundTruthSample g;
     g.t_ns = r.t_ns;
     for (int k = 0; k < 3; ++k) {
@@ -131,8 +146,8 @@ std::vector<GroundTruthSample> read_groundtruth(const std::string& csv) {
     }
     for (int k = 0; k < 4; ++k) g.q[k] = v[3 + k];
     const double n = std::sqrt(g.q[0] * g.q[0] + g.q[1] * g.q[1] + g.q[2] * g.q[2] + g.q[3] * g.q[3]);
-    if (std::fabs(n - 1.0) > 0.01)
-      throw recording_error_at(csv, r.line, "q_RS is not a unit quaternion (norm " + format_double(n) + ")");
+    if (const std::string why = why_not_unit_quaternion(n); !why.empty())
+      throw recording_error_at(csv, r.line, "q_RS " + why);
     out.push_back(g);
   });
   return out;

@@ -2,11 +2,20 @@
 // q_RS^-1 * v_RS_R, linearly interpolated at the requested timestamps.
 #pragma once
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "lumavel/host/recording.hpp"
 
 namespace lumavel::host {
+
+// The plausibility rules of ground truth (the bounds of recording_layout.hpp),
+// shared by the recording reader and import-slider: "" when the value is
+// within its bound, else the reason, e.g. "1e+06 m/s is beyond +-1000 m/s
+// (...)". Callers name the file, line and column before it.
+std::string why_implausible_position(double p_m);
+std::string why_implausible_speed(double v_mps);
+std::string why_not_unit_quaternion(double norm);
 
 // V_xb at one ground-truth sample (q need not be normalised; it is).
 double body_forward_velocity(const GroundTruthSample& g);

@@ -28,6 +28,17 @@ inline const std::vector<std::string>& imu_columns() {
 // the engines' to flag (SATURATED).
 constexpr double kImuMaxRateRadps = 1000;
 constexpr double kImuMaxAccelMps2 = 100000;
+// The largest magnitudes a ground-truth row may hold (recording and
+// import-slider alike), so that a corrupt value is refused rather than
+// scored against: a position beyond 1e7 m is farther than any point on Earth
+// is from its centre (6.4e6 m, so even Earth-centred coordinates pass); a
+// speed beyond 1000 m/s is three times the speed of sound, faster than any
+// vehicle this sensor rides on; a quaternion's norm further than 0.01 from 1
+// is not a rotation written with a few digits to spare. Biases are bounded
+// by the IMU's own limits above.
+constexpr double kGroundTruthMaxPositionM = 1e7;
+constexpr double kGroundTruthMaxSpeedMps = 1000;
+constexpr double kGroundTruthQuaternionNormTolerance = 0.01;
 
 inline const std::vector<std::string>& groundtruth_columns() {
   static const std::vector<std::string> v = {
