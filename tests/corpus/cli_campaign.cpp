@@ -512,6 +512,11 @@ std::vector<Case> slider_cases() {
   refused("time '0.17abc'", [=](const std::string& d) { line5(d + "/images.txt", [](std::string l) { return l.insert(l.find(' '), "abc"); }); }, "images.txt", ":5:");
   refused("negative time", [=](const std::string& d) { line5(d + "/images.txt", [](const std::string& l) { return "-5" + l.substr(l.find(' ')); }); }, "images.txt", ":5:");
   refused("time 1e300 s", [=](const std::string& d) { line5(d + "/groundtruth.txt", [](const std::string& l) { return "1e300" + l.substr(l.find(' ')); }); }, "groundtruth.txt", ":5:");
+  // The recording's physical bounds (was: exit 0, a speed of 2.5e301 m/s written).
+  refused("position 1e300 m", [=](const std::string& d) { line5(d + "/groundtruth.txt", [](const std::string& l) { const size_t a = l.find(' ') + 1; return l.substr(0, a) + "1e300" + l.substr(l.find(' ', a)); }); },
+          "groundtruth.txt", ":5: x: 1e+300 m is beyond");
+  refused("position jump of 1e5 m", [=](const std::string& d) { line5(d + "/groundtruth.txt", [](const std::string& l) { const size_t a = l.find(' ') + 1; return l.substr(0, a) + "1e5" + l.substr(l.find(' ', a)); }); },
+          "groundtruth.txt", ":3: the speed along x from line 1 to line 5");
   refused("extra ground-truth field", [=](const std::string& d) { line5(d + "/groundtruth.txt", [](const std::string& l) { return l + " 7"; }); }, "groundtruth.txt", ":5:");
   refused("zero quaternion", [=](const std::string& d) { line5(d + "/groundtruth.txt", [](const std::string& l) { return l.substr(0, l.size() - 3) + "0.0"; }); }, "groundtruth.txt", ":5:");
   refused("extra calib field", [=](const std::string& d) { write_text(d + "/calib.txt", "50 51 23.5 17.5 0 0 0 0 0 9\n"); }, "calib.txt", ":1:");

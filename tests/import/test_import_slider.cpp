@@ -183,6 +183,11 @@ TEST(ImportSlider, DamagedDatasetsAreRefusedNamingTheLine) {
        "calib.txt:1: unexpected extra field '9'"},
       {[&] { line5("groundtruth.txt", [](const std::string& l) { return l.substr(0, l.size() - 3) + "0.0"; }); },
        "groundtruth.txt:5: qx qy qz qw is not a unit quaternion (norm 0)"},
+      // The recording's physical bounds (was: exit 0, a speed of 2.5e301 m/s written).
+      {[&] { line5("groundtruth.txt", [](const std::string& l) { const size_t a = l.find(' ') + 1; return l.substr(0, a) + "1e300" + l.substr(l.find(' ', a)); }); },
+       "groundtruth.txt:5: x: 1e+300 m is beyond +-1e+07 m"},
+      {[&] { line5("groundtruth.txt", [](const std::string& l) { const size_t a = l.find(' ') + 1; return l.substr(0, a) + "1e5" + l.substr(l.find(' ', a)); }); },
+       "groundtruth.txt:3: the speed along x from line 1 to line 5: "},
       // A camera `run` refuses is refused here, naming calib.txt.
       {[&] { fixture::write_text(d + "/calib.txt", "50 51 23.5 1e6 0 0 0 0 0\n"); },
        "calib.txt:1: intrinsics: principal point cv = 1e+06 px"},

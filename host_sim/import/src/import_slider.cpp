@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "lumavel/host/cli.hpp"
+#include "lumavel/host/groundtruth.hpp"
 #include "lumavel/host/image_io.hpp"
 #include "lumavel/host/recording_writer.hpp"
 #include "lumavel/host/rig.hpp"
@@ -59,8 +60,11 @@ CameraSensor make_camera(const SliderCalib& c, int w, int h, double rate_hz, dou
 
 // Ground truth of the body origin (midpoint of the cameras, h/2 ahead of
 // cam0), identity orientation, velocity by central differences over +-2
-// samples (~40 ms at 100 Hz: the timestamps jitter by ~1 ms).
-std::vector<GroundTruthSample> body_groundtruth(const std::vector<SliderPose>& poses, double h) {
+// samples (~40 ms at 100 Hz: the timestamps jitter by ~1 ms). A speed beyond
+// the ground truth's bound (groundtruth.hpp; the real slider's are -0.16 to
+// 0.34 m/s, with small backward steps) is refused naming gt_file's lines.
+std::vector<GroundTruthSample> body_groundtruth(const std::vector<SliderPose>& poses, double h,
+                                                const std::string& gt_file) {
   const size_t n = poses.size();
   std::vector<GroundTruthSample> out(n);
   for (size_t k = 0; k < n; ++k) {
@@ -71,7 +75,14 @@ std::vector<GroundTruthSample> body_groundtruth(const std::vector<SliderPose>& p
   for (size_t k = 0; k < n; ++k) {
     const size_t a = k >= 2 ? k - 2 : 0, b = std::min(n - 1, k + 2);
     const double dt = poses[b].t - poses[a].t;
-    for (int i = 0; i < 3; ++i) out[k].v[i] = (out[b].p[i] - out[a].p[i]) / dt;
+    for (int i = 0; i < 3; ++i) {
+      out[k].v[i] = (out[b].p[i] - out[a].p[i]) / dt;
+      if (const std::string why = why_implausible_speed(out[k].v[i]); !why.empty())
+        throw recording_error_at(gt_file, poses[k].line,
+                                 std::string("the speed along ") + "xyz"[i] + " from line " +
+                                     std::to_string(poses[a].line) + " to line " + std::to_string(poses[b].line) +
+                                     ": " + why);
+    }
   }
   return out;
 }
@@ -86,6 +97,8 @@ ImportSliderSummary import_slider(const std::string& data_dir, const std::string
   const std::string gt_file = data_dir + "/groundtruth.txt";
   if (!(d.poses.back().p[0] > d.poses.front().p[0]))
     throw recording_error_in(gt_file, "the slider does not move along +x (the import assumes it does)");
+  // Before anything is written: its speeds are checked.
+  const std::vector<GroundTruthSample> truth = body_groundtruth(d.poses, options.baseline, gt_file);
   if (d.calib.k3 != 0)
     std::fprintf(stderr, "import-slider: warning: %s: k3 = %g dropped (the recording format has k1 k2 p1 p2)\n",
                  (data_dir + "/calib.txt").c_str(), d.calib.k3);
@@ -157,7 +170,7 @@ ImportSliderSummary import_slider(const std::string& data_dir, const std::string
     ++sum.imu_samples;
   }
 
-  for (const GroundTruthSample& g : body_groundtruth(d.poses, h)) {
+  for (const GroundTruthSample& g : truth) {
     out.add_groundtruth(g);
     ++sum.groundtruth_samples;
   }

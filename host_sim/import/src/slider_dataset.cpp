@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "lumavel/host/csv_table.hpp"
+#include "lumavel/host/groundtruth.hpp"
 #include "lumavel/host/path_check.hpp"
 #include "lumavel/host/recording_error.hpp"
 
@@ -100,12 +101,18 @@ SliderDataset read_slider_dataset(const std::string& dir) {
   for_each_row(gt, [&](std::istringstream& s, long line) {
     SliderPose p;
     p.t = time_s(s, gt, line);
-    for (int k = 0; k < 3; ++k) p.p[k] = number(s, gt, line, kCols[k]);
+    p.line = line;
+    for (int k = 0; k < 3; ++k) {
+      p.p[k] = number(s, gt, line, kCols[k]);
+      // The recording's bound (was: 1e300 m imported, a speed of 2.5e301 m/s written).
+      if (const std::string why = why_implausible_position(p.p[k]); !why.empty())
+        throw recording_error_at(gt, line, std::string(kCols[k]) + ": " + why);
+    }
     for (int k = 0; k < 4; ++k) p.q[k] = number(s, gt, line, kCols[3 + k]);
     no_more_fields(s, gt, line, "t x y z qx qy qz qw");
     const double n = std::sqrt(p.q[0] * p.q[0] + p.q[1] * p.q[1] + p.q[2] * p.q[2] + p.q[3] * p.q[3]);
-    if (std::fabs(n - 1.0) > 0.01)
-      throw recording_error_at(gt, line, "qx qy qz qw is not a unit quaternion (norm " + format_double(n) + ")");
+    if (const std::string why = why_not_unit_quaternion(n); !why.empty())
+      throw recording_error_at(gt, line, "qx qy qz qw " + why);
     check_increasing(d.poses.empty() ? 0 : d.poses.back().t, p.t, !d.poses.empty(), gt, line);
     d.poses.push_back(p);
   });

@@ -18,6 +18,7 @@ struct SliderPose {
   double t = 0;                // s
   double p[3] = {0, 0, 0};     // camera position, m (dataset world frame)
   double q[4] = {0, 0, 0, 1};  // qx qy qz qw as in the file
+  long line = 0;               // in groundtruth.txt
 };
 
 struct SliderCalib {
@@ -32,7 +33,8 @@ struct SliderDataset {
 };
 
 // Reads DIR/images.txt, DIR/groundtruth.txt, DIR/calib.txt (images are not
-// decoded here). Throws RecordingError naming the file and line.
+// decoded here). Throws RecordingError naming the file and line; a position
+// beyond the ground truth's physical bound (groundtruth.hpp) is refused.
 SliderDataset read_slider_dataset(const std::string& dir);
 
 }  // namespace lumavel::host
