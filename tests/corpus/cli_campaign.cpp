@@ -517,6 +517,10 @@ std::vector<Case> slider_cases() {
           "groundtruth.txt", ":5: x: 1e+300 m is beyond");
   refused("position jump of 1e5 m", [=](const std::string& d) { line5(d + "/groundtruth.txt", [](const std::string& l) { const size_t a = l.find(' ') + 1; return l.substr(0, a) + "1e5" + l.substr(l.find(' ', a)); }); },
           "groundtruth.txt", ":3: the speed along x from line 1 to line 5");
+  // strtod's hexadecimal form, as the recording tables refuse it (was: read, exit 0).
+  refused("hexadecimal position", [=](const std::string& d) { line5(d + "/groundtruth.txt", [](const std::string& l) { const size_t a = l.find(' ') + 1; return l.substr(0, a) + "0x1p-3" + l.substr(l.find(' ', a)); }); },
+          "groundtruth.txt", ":5: column 'x': '0x1p-3' is a hexadecimal");
+  refused("hexadecimal calib fx", [=](const std::string& d) { write_text(d + "/calib.txt", "0x32 51 23.5 17.5 0 0 0 0 0\n"); }, "calib.txt", ":1: column 'fx'");
   refused("extra ground-truth field", [=](const std::string& d) { line5(d + "/groundtruth.txt", [](const std::string& l) { return l + " 7"; }); }, "groundtruth.txt", ":5:");
   refused("zero quaternion", [=](const std::string& d) { line5(d + "/groundtruth.txt", [](const std::string& l) { return l.substr(0, l.size() - 3) + "0.0"; }); }, "groundtruth.txt", ":5:");
   refused("extra calib field", [=](const std::string& d) { write_text(d + "/calib.txt", "50 51 23.5 17.5 0 0 0 0 0 9\n"); }, "calib.txt", ":1:");
@@ -557,6 +561,8 @@ std::vector<Case> read_cases(const std::string& report) {
   config("no KEY=VALUE", "width 40\n", ":1:");
   config("only comments", "# nothing\n\n", "no KEY=VALUE");
   config("trailing comment", "width=40 # columns\n", ":1:");
+  config("hexadecimal baseline", "baseline_m=0x1p-4\n", ":1: baseline_m = 0x1p-4: a hexadecimal");  // was: ok (0.0625 m)
+  config("hexadecimal lens value", "width=16\nlens_cam0=0x1p-9,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0\n", ":2: lens_cam0 value 1");
   config("lens table short", "width=40\nlens_cam0=0,0,0\n", ":2:");
   // --file takes several names (was: "width=80: does not exist", no more said).
   c.push_back({"config: a setting after --file FILE", "config", [](const std::string& d) { write_text(d + "/rig.cfg", "width=40\n"); },

@@ -170,7 +170,7 @@ TEST(ImportSlider, DamagedDatasetsAreRefusedNamingTheLine) {
   } cases[] = {
       // "0.17abc images/x.png" was read as 0.17 and the file "abc".
       {[&] { line5("images.txt", [](std::string l) { return l.insert(l.find(' '), "abc"); }); },
-       "images.txt:5: time: '0.170000abc' is not a number"},
+       "images.txt:5: column 'time': '0.170000abc' is not a number"},
       // -5 s became 18446744068709551616 ns; 1e300 s an int64 overflow.
       {[&] { line5("images.txt", [](const std::string& l) { return "-5" + l.substr(l.find(' ')); }); },
        "images.txt:5: time -5 s is outside 0..9.2e9 s"},
@@ -188,6 +188,9 @@ TEST(ImportSlider, DamagedDatasetsAreRefusedNamingTheLine) {
        "groundtruth.txt:5: x: 1e+300 m is beyond +-1e+07 m"},
       {[&] { line5("groundtruth.txt", [](const std::string& l) { const size_t a = l.find(' ') + 1; return l.substr(0, a) + "1e5" + l.substr(l.find(' ', a)); }); },
        "groundtruth.txt:3: the speed along x from line 1 to line 5: "},
+      // strtod's hexadecimal form, as the recording tables refuse it (was: 0x32 read as 50).
+      {[&] { fixture::write_text(d + "/calib.txt", "0x32 51 23.5 17.5 0 0 0 0 0\n"); },
+       "calib.txt:1: column 'fx': '0x32' is a hexadecimal number"},
       // A camera `run` refuses is refused here, naming calib.txt.
       {[&] { fixture::write_text(d + "/calib.txt", "50 51 23.5 1e6 0 0 0 0 0\n"); },
        "calib.txt:1: intrinsics: principal point cv = 1e+06 px"},

@@ -35,16 +35,12 @@ void for_each_row(const std::string& path, Row row) {
   }
 }
 
-// The next whitespace-separated field, whole: "1.5abc" is not 1.5.
+// The next whitespace-separated field, whole ("1.5abc" is not 1.5), read as
+// the recording tables read theirs: decimal, finite.
 double number(std::istringstream& s, const std::string& path, long line, const char* what) {
   std::string field;
   if (!(s >> field)) throw recording_error_at(path, line, std::string("missing ") + what);
-  char* end = nullptr;
-  const double v = std::strtod(field.c_str(), &end);
-  if (end != field.c_str() + field.size())
-    throw recording_error_at(path, line, std::string(what) + ": '" + shown_path(field) + "' is not a number");
-  if (!std::isfinite(v)) throw recording_error_at(path, line, std::string(what) + ": '" + field + "' is not finite");
-  return v;
+  return parse_finite(field, path, line, what);
 }
 
 // Times become int64 nanoseconds in the recording written from them.

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <limits>
 
+#include "lumavel/host/decimal_text.hpp"
 #include "lumavel/host/path_check.hpp"
 #include "lumavel/host/recording_error.hpp"
 
@@ -45,29 +46,26 @@ std::string join(const std::vector<std::string>& v) {
 }  // namespace
 
 double parse_finite(const std::string& text, const std::string& path, long line, const std::string& column) {
-  if (text.empty()) throw recording_error_at(path, line, "column '" + column + "' is empty");
-  // strtod stops at a NUL byte: "9<NUL>0.0092" would be read as 9.
-  const size_t nul = text.find('\0');
-  if (nul != std::string::npos)
-    throw recording_error_at(path, line, "column '" + column + "': '" + text.substr(0, nul) +
-                                             "' is followed by a NUL byte inside the number (character " +
-                                             std::to_string(nul + 1) + "): not a number");
-  char* end = nullptr;
-  errno = 0;
-  const double v = std::strtod(text.c_str(), &end);
-  if (end == text.c_str() || end != text.c_str() + text.size())
-    throw recording_error_at(path, line, "column '" + column + "': '" + shown(text) + "' is not a number");
-  // strtod also reads C's hexadecimal numbers ("0x10" is 16): no CSV writer
-  // means those, and a damaged field must not pass as one.
-  if (text.find_first_of("xX") != std::string::npos)
-    throw recording_error_at(path, line, "column '" + column + "': '" + shown(text) +
-                                             "' is a hexadecimal number: the numbers of a recording are decimal");
-  if (std::isinf(v) && errno == ERANGE)
-    throw recording_error_at(path, line, "column '" + column + "': value '" + shown(text) +
-                                             "' is beyond the largest number (about 1.8e308)");
-  if (!std::isfinite(v))
-    throw recording_error_at(path, line, "column '" + column + "': value '" + shown(text) + "' is not finite");
-  return v;
+  const DecimalText d = read_decimal(text);
+  const std::string col = "column '" + column + "'";
+  switch (d.problem) {
+    case DecimalText::Problem::kNone: return d.value;
+    case DecimalText::Problem::kEmpty: throw recording_error_at(path, line, col + " is empty");
+    case DecimalText::Problem::kNulByte:  // strtod stops at it: "9<NUL>0.0092" would be read as 9
+      throw recording_error_at(path, line, col + ": '" + text.substr(0, d.nul_at) +
+                                               "' is followed by a NUL byte inside the number (character " +
+                                               std::to_string(d.nul_at + 1) + "): not a number");
+    case DecimalText::Problem::kNotANumber:
+      throw recording_error_at(path, line, col + ": '" + shown(text) + "' is not a number");
+    case DecimalText::Problem::kHexadecimal:  // no writer of these tables means one ("0x10" is 16 to strtod)
+      throw recording_error_at(path, line, col + ": '" + shown(text) +
+                                               "' is a hexadecimal number: only decimal numbers are read");
+    case DecimalText::Problem::kOverflow:
+      throw recording_error_at(path, line, col + ": value '" + shown(text) +
+                                               "' is beyond the largest number (about 1.8e308)");
+    case DecimalText::Problem::kNotFinite: break;
+  }
+  throw recording_error_at(path, line, col + ": value '" + shown(text) + "' is not finite");
 }
 
 std::string format_double(double v) {

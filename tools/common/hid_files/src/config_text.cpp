@@ -1,5 +1,6 @@
 #include "lumavel/host/config_text.hpp"
 
+#include "lumavel/host/decimal_text.hpp"
 #include "lumavel/host/path_check.hpp"
 #include "lumavel/units/si.hpp"
 
@@ -37,14 +38,16 @@ class BadValue : public std::runtime_error {
   bool beyond_field;  // a number, but too large or too small for the field
 };
 
+// Read as the recording tables read their numbers (decimal_text.hpp).
 double parse_double(const std::string& v) {
-  char* end = nullptr;
-  errno = 0;
-  const double d = std::strtod(v.c_str(), &end);
-  if (v.empty() || *end != '\0') throw BadValue("not a number", false);
-  if (std::isnan(d)) throw BadValue("not a finite number", false);
-  if (std::isinf(d) || errno == ERANGE) throw BadValue("beyond any field", true);
-  return d;
+  const DecimalText d = read_decimal(v);
+  using P = DecimalText::Problem;
+  if (d.problem == P::kHexadecimal)
+    throw BadValue("a hexadecimal number: only decimal numbers are read", false);
+  if (d.problem == P::kNotFinite && std::isnan(d.value)) throw BadValue("not a finite number", false);
+  if (d.problem == P::kOverflow || d.problem == P::kNotFinite || d.underflow) throw BadValue("beyond any field", true);
+  if (d.problem != P::kNone) throw BadValue("not a number", false);
+  return d.value;
 }
 
 long long parse_int(const std::string& v, long long lo, long long hi) {

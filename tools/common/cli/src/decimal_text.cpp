@@ -1,0 +1,42 @@
+#include "lumavel/host/decimal_text.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+
+namespace lumavel::host {
+
+DecimalText read_decimal(const std::string& text) {
+  DecimalText d;
+  using P = DecimalText::Problem;
+  if (text.empty()) {
+    d.problem = P::kEmpty;
+    return d;
+  }
+  if (const size_t nul = text.find('\0'); nul != std::string::npos) {
+    d.problem = P::kNulByte;
+    d.nul_at = nul;
+    return d;
+  }
+  char* end = nullptr;
+  errno = 0;
+  d.value = std::strtod(text.c_str(), &end);
+  const bool range = errno == ERANGE;
+  if (end == text.c_str() || end != text.c_str() + text.size()) {
+    d.problem = P::kNotANumber;
+    return d;
+  }
+  // strtod's hexadecimal form: optional spaces and sign, then 0x or 0X.
+  size_t at = text.find_first_not_of(" \t\n\v\f\r");
+  if (at != std::string::npos && (text[at] == '+' || text[at] == '-')) ++at;
+  if (at + 1 < text.size() && text[at] == '0' && (text[at + 1] == 'x' || text[at + 1] == 'X')) {
+    d.problem = P::kHexadecimal;
+    return d;
+  }
+  if (std::isinf(d.value) && range) d.problem = P::kOverflow;
+  else if (!std::isfinite(d.value)) d.problem = P::kNotFinite;
+  else d.underflow = range;
+  return d;
+}
+
+}  // namespace lumavel::host
