@@ -563,6 +563,8 @@ std::vector<Case> read_cases(const std::string& report) {
   config("trailing comment", "width=40 # columns\n", ":1:");
   config("hexadecimal baseline", "baseline_m=0x1p-4\n", ":1: baseline_m = 0x1p-4: a hexadecimal");  // was: ok (0.0625 m)
   config("hexadecimal lens value", "width=16\nlens_cam0=0x1p-9,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0\n", ":2: lens_cam0 value 1");
+  // As a recording table's (was: "width = 40height=30: not a whole number").
+  config("CR-only line ends", "width=40\rheight=30\r", ":1: a carriage return (CR) inside the line, at character 9");
   config("lens table short", "width=40\nlens_cam0=0,0,0\n", ":2:");
   // --file takes several names (was: "width=80: does not exist", no more said).
   c.push_back({"config: a setting after --file FILE", "config", [](const std::string& d) { write_text(d + "/rig.cfg", "width=40\n"); },

@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "lumavel/host/decimal_text.hpp"
+#include "lumavel/host/line_ends.hpp"
 #include "lumavel/host/path_check.hpp"
 #include "lumavel/host/recording_error.hpp"
 
@@ -101,11 +102,7 @@ bool next_table_line(std::istream& in, std::vector<char>& buf, std::string& out,
       if (in.fail()) in.clear(std::ios::eofbit);  // the last line, read: the next call ends
       // CR LF ends a line; a CR with more after it is a file of CR-only
       // lines, which would otherwise read as one long header.
-      const size_t cr = out.find('\r');
-      if (cr != std::string::npos && out.find_first_not_of("\r \t", cr) != std::string::npos)
-        throw recording_error_at(path, line,
-                                 "a carriage return (CR) inside the line, at character " + std::to_string(cr + 1) +
-                                     ": lines must end with LF or CR LF (CR-only line ends?)");
+      if (const std::string why = why_cr_inside_line(out); !why.empty()) throw recording_error_at(path, line, why);
       return true;
     }
     in.clear();  // the chunk filled up before the line's end: more to come

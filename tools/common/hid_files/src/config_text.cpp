@@ -1,6 +1,7 @@
 #include "lumavel/host/config_text.hpp"
 
 #include "lumavel/host/decimal_text.hpp"
+#include "lumavel/host/line_ends.hpp"
 #include "lumavel/host/path_check.hpp"
 #include "lumavel/units/si.hpp"
 
@@ -249,13 +250,17 @@ std::string read_settings_file(const std::string& path) {
   return text;
 }
 
-// Calls f(line_number, line) for every setting line (no comment, no blank).
+// Calls f(line_number, line) for every setting line (no comment, no blank)
+// of the file `name`. Lines end as a recording table's do: LF or CR LF; a CR
+// with more after it (CR-only line ends) is refused at its line, saying so.
 template <typename F>
-void for_each_setting_line(const std::string& text, F f) {
+void for_each_setting_line(const std::string& text, const std::string& name, F f) {
   std::istringstream in(text);
   std::string line;
   for (size_t n = 1; std::getline(in, line); ++n) {
     if (n == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);  // UTF-8 byte-order mark
+    if (const std::string why = why_cr_inside_line(line); !why.empty())
+      throw std::runtime_error(name + ":" + std::to_string(n) + ": " + why);
     if (!line.empty() && line.back() == '\r') line.pop_back();
     const size_t start = line.find_first_not_of(" \t");
     if (start == std::string::npos || line[start] == '#') continue;
@@ -335,7 +340,7 @@ void apply_setting(DeviceSetup& d, const std::string& kv) {
 }
 
 void apply_settings_text(DeviceSetup& s, const std::string& text, const std::string& name) {
-  for_each_setting_line(text, [&](size_t n, const std::string& line) {
+  for_each_setting_line(text, name, [&](size_t n, const std::string& line) {
     try {
       apply_setting(s, line);
     } catch (const std::runtime_error& e) {
@@ -363,7 +368,7 @@ void GivenSettings::add(const std::string& kv, const std::string& where) {
 void GivenSettings::add_file(const std::string& path) {
   const std::string text = read_settings_file(path);
   const size_t first = items.size();
-  for_each_setting_line(text, [&](size_t n, const std::string& line) {
+  for_each_setting_line(text, path, [&](size_t n, const std::string& line) {
     const std::string where = path + ":" + std::to_string(n);
     add(line, where);
     // Within one file a key is given once: which of two values was meant is
