@@ -103,6 +103,14 @@ printf '\357\273\277width = 40\r\n  tau_us= 250000 \r\n' > bom.cfg  # UTF-8 BOM,
 "$READ" config check --file bom.cfg > ok.txt 2> ok.err || fail "a BOM / spaces / CRLF file refused: $(cat ok.err)"
 grep -q "^ok: 2 setting(s) checked" ok.txt || fail "config check printed $(cat ok.txt)"
 "$READ" config check cu0_px=100 > /dev/null || fail "cu0_px=100 refused without a width to check it against"
+# The help says where the settings go (was: "after the files", where --file
+# takes them as file names), and they work there: before --file, after --.
+"$READ" config check --help > help.txt || fail "config check --help"
+grep -qF "before --file" help.txt || fail "config check --help: $(grep -A1 SETTINGS help.txt)"
+printf 'width=40\n' > w40.cfg
+printf 'height=30\nwidth=20\n' > w20.cfg
+"$READ" config check height=30 --file w40.cfg > /dev/null 2> before.err || fail "a setting before --file: $(cat before.err)"
+"$READ" config check --file w40.cfg w20.cfg -- height=30 > /dev/null 2> after.err || fail "two files, a setting after --: $(cat after.err)"
 # config set refuses the same file before looking for a device.
 "$READ" config set --file h5.cfg 2> set.err
 rc=$?

@@ -65,7 +65,12 @@ void add_config_input(CLI::App* c, ConfigInput& in) {
   c->add_option("--file", in.files, "KEY=VALUE lines as `config get` prints them (# comments\nallowed); may be repeated")
       ->type_name("FILE")
       ->check(cli::path_name());
-  c->add_option("SETTINGS", in.settings, "KEY=VALUE settings, after the files")->type_name("KEY=VALUE");
+  // --file takes every name after it (a vector option): the settings go
+  // before it, or after --; either way they are applied after the files.
+  c->add_option("SETTINGS", in.settings,
+                "KEY=VALUE settings, applied after the files; give them\n"
+                "before --file (which takes every name after it) or after --")
+      ->type_name("KEY=VALUE");
 }
 
 }  // namespace
