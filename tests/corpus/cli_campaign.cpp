@@ -463,6 +463,10 @@ std::vector<Case> recording_cases(const std::string& base) {
   c.push_back({"--hid-linger 1e300", "run", nullptr, Expect::kRefused, "--hid-linger", "1e300", {},
                {"--hid", "file:/dev/null", "--hid-linger", "1e300"}});
 
+  // An option's number is decimal, as a file's: strtod read '0x1p-5' as 0.03125.
+  c.push_back({"--hid-linger in hexadecimal", "run", nullptr, Expect::kRefused, "--hid-linger", "0x0", {},
+               {"--hid", "file:/dev/null", "--hid-linger", "0x0"}});
+
   // calibrate reads the recording the same way.
   for (const char* name : {"PNG truncated", "YAML key given twice", "cam1 at another resolution", "CSV timestamp beyond int64"})
     for (const Case& k : std::vector<Case>(c))

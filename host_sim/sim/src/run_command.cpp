@@ -15,6 +15,7 @@
 #include "lumavel/core/clip_match.hpp"
 #include "lumavel/core/status.hpp"
 #include "lumavel/host/cli.hpp"
+#include "lumavel/host/decimal_text.hpp"
 #include "lumavel/host/file_config_store.hpp"
 #include "lumavel/host/hid_link.hpp"
 #include "lumavel/host/hid_sender.hpp"
@@ -75,9 +76,9 @@ struct RunArgs {
 CLI::Validator linger_seconds() {
   return CLI::Validator(
       [](std::string& s) -> std::string {
-        char* end = nullptr;
-        const double v = std::strtod(s.c_str(), &end);
-        if (s.empty() || *end != '\0' || !std::isfinite(v) || (v < 0 && v != -1))
+        const DecimalText d = read_decimal(s);  // decimal only, as every number the tools read
+        const double v = d.value;
+        if (d.problem != DecimalText::Problem::kNone || (v < 0 && v != -1))
           return "must be a number of seconds >= 0, or -1 (until interrupted), not '" + s + "'";
         if (v > 1e9) return "must be at most 1e9 seconds (about 32 years), or -1 (until interrupted), not '" + s + "'";
         return {};

@@ -10,6 +10,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "lumavel/host/decimal_text.hpp"
+
 namespace lumavel::cli {
 namespace {
 
@@ -47,11 +49,12 @@ bool parse_long(const std::string& s, long long& out) {
   return *end == '\0' && errno == 0 && !std::isspace(static_cast<unsigned char>(s[0]));
 }
 
+// Decimal only, as the files' numbers (decimal_text.hpp): '--baseline 0x1p-5' is refused, not 0.03125.
 bool parse_double(const std::string& s, double& out) {
   if (s.empty() || std::isspace(static_cast<unsigned char>(s[0]))) return false;
-  char* end = nullptr;
-  out = std::strtod(s.c_str(), &end);
-  return *end == '\0' && std::isfinite(out);
+  const host::DecimalText d = host::read_decimal(s);
+  out = d.value;
+  return d.problem == host::DecimalText::Problem::kNone;
 }
 
 }  // namespace
