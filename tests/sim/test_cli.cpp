@@ -97,6 +97,9 @@ TEST(Cli, UsageErrorsExitTwo) {
   LONGS_EQUAL(2, r.code);
   STRCMP_CONTAINS("--width: must be a whole number in 16..2048 (above 160 only with --engine vo), not '4096'",
                   r.err.c_str());
+  r = sim("run rec --engine vo --width 40 --height 11");  // the option's fault, not sensor.yaml's
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("--height: the vo engine tracks 2-D features and needs 12 rows or more, not '11'", r.err.c_str());
   r = sim("run rec --height=4x");
   LONGS_EQUAL(2, r.code);
   STRCMP_CONTAINS("--height: must be a whole number in 1..2048 (above 128 only with --engine vo), not '4x'", r.err.c_str());

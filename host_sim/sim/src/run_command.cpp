@@ -24,6 +24,7 @@
 #include "lumavel/host/progress.hpp"
 #include "lumavel/host/run_recording.hpp"
 #include "lumavel/host/track_plot.hpp"
+#include "lumavel/host/vo/stereo_rig.hpp"
 #include "lumavel/protocol/device_config.hpp"
 #include "lumavel/units/config_fields.hpp"
 
@@ -233,6 +234,9 @@ int run(const RunArgs& a) {
     throw cli::UsageError("--height: must be a whole number in 1.." + std::to_string(kMaxWorkHeight) +
                           " (the firmware core's limit; --engine vo goes up to the sensor's height), not '" +
                           std::to_string(a.height) + "'");
+  if (options.engine == EngineKind::kVo && a.height > 0 && a.height < vo::kMinVoHeight)
+    throw cli::UsageError("--height: the vo engine tracks 2-D features and needs " + std::to_string(vo::kMinVoHeight) +
+                          " rows or more, not '" + std::to_string(a.height) + "'");
   // Outputs that cannot be written are refused before the run, not after it.
   auto check_output = [](const std::string& path, const char* what, const char* option) {
     if (const std::string why = why_not_writable(path, what); !why.empty())
@@ -422,7 +426,8 @@ void add_run_command(cli::Tool& tool) {
                                      " (above " + std::to_string(kMaxWorkWidth) + " only with --engine vo)"));
   c->add_option("--height", a->height,
                 "working resolution height, 1.." + std::to_string(kMaxWorkHeight) + " (default " +
-                    std::to_string(kDefaultRows) + ", or the\nsensor's height when smaller; 1 for line-scan input;\nthe vo engine needs 12 or more, up to " +
+                    std::to_string(kDefaultRows) + ", or the\nsensor's height when smaller; 1 for line-scan input;\nthe vo engine needs " +
+                    std::to_string(vo::kMinVoHeight) + " or more, up to " +
                     std::to_string(kMaxVoWorkSize) + ")")
       ->type_name("H")
       ->check(cli::whole_number_in(1, kMaxVoWorkSize,
