@@ -80,12 +80,8 @@ SliderDataset read_slider_dataset(const std::string& dir) {
     std::getline(s >> std::ws, file);
     while (!file.empty() && (file.back() == ' ' || file.back() == '\t')) file.pop_back();
     if (file.empty()) throw recording_error_at(images, line, "missing image file name");
-    // The system reads a name up to a NUL byte: "a.png<NUL>junk" would open a.png.
-    if (const size_t nul = file.find('\0'); nul != std::string::npos)
-      throw recording_error_at(images, line,
-                               "image file name '" + shown_path(file.substr(0, nul)) +
-                                   "' is followed by a NUL byte inside the name (character " + std::to_string(nul + 1) +
-                                   "): a damaged row");
+    if (const std::string why = why_nul_in_name(file); !why.empty())
+      throw recording_error_at(images, line, "image file name " + why);
     f.path = file.front() == '/' ? file : dir + "/" + file;
     check_increasing(d.frames.empty() ? 0 : d.frames.back().t, f.t, !d.frames.empty(), images, line);
     d.frames.push_back(f);

@@ -51,12 +51,8 @@ CamRows read_cam_rows(const std::string& root, int cam) {
   for (CsvRow& r : c.rows) {
     std::string& name = r.fields[0];
     if (name.empty()) throw recording_error_at(c.csv, r.line, "empty filename");
-    // The system reads a name up to a NUL byte: "a.png<NUL>junk" would open a.png.
-    if (const size_t nul = name.find('\0'); nul != std::string::npos)
-      throw recording_error_at(c.csv, r.line,
-                               "filename '" + shown_path(name.substr(0, nul)) +
-                                   "' is followed by a NUL byte inside the name (character " + std::to_string(nul + 1) +
-                                   "): a damaged row");
+    if (const std::string why = why_nul_in_name(name); !why.empty())
+      throw recording_error_at(c.csv, r.line, "filename " + why);
     if (leaves_data_folder(name))
       throw recording_error_at(c.csv, r.line,
                                "filename '" + name + "' leaves " + layout::kCamDir[cam] +

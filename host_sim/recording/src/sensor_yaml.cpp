@@ -7,7 +7,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -47,13 +46,8 @@ void check_unique_keys(const YAML::Node& map, const std::string& path, const std
 
 YAML::Node load_yaml(const std::string& path) {
   if (const std::string why = why_not_a_file(path); !why.empty()) throw recording_error_in(path, why);
-  // A sensor.yaml holds a few keys: a huge file is something else, refused before it is read.
-  constexpr std::uintmax_t kMaxYamlBytes = 1 << 20;
-  std::error_code size_error;
-  const std::uintmax_t bytes = std::filesystem::file_size(path, size_error);
-  if (!size_error && bytes > kMaxYamlBytes)
-    throw recording_error_in(path, "the file is " + std::to_string(bytes) + " bytes: a sensor.yaml holds a few keys (at "
-                                   "most " + std::to_string(kMaxYamlBytes) + " bytes are read)");
+  if (const std::string why = why_too_big_for_text(path, "a sensor.yaml holds a few keys"); !why.empty())
+    throw recording_error_in(path, why);
   std::ifstream in(path);
   if (!in) throw recording_error_in(path, std::string("cannot open: ") + std::strerror(errno));
   std::stringstream ss;

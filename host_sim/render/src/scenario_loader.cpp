@@ -13,7 +13,6 @@
 #include <cerrno>
 #include <cmath>
 #include <cstring>
-#include <filesystem>
 #include <fstream>
 #include <initializer_list>
 #include <limits>
@@ -481,15 +480,8 @@ Scenario parse_scenario(const std::string& text, const std::string& name,
 Scenario load_scenario(const std::string& path) {
   if (const std::string why = why_not_a_file(path, "scenario file"); !why.empty())
     throw ScenarioError(shown_path(path) + ": " + why);
-  // A scenario holds a few hundred lines: a huge file is something else,
-  // refused by its size before it is read whole (as a sensor.yaml is).
-  constexpr std::uintmax_t kMaxScenarioBytes = 1 << 20;
-  std::error_code size_error;
-  const std::uintmax_t bytes = std::filesystem::file_size(path, size_error);
-  if (!size_error && bytes > kMaxScenarioBytes)
-    throw ScenarioError(shown_path(path) + ": the file is " + std::to_string(bytes) +
-                        " bytes: a scenario holds a few hundred lines (at most " + std::to_string(kMaxScenarioBytes) +
-                        " bytes are read)");
+  if (const std::string why = why_too_big_for_text(path, "a scenario holds a few hundred lines"); !why.empty())
+    throw ScenarioError(shown_path(path) + ": " + why);
   std::ifstream in(path);
   if (!in) throw ScenarioError(path + ": cannot open scenario file: " + std::strerror(errno));
   std::stringstream ss;

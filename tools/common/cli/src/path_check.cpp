@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <climits>
 #include <cstring>
+#include <filesystem>
 
 namespace lumavel::host {
 namespace {
@@ -34,6 +35,21 @@ const char* special_kind(mode_t mode) {
 }
 
 }  // namespace
+
+std::string why_nul_in_name(const std::string& name) {
+  const size_t nul = name.find('\0');
+  if (nul == std::string::npos) return "";
+  return "'" + shown_path(name.substr(0, nul)) + "' is followed by a NUL byte inside the name (character " +
+         std::to_string(nul + 1) + "): a damaged row";
+}
+
+std::string why_too_big_for_text(const std::string& path, const std::string& holds) {
+  std::error_code e;
+  const std::uintmax_t bytes = std::filesystem::file_size(path, e);
+  if (e || bytes <= kMaxTextFileBytes) return "";
+  return "the file is " + std::to_string(bytes) + " bytes: " + holds + " (at most " + std::to_string(kMaxTextFileBytes) +
+         " bytes are read)";
+}
 
 std::string why_not_a_file(const std::string& path, const std::string& what) {
   struct stat st {};

@@ -11,7 +11,6 @@
 #include <cstring>
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <limits>
@@ -230,24 +229,14 @@ std::string read_settings_file(const std::string& path) {
                                         "before --file, or after --)"
                                       : ""));
   }
+  if (const std::string why = why_too_big_for_text(path, "a configuration file holds a few KEY=VALUE lines");
+      !why.empty())
+    throw std::runtime_error(shown_path(path) + ": " + why);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error(path + ": cannot open configuration file: " + std::strerror(errno));
-  // A configuration file holds a few KEY=VALUE lines (`config get` prints a
-  // few kB): a bigger file is something else, refused before it is read whole.
-  constexpr std::streamsize kMaxBytes = 1 << 20;
-  std::string text(static_cast<size_t>(kMaxBytes) + 1, '\0');
-  in.read(&text[0], kMaxBytes + 1);
-  if (in.bad()) throw std::runtime_error(path + ": read error");
-  if (in.gcount() > kMaxBytes) {
-    std::error_code e;
-    const std::uintmax_t bytes = std::filesystem::file_size(path, e);
-    throw std::runtime_error(shown_path(path) + ": the file is " +
-                             (e ? std::string("more than ") + std::to_string(kMaxBytes) : std::to_string(bytes)) +
-                             " bytes: a configuration file holds a few KEY=VALUE lines (at most " +
-                             std::to_string(kMaxBytes) + " bytes are read)");
-  }
-  text.resize(static_cast<size_t>(in.gcount()));
-  return text;
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
 }
 
 // Calls f(line_number, line) for every setting line (no comment, no blank)

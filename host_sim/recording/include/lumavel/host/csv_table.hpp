@@ -26,8 +26,8 @@ std::vector<CsvRow> read_csv_table(const std::string& path, const std::vector<st
 void for_each_csv_row(const std::string& path, const std::vector<std::string>& columns,
                       const std::function<void(const CsvRow&)>& row);
 
-// The next line of a text table `path` into `out`, its end of line (LF or CR
-// LF) removed; false at the end of the file. `line` is its number, for
+// The next line of a text table `path` into `out`, its LF removed (a CR LF's
+// CR stays, for the caller's trim); false at the end of the file. `line` is its number, for
 // messages; `buf` is scratch, read a chunk at a time. A line longer than a
 // row of a table could be (a binary or damaged file) or with a CR inside it
 // (CR-only line ends) throws RecordingError "FILE:LINE: ...", before the

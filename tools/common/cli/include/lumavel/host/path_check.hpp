@@ -21,9 +21,23 @@ std::string why_not_a_folder(const std::string& path, const std::string& what = 
 // otherwise the reason, e.g. "is a folder, not a plot file", "cannot be
 // created: its folder out does not exist".
 std::string why_not_writable(const std::string& path, const std::string& what = "file");
+// The text files the tools read whole (a sensor.yaml, a scenario, a
+// configuration file) hold a few hundred lines at most: anything bigger is
+// something else (a disk image, a video under the wrong name), refused by its
+// size before it is read into memory.
+constexpr unsigned long long kMaxTextFileBytes = 1ull << 20;
+// "" when the regular file `path` is at most kMaxTextFileBytes (or its size
+// cannot be had: the reader's own error says why); otherwise "the file is N
+// bytes: " + `holds` + " (at most ... bytes are read)", with `holds` what such
+// a file holds, e.g. "a sensor.yaml holds a few keys".
+std::string why_too_big_for_text(const std::string& path, const std::string& holds);
 // False only when nothing is at `path` (an optional input that is absent):
 // anything else there, readable or not, is for why_not_a_file to judge.
 bool path_present(const std::string& path);
+// "" when the file name `name` (from a table) has no NUL byte; otherwise
+// "'a.png' is followed by a NUL byte inside the name (character 6): a damaged
+// row" - the system would read the name up to the NUL and open a.png.
+std::string why_nul_in_name(const std::string& name);
 // `path` as a message shows it: in full up to 200 characters, else its start
 // and end with the length ("aaa...zzz (5000 characters)").
 std::string shown_path(const std::string& path);
