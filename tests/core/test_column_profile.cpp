@@ -1,5 +1,7 @@
 #include <CppUTest/TestHarness.h>
 
+#include <algorithm>
+#include <cmath>
 #include <initializer_list>
 #include <vector>
 
@@ -83,4 +85,65 @@ TEST(ColumnProfile, SumsEachColumnsBandWithFractionalEdgeRows) {
       CHECK_TRUE(p.q8);
     }
   }
+}
+
+// With radial rings: the sums are the same bits, sum_y2 is each ring of
+// rows' column sums weighed by the ring's mean y^2 (y = (2r + 1 - H) / W,
+// Q8), whatever the width, height and stride; the rings cover every row
+// once; the white frame of the tallest y stays in range; a band leaves it out.
+TEST(ColumnProfile, RadialSumsWeighEachRingOfRowsByItsMeanYSquared) {
+  for (const uint16_t w : std::initializer_list<uint16_t>{16, 19, 40, static_cast<uint16_t>(kMaxColumns)}) {
+    for (const uint16_t h : std::initializer_list<uint16_t>{2, 3, 5, 7, 30, 31, static_cast<uint16_t>(kMaxRows)}) {
+      const uint16_t stride = static_cast<uint16_t>(w + 1);
+      std::vector<uint8_t> img(static_cast<size_t>(stride) * h);
+      for (size_t i = 0; i < img.size(); ++i) img[i] = static_cast<uint8_t>((i * 37 + i / 7) % 256);
+      const RadialRings rings = radial_rings(w, h);
+      // Each row's ring: from the nearer edge, against the ring edges.
+      std::vector<int> ring(h);
+      for (unsigned y = 0; y < h; ++y) {
+        const unsigned from_edge = std::min<unsigned>(y, h - 1 - y);
+        int k = 0;
+        while (k < kRadialRings - 1 && from_edge >= rings.edge[k]) ++k;
+        ring[y] = k;
+      }
+      int64_t rows_y2 = 0;
+      for (int k = 0; k < kRadialRings; ++k) {
+        double mean = 0;
+        unsigned n = 0;
+        for (unsigned y = 0; y < h; ++y)
+          if (ring[y] == k) {
+            mean += std::pow((2.0 * y + 1 - h) / w, 2);
+            ++n;
+          }
+        if (n == 0) continue;
+        CHECK(std::fabs(rings.weight_q8[k] - 256 * mean / n) <= 0.5);
+        rows_y2 += int64_t{rings.weight_q8[k]} * n;
+      }
+      LONGS_EQUAL(rows_y2, rings.rows_y2_q8);
+      ColumnProfile plain, p;
+      column_profile(img.data(), w, h, stride, nullptr, plain);
+      column_profile(img.data(), w, h, stride, nullptr, p, &rings);
+      CHECK_TRUE(p.radial);
+      CHECK_FALSE(plain.radial);
+      LONGS_EQUAL(rows_y2, p.rows_y2_q8);
+      for (uint16_t x = 0; x < w; ++x) {
+        LONGS_EQUAL(plain.sum[x], p.sum[x]);
+        int64_t s2 = 0;
+        for (unsigned y = 0; y < h; ++y) s2 += int64_t{rings.weight_q8[ring[y]]} * img[y * stride + x];
+        LONGS_EQUAL(s2, p.sum_y2[x]);
+      }
+    }
+  }
+  std::vector<uint8_t> white(static_cast<size_t>(kMaxColumns) * kMaxRows, 255);
+  const RadialRings tallest = radial_rings(16, kMaxRows);  // H / W = 8
+  ColumnProfile p;
+  column_profile(white.data(), 16, kMaxRows, kMaxColumns, nullptr, p, &tallest);
+  CHECK(p.sum_y2[0] > 0);
+  LONGS_EQUAL(int64_t{255} * p.rows_y2_q8, p.sum_y2[0]);
+  const RadialRings r30 = radial_rings(40, 30);
+  ColumnBand band{};
+  column_profile(white.data(), 40, 30, 40, &band, p, &r30);
+  CHECK_FALSE(p.radial);
+  column_profile(white.data(), 40, 29, 40, nullptr, p, &r30);  // rings of another height
+  CHECK_FALSE(p.radial);
 }

@@ -37,8 +37,10 @@ uint8_t report[lumavel::protocol::kMeasurementSize];
 
 __attribute__((noipa)) void do_columns(uint16_t w, uint16_t h) {
   const lumavel::KernelBank& bank = estimator.bank();
-  for (int i = 0; i < 2; ++i)
-    lumavel::column_profile(frame[i], w, h, w, bank.column_band(), profile[i]);
+  const bool matching = (estimator.config().options & lumavel::kOptionPhotometricMatch) != 0;
+  for (int i = 0; i < 2; ++i)  // (as Estimator::step takes them: cam1's radial sums for the match)
+    lumavel::column_profile(frame[i], w, h, w, bank.column_band(), profile[i],
+                            i == 1 && matching ? bank.radial_rings() : nullptr);
 }
 __attribute__((noipa)) void do_kernels() {
   lumavel::stereo_measurement(profile[0], profile[1], estimator.bank(), nullptr, measurement);

@@ -34,34 +34,45 @@ uint32_t clipped_in_word(uint32_t w) {
 // branch (two words: 13 instructions per 8 pixels on M3 against 18).
 // Word-aligned rows take the aligned path (one LDR per four pixels).
 // Inlined: a call per group of columns costs more than the band's own work.
-template <unsigned Words>
-__attribute__((always_inline)) inline void column_sums(const uint8_t* p, uint16_t from, uint16_t to, uint16_t stride,
-                                                        bool aligned, ColumnSum* out) {
+// Rows [from, to) and [from2, to2) (a radial ring's two halves; from2 ==
+// to2 for one range). A Ring adds them to out and, times the ring's weight
+// c, to s2 (first: stores them instead), where the lanes are unpacked.
+struct Ring {
+  int32_t* s2;
+  int32_t c;
+  bool first;
+};
+template <unsigned Words, bool Radial = false>
+__attribute__((always_inline)) inline void column_sums(const uint8_t* p, uint16_t from, uint16_t to, uint16_t from2,
+                                                        uint16_t to2, uint16_t stride, bool aligned, ColumnSum* out,
+                                                        Ring ring = {}) {
   uint32_t even[Words] = {}, odd[Words] = {};
-  const uint8_t* q = p + uint32_t{from} * stride;
-  const uint8_t* const end = p + uint32_t{to} * stride;
-  if (aligned) {
-    for (; q < end; q += stride) {
-      const uint8_t* const row = static_cast<const uint8_t*>(__builtin_assume_aligned(q, 4));
-      for (unsigned k = 0; k < Words; ++k) {
-        const uint32_t w = load_word(row + 4 * k);
+  for (int range = 0; range < 2; ++range) {
+    const uint8_t* q = p + uint32_t{range == 0 ? from : from2} * stride;
+    const uint8_t* const end = p + uint32_t{range == 0 ? to : to2} * stride;
+    if (aligned) {
+      for (; q < end; q += stride) {
+        const uint8_t* const row = static_cast<const uint8_t*>(__builtin_assume_aligned(q, 4));
+        for (unsigned k = 0; k < Words; ++k) {
+          const uint32_t w = load_word(row + 4 * k);
 #if defined(__ARM_FEATURE_SIMD32)
-        // Cortex-M4/M7: UXTAB16 adds bytes 0 and 2 (or 1 and 3, rotated) to two 16-bit lanes.
-        even[k] = __uxtab16(even[k], w);
-        odd[k] = __uxtab16(odd[k], (w >> 8) | (w << 24));  // UXTAB16 with ROR #8
+          // Cortex-M4/M7: UXTAB16 adds bytes 0 and 2 (or 1 and 3, rotated) to two 16-bit lanes.
+          even[k] = __uxtab16(even[k], w);
+          odd[k] = __uxtab16(odd[k], (w >> 8) | (w << 24));  // UXTAB16 with ROR #8
 #else
-        even[k] += w & 0x00FF00FFu;
-        odd[k] += (w >> 8) & 0x00FF00FFu;
+          even[k] += w & 0x00FF00FFu;
+          odd[k] += (w >> 8) & 0x00FF00FFu;
 #endif
+        }
       }
+    } else {
+      for (; q < end; q += stride)
+        for (unsigned k = 0; k < Words; ++k) {
+          const uint32_t w = load_word(q + 4 * k);
+          even[k] += w & 0x00FF00FFu;
+          odd[k] += (w >> 8) & 0x00FF00FFu;
+        }
     }
-  } else {
-    for (; q < end; q += stride)
-      for (unsigned k = 0; k < Words; ++k) {
-        const uint32_t w = load_word(q + 4 * k);
-        even[k] += w & 0x00FF00FFu;
-        odd[k] += (w >> 8) & 0x00FF00FFu;
-      }
   }
   uint8_t probe[4] = {1, 0, 0, 0};
   const bool little = load_word(probe) == 1u;
@@ -69,10 +80,15 @@ __attribute__((always_inline)) inline void column_sums(const uint8_t* p, uint16_
     const auto lo_e = static_cast<ColumnSum>(even[k] & 0xFFFFu), hi_e = static_cast<ColumnSum>(even[k] >> 16);
     const auto lo_o = static_cast<ColumnSum>(odd[k] & 0xFFFFu), hi_o = static_cast<ColumnSum>(odd[k] >> 16);
     ColumnSum* const o = out + 4 * k;
-    if (little) {
-      o[0] = lo_e; o[1] = lo_o; o[2] = hi_e; o[3] = hi_o;
-    } else {
-      o[0] = hi_o; o[1] = hi_e; o[2] = lo_o; o[3] = lo_e;
+    const ColumnSum lanes[4] = {little ? lo_e : hi_o, little ? lo_o : hi_e, little ? hi_e : lo_o, little ? hi_o : lo_e};
+    for (unsigned i = 0; i < 4; ++i) {
+      if (Radial) {
+        o[i] = static_cast<ColumnSum>(ring.first ? lanes[i] : o[i] + lanes[i]);
+        int32_t* const s2 = ring.s2 + 4 * k + i;
+        *s2 = (ring.first ? 0 : *s2) + ring.c * int32_t{lanes[i]};
+      } else {
+        o[i] = lanes[i];
+      }
     }
   }
 }
@@ -87,6 +103,49 @@ constexpr bool kWideColumnSums = false;
 constexpr bool kWideColumnSums = kMaxRows > 1;
 #endif
 
+// Every column's sum of rows [from, to) and [from2, to2), no band; with
+// Radial, added to out and to ring.s2 as column_sums does.
+template <bool Radial>
+void sum_rows(const uint8_t* pixels, uint16_t width, uint16_t from, uint16_t to, uint16_t from2, uint16_t to2,
+              uint16_t stride, bool aligned, ColumnSum* out, Ring ring = {}) {
+  uint16_t u = 0;
+  const auto at = [&](uint16_t c) { return Ring{ring.s2 + c, ring.c, ring.first}; };
+  if (kWideColumnSums) {
+    for (; u + 16 <= width; u += 16)
+      column_sums<4, Radial>(pixels + u, from, to, from2, to2, stride, aligned, &out[u], Radial ? at(u) : ring);
+    for (; u + 8 <= width; u += 8)
+      column_sums<2, Radial>(pixels + u, from, to, from2, to2, stride, aligned, &out[u], Radial ? at(u) : ring);
+  }
+  for (; u + 4 <= width; u += 4)
+    column_sums<1, Radial>(pixels + u, from, to, from2, to2, stride, aligned, &out[u], Radial ? at(u) : ring);
+  for (; u < width; ++u) {
+    int32_t s = 0;
+    for (uint16_t r = from; r < to; ++r) s += pixels[u + uint32_t{r} * stride];
+    for (uint16_t r = from2; r < to2; ++r) s += pixels[u + uint32_t{r} * stride];
+    if (Radial) {
+      out[u] = static_cast<ColumnSum>(ring.first ? s : out[u] + s);
+      ring.s2[u] = (ring.first ? 0 : ring.s2[u]) + ring.c * s;
+    } else {
+      out[u] = static_cast<ColumnSum>(s);
+    }
+  }
+}
+
+// The sums ring by ring, each ring's also into sum_y2 at its weight: the
+// totals are sum_rows()'s over all rows, bit for bit.
+void sum_rows_radial(const uint8_t* pixels, uint16_t width, uint16_t height, uint16_t stride, bool aligned,
+                     const RadialRings& rings, ColumnProfile& out) {
+  uint16_t outer = 0;  // rows from each edge already summed
+  for (int k = 0; k < kRadialRings; ++k) {
+    const bool middle = k == kRadialRings - 1;
+    const uint16_t inner = middle ? static_cast<uint16_t>(height / 2) : rings.edge[k];
+    const uint16_t to2 = static_cast<uint16_t>(height - outer), from2 = middle ? to2 : static_cast<uint16_t>(height - inner);
+    sum_rows<true>(pixels, width, outer, middle ? from2 : inner, from2, to2, stride, aligned, out.sum,
+                   Ring{out.sum_y2, rings.weight_q8[k], k == 0});
+    outer = inner;
+  }
+}
+
 // Column c's sum of rows [from, height - from) narrowed to its band, in Q8.
 int32_t to_band_q8(const uint8_t* col, int32_t s, uint16_t from, uint16_t height, uint16_t stride,
                     uint16_t first, uint8_t edge_q8) {
@@ -99,37 +158,37 @@ int32_t to_band_q8(const uint8_t* col, int32_t s, uint16_t from, uint16_t height
 }  // namespace
 
 void column_profile(const uint8_t* pixels, uint16_t width, uint16_t height, uint16_t stride,
-                    const ColumnBand* band_in, ColumnProfile& out) {
+                    const ColumnBand* band_in, ColumnProfile& out, const RadialRings* rings) {
   // A line-scan build keeps no band (kBandColumns == 1).
   const ColumnBand* const band = kBandColumns > 1 ? band_in : nullptr;
   out.width = width;
   out.q8 = band != nullptr;
   out.plain_x256 = false;
   const bool aligned = ((reinterpret_cast<uintptr_t>(pixels) | stride) & 3u) == 0;
-  uint16_t u = 0;
-  if (band == nullptr) {
-    if (kWideColumnSums) {
-      for (; u + 16 <= width; u += 16) column_sums<4>(pixels + u, 0, height, stride, aligned, &out.sum[u]);
-      for (; u + 8 <= width; u += 8) column_sums<2>(pixels + u, 0, height, stride, aligned, &out.sum[u]);
-    }
-    for (; u + 4 <= width; u += 4) column_sums<1>(pixels + u, 0, height, stride, aligned, &out.sum[u]);
+  out.radial = rings != nullptr && band == nullptr && kBandColumns > 1 && height >= 2 && rings->height == height;
+  out.rows_y2_q8 = out.radial ? rings->rows_y2_q8 : 0;
+  if (out.radial) {
+    sum_rows_radial(pixels, width, height, stride, aligned, *rings, out);
+  } else if (band == nullptr) {
+    sum_rows<false>(pixels, width, 0, height, 0, 0, stride, aligned, out.sum);
   } else {
+    uint16_t u = 0;
     for (; u + 4 <= width; u += 4) {
       // The rows all four columns need, then each narrowed to its own band.
       uint16_t from = band->first[u];
       for (int c = 1; c < 4; ++c) from = band->first[u + c] < from ? band->first[u + c] : from;
-      column_sums<1>(pixels + u, from, static_cast<uint16_t>(height - from), stride, aligned, &out.sum[u]);
+      column_sums<1>(pixels + u, from, static_cast<uint16_t>(height - from), 0, 0, stride, aligned, &out.sum[u]);
       for (int c = 0; c < 4; ++c)
         out.sum[u + c] = static_cast<ColumnSum>(to_band_q8(pixels + u + c, out.sum[u + c], from, height, stride, band->first[u + c],
                                     band->edge_q8[u + c]));
     }
-  }
-  for (; u < width; ++u) {
-    const uint16_t first = band ? band->first[u] : 0;
-    int32_t s = 0;
-    const uint8_t* p = pixels + u;
-    for (uint16_t r = first; r < height - first; ++r) s += p[uint32_t{r} * stride];
-    out.sum[u] = static_cast<ColumnSum>(band ? to_band_q8(p, s, first, height, stride, first, band->edge_q8[u]) : s);
+    for (; u < width; ++u) {
+      const uint16_t first = band->first[u];
+      int32_t s = 0;
+      const uint8_t* p = pixels + u;
+      for (uint16_t r = first; r < height - first; ++r) s += p[uint32_t{r} * stride];
+      out.sum[u] = static_cast<ColumnSum>(to_band_q8(p, s, first, height, stride, first, band->edge_q8[u]));
+    }
   }
   // Edge rows (a line scan has none: its arrays are one entry long).
   out.edges = band == nullptr && kBandColumns > 1 && height >= 2;
@@ -157,6 +216,32 @@ void column_profile(const uint8_t* pixels, uint16_t width, uint16_t height, uint
   }
   out.clipped = clipped;
   out.clip_sampled = static_cast<uint32_t>((height + kClipRowStep - 1) / kClipRowStep) * width;
+}
+
+RadialRings radial_rings(uint16_t width, uint16_t height) {
+  RadialRings r{};
+  r.height = height;
+  for (int k = 0; k + 1 < kRadialRings; ++k)
+    r.edge[k] = static_cast<uint16_t>((uint32_t{height} * static_cast<uint32_t>(k + 1) + kRadialRings) / (2 * kRadialRings));
+  uint16_t outer = 0;
+  for (int k = 0; k < kRadialRings; ++k) {
+    const uint16_t inner = k == kRadialRings - 1 ? static_cast<uint16_t>(height / 2) : r.edge[k];
+    // The ring's rows: [outer, inner) and their mirrors (the middle row of an
+    // odd height once). 256 sum (2r + 1 - H)^2 / (n W^2), rounded (< 2^37).
+    uint64_t num = 0;
+    uint32_t n = 0;
+    const uint16_t last = k == kRadialRings - 1 ? static_cast<uint16_t>(height - outer) : inner;
+    for (uint16_t row = outer; row < last; ++row) {
+      const int32_t d = 2 * row + 1 - height;
+      num += static_cast<uint64_t>(d * d) * (k == kRadialRings - 1 ? 1 : 2);
+      n += k == kRadialRings - 1 ? 1 : 2;
+    }
+    const uint64_t den = uint64_t{n} * width * width;
+    r.weight_q8[k] = den == 0 ? 0 : static_cast<int32_t>((num * 256 + den / 2) / den);
+    r.rows_y2_q8 += r.weight_q8[k] * static_cast<int32_t>(n);
+    outer = inner;
+  }
+  return r;
 }
 
 uint32_t band_rows_q8(const ColumnBand* band, uint16_t height, uint16_t u) {

@@ -84,7 +84,8 @@ Estimate Estimator::step(const FramePair& frames) {
   ColumnProfile p[2];
   if (configured_)
     for (int i = 0; i < 2; ++i)
-      column_profile(frames.cam[i], cfg_.width, cfg_.height, frames.stride, bank_.column_band(), p[i]);
+      column_profile(frames.cam[i], cfg_.width, cfg_.height, frames.stride, bank_.column_band(), p[i],
+                     i == 1 && (cfg_.options & kOptionPhotometricMatch) ? bank_.radial_rings() : nullptr);  // (cam1's rows' share of the vignetting)
   return step_profiles(frames.t_ns, p[0], p[1]);
 }
 

@@ -298,6 +298,7 @@ void build_kernel_bank(const EstimatorConfig& cfg, KernelBank& bank) {
     build_kernel(cfg, centre, bank.banded, cfg.kernels[k], false, kk, dd, tt);
   }
   for (int k = 0; k < cfg.kernel_count; ++k) bank.sigma[k] = cfg.kernels[k].sigma;
+  bank.rings = radial_rings(cfg.width, cfg.height);
   bank.leaning = !bank.banded && kBandColumns > 1 && cfg.height >= 2;
   for (int i = 0; i < 2; ++i)
     for (uint16_t u = 0; u < kBandColumns; ++u)

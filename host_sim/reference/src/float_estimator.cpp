@@ -36,7 +36,8 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
 
   FloatColumnProfile p[2];
   const uint8_t* cam[2] = {cam0, cam1};
-  for (int i = 0; i < 2; ++i) p[i] = float_column_profile(bank_.band, cam[i], s_.width, s_.height);
+  for (int i = 0; i < 2; ++i)
+    p[i] = float_column_profile(bank_.band, cam[i], s_.width, s_.height, i == 1 && s_.photometric_match);
   // (on the sums as the cameras gave them: the mapping changes cam1's)
   const bool no_stereo = float_same_textured_profile(p[0], p[1], bank_.band);
   const bool matching = s_.photometric_match;

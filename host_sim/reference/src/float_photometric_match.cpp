@@ -32,7 +32,8 @@ FloatColumnProfile FloatPhotometricMatch::apply(const FloatColumnProfile& p1, co
   const int w = static_cast<int>(p1.sum.size());
   for (int u = 0; u < w; ++u) {
     const double g = gain(p_, column_x(u, w));
-    out.sum[u] = std::max(0.0, (p1.sum[u] - rows[u] * p_[2] * kMatchOffsetUnitDn) * g);
+    const double radial = p1.radial ? p_[1] * (p1.sum_y2[u] - p1.rows_y2 * p_[2] * kMatchOffsetUnitDn) : 0.0;
+    out.sum[u] = std::max(0.0, (p1.sum[u] - rows[u] * p_[2] * kMatchOffsetUnitDn) * g + radial);
     if (out.edge.size()) out.edge[u] = p1.edge[u] * g;
   }
   return out;
@@ -48,7 +49,10 @@ Eigen::MatrixXd FloatPhotometricMatch::jacobian(const FloatColumnProfile& p1, co
   for (int j = 0; j < kParams; ++j) {
     for (int u = 0; u < w; ++u) {
       const double x = column_x(u, w);
-      du[u] = j == 0 ? p1.sum[u] * x : j == 1 ? p1.sum[u] * x * x : -rows[u] * kMatchOffsetUnitDn * gain(p_, x);
+      const double y2 = p1.radial ? p1.sum_y2[u] : 0.0, rows_y2 = p1.radial ? p1.rows_y2 : 0.0;
+      du[u] = j == 0   ? p1.sum[u] * x
+              : j == 1 ? p1.sum[u] * x * x + y2
+                       : -(rows[u] * gain(p_, x) + rows_y2 * p_[1]) * kMatchOffsetUnitDn;
     }
     const double dn = ck.norm.dot(du) / n;
     for (int k = 0; k < count; ++k) jac(k, j) = ck.k[static_cast<size_t>(k)].dot(du) / n - f1[k] * dn;

@@ -4,6 +4,7 @@
 #include <type_traits>
 
 #include "lumavel/core/limits.hpp"
+#include "lumavel/core/photometric_params.hpp"
 
 namespace lumavel {
 
@@ -42,14 +43,39 @@ struct ColumnProfile {
   // products on the plain sums, in 32-bit products (kernel_dot.hpp).
   bool plain_x256;
   bool edges;
+  // With radial rings (RadialRings): each column's sum weighted by y^2 (y =
+  // (2r + 1 - H) / W the row's centre, in units of half the width), each
+  // ring of rows at its mean y^2, in Q8 (a uniform image of value 1 sums to
+  // the rings' rows_y2_q8 in every column; < 2^30: y^2 < 64, 255 * kMaxRows
+  // < 2^15). The photometric match's radial vignetting (photometric_match.hpp).
+  int32_t sum_y2[kBandColumns];
+  int32_t rows_y2_q8;
+  bool radial;
   uint32_t clipped;           // pixels at 0 or 255 among the sampled rows
   uint32_t clip_sampled;      // pixels inspected for clipping (every 8th row)
 };
 
+// The rows in kMatchRadialRings rings from the top and bottom edges in:
+// ring k the rows [edge[k-1], edge[k]) and their mirror images
+// [H - edge[k], H - edge[k-1]) (edge[-1] = 0), the last ring the middle rows
+// [edge[kRings-2], H - edge[kRings-2]); edge[k] = round((k + 1) H / (2 kRings)).
+// Each weighed by its rows' mean y^2 (Q8, < 2^14); built once per geometry
+// (kernel_bank.hpp): only for more than one row and no band.
+constexpr int kRadialRings = params::kMatchRadialRings;
+struct RadialRings {
+  uint16_t height;
+  uint16_t edge[kRadialRings - 1];
+  int32_t weight_q8[kRadialRings];
+  int32_t rows_y2_q8;  // a uniform image of value 1: sum of weight x rows
+};
+RadialRings radial_rings(uint16_t width, uint16_t height);
+
 // band == nullptr: every column sums all rows. Also counts clipped pixels
-// (0 or 255) on every 8th row, band or not, for the saturation flag.
+// (0 or 255) on every 8th row, band or not, for the saturation flag. With
+// rings (no band, their height), also sum_y2: the sums are then taken ring
+// by ring, their totals the same bits.
 void column_profile(const uint8_t* pixels, uint16_t width, uint16_t height, uint16_t stride,
-                    const ColumnBand* band, ColumnProfile& out);
+                    const ColumnBand* band, ColumnProfile& out, const RadialRings* rings = nullptr);
 
 // Both cameras delivered the same textured image (one frame twice: a wiring
 // or driver fault): every column sum equal, and not all columns alike. Two

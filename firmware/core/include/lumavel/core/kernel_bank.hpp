@@ -71,6 +71,10 @@ struct KernelBank {
   bool banded;      // false: every column sums all rows (line scans, bands under 2 rows)
   ColumnBand band;  // both cameras', when banded
   const ColumnBand* column_band() const { return banded ? &band : nullptr; }
+  // The rows' rings for a radial weighting (column_profile.hpp), where the
+  // columns sum all rows (more than one row, no band).
+  RadialRings rings;
+  const RadialRings* radial_rings() const { return banded || kBandColumns == 1 || rings.height < 2 ? nullptr : &rings; }
   CameraKernels cam[2];
   ValueQ28 dc[2][kMaxKernels];  // F of a uniform image (sum K / sum N), per camera
   AngleQ28 sigma[kMaxKernels];

@@ -6,8 +6,12 @@
 // lenses), a tilt of it (an off-centre lens), the gain (cancelled by the
 // division by N). cam1's column sums are mapped onto cam0's with three
 // parameters, p = (a1, a2, beta):
-//   sum'(u) = (sum(u) - rows(u) beta) (1 + a1 x_u + a2 x_u^2),
-// x_u in (-1, 1) the column's centre across the image. Linear in each of
+//   sum'(u) = (sum(u) - rows(u) beta) (1 + a1 x_u + a2 x_u^2)
+//             + a2 (sum_y2(u) - rows_y2 beta),
+// x_u in (-1, 1) the column's centre across the image, sum_y2 the column
+// summed with weight y^2 (column_profile.hpp; without a band): the
+// vignetting is radial, a2 (x^2 + y^2) per pixel, and its rows' share in a
+// column sum depends on the scene's vertical layout. Linear in each of
 // them, so that the Jacobian of cam1's F over p is three more dot products
 // per kernel (jacobian()).
 //
@@ -113,6 +117,8 @@ class PhotometricMatch {
     uint8_t count;
     uint16_t width, height;
     int32_t p[kMatchParams];
+    bool radial;
+    int32_t rows_y2;
     int64_t norm;
     int64_t k[kMaxKernels];
   };

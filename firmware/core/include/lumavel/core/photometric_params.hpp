@@ -64,6 +64,15 @@ constexpr double kMatchExplainedAll = 0.75;
 // the time still learns a little from it (docs/design.md); 0.03 and below
 // left the S-turns of near clutter nothing to learn from.
 constexpr double kMatchMaxRotationSigma = 0.05;
+// cam1's vignetting against cam0's is radial: a2 (x^2 + y^2) across the
+// pixels, not a2 x^2 across the columns. A column sum averages the rows'
+// share of it with the scene's own vertical layout, so the rows' share is
+// taken from the frame: each column is also summed with weight y^2 (y the
+// row's centre in units of half the width), the rows in this many rings from
+// the top and bottom edges in (the outer sixth, the next sixth, the middle
+// third), each weighed by its rows' mean y^2: the column sums' per-pixel work
+// unchanged, a multiply per ring and column, not per pixel.
+constexpr int kMatchRadialRings = 3;
 // beta's unit (DN): the three columns of the Jacobian then have like sizes.
 constexpr double kMatchOffsetUnitDn = 64.0;
 // Parameters beyond these are not taken (a scene that fooled the samples):
