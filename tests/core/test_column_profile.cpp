@@ -121,29 +121,27 @@ TEST(ColumnProfile, RadialSumsWeighEachRingOfRowsByItsMeanYSquared) {
       }
       LONGS_EQUAL(rows_y2, rings.rows_y2_q8);
       ColumnProfile plain, p;
-      column_profile(img.data(), w, h, stride, nullptr, plain);
-      column_profile(img.data(), w, h, stride, nullptr, p, &rings);
-      CHECK_TRUE(p.radial);
-      CHECK_FALSE(plain.radial);
-      LONGS_EQUAL(rows_y2, p.rows_y2_q8);
+      RadialSums radial;
+      CHECK_FALSE(column_profile(img.data(), w, h, stride, nullptr, plain));
+      CHECK_TRUE(column_profile(img.data(), w, h, stride, nullptr, p, &rings, &radial));
+      LONGS_EQUAL(rows_y2, radial.rows_y2_q8);
       for (uint16_t x = 0; x < w; ++x) {
         LONGS_EQUAL(plain.sum[x], p.sum[x]);
         int64_t s2 = 0;
         for (unsigned y = 0; y < h; ++y) s2 += int64_t{rings.weight_q8[ring[y]]} * img[y * stride + x];
-        LONGS_EQUAL(s2, p.sum_y2[x]);
+        LONGS_EQUAL(s2, radial.sum_y2[x]);
       }
     }
   }
   std::vector<uint8_t> white(static_cast<size_t>(kMaxColumns) * kMaxRows, 255);
   const RadialRings tallest = radial_rings(16, kMaxRows);  // H / W = 8
   ColumnProfile p;
-  column_profile(white.data(), 16, kMaxRows, kMaxColumns, nullptr, p, &tallest);
-  CHECK(p.sum_y2[0] > 0);
-  LONGS_EQUAL(int64_t{255} * p.rows_y2_q8, p.sum_y2[0]);
+  RadialSums radial;
+  CHECK_TRUE(column_profile(white.data(), 16, kMaxRows, kMaxColumns, nullptr, p, &tallest, &radial));
+  CHECK(radial.sum_y2[0] > 0);
+  LONGS_EQUAL(int64_t{255} * radial.rows_y2_q8, radial.sum_y2[0]);
   const RadialRings r30 = radial_rings(40, 30);
   ColumnBand band{};
-  column_profile(white.data(), 40, 30, 40, &band, p, &r30);
-  CHECK_FALSE(p.radial);
-  column_profile(white.data(), 40, 29, 40, nullptr, p, &r30);  // rings of another height
-  CHECK_FALSE(p.radial);
+  CHECK_FALSE(column_profile(white.data(), 40, 30, 40, &band, p, &r30, &radial));
+  CHECK_FALSE(column_profile(white.data(), 40, 29, 40, nullptr, p, &r30, &radial));  // rings of another height
 }

@@ -21,7 +21,8 @@ int32_t q30(double v) { return static_cast<int32_t>(std::llround(v * 1073741824.
 struct Scene {
   test::SyntheticRig rig;
   std::unique_ptr<KernelBank> bank = std::make_unique<KernelBank>();
-  ColumnProfile p0{}, p1{}, p1_radial{};
+  ColumnProfile p0{}, p1{};
+  RadialSums radial1{};
   Scene() {
     rig.width = 40;
     rig.height = 30;
@@ -29,19 +30,19 @@ struct Scene {
     const test::Pose2 at{0.3, 0, 0};
     const auto a = rig.render(0, at), b = rig.render(1, at);
     column_profile(a.data(), 40, 30, 40, bank->column_band(), p0);
-    column_profile(b.data(), 40, 30, 40, bank->column_band(), p1);
-    column_profile(b.data(), 40, 30, 40, bank->column_band(), p1_radial, bank->radial_rings());
+    CHECK_TRUE(column_profile(b.data(), 40, 30, 40, bank->column_band(), p1, bank->radial_rings(), &radial1));
   }
   // cam1's outputs with the mapping p applied
   StereoMeasurement measure(const double p[3], MatchJac* jac = nullptr, bool radial = false) const {
     PhotometricMatch m;
     const int32_t pq[3] = {q30(p[0]), q30(p[1]), q30(p[2] / 64)};
     m.set_params(pq);
-    ColumnProfile q = radial ? p1_radial : p1;
-    m.apply(q, bank->column_band(), 30);
+    ColumnProfile q = p1;
+    const RadialSums* r = radial ? &radial1 : nullptr;
+    m.apply(q, bank->column_band(), 30, r);
     StereoMeasurement out{};
     stereo_measurement(p0, q, *bank, nullptr, out);
-    if (jac) m.jacobian(q, bank->column_band(), 30, bank->cam[1], bank->count, out.f[1], *jac);
+    if (jac) m.jacobian(q, bank->column_band(), 30, r, bank->cam[1], bank->count, out.f[1], *jac);
     return out;
   }
 };
@@ -50,19 +51,23 @@ struct Scene {
 
 TEST_GROUP(PhotometricMatch){};
 
-// sum' = (sum - rows beta) (1 + a1 x + a2 x^2), x the column's centre in (-1, 1).
+// sum' = (sum - rows beta) (1 + a1 x + a2 x^2), x the column's centre in (-1, 1),
+// plus a2 (sum_y2 - rows_y2 beta) with cam1's radial sums.
 TEST(PhotometricMatch, MapsTheColumnSums) {
   Scene sc;
   PhotometricMatch m;
   const int32_t p[3] = {q30(0.02), q30(-0.05), q30(3.0 / 64)};
   m.set_params(p);
-  ColumnProfile q = sc.p1;
-  m.apply(q, sc.bank->column_band(), 30);
-  for (int u = 0; u < 40; ++u) {
-    const double x = (2.0 * u + 1 - 40) / 40;
-    const double want = (sc.p1.sum[u] - 30 * 3.0) * (1 + 0.02 * x - 0.05 * x * x);
-    CHECK(q.q8);  // the mapped sums keep 8 fractional bits
-    CHECK(std::fabs(q.sum[u] / 256.0 - want) <= 1.0 / 256);
+  for (const bool radial : {false, true}) {
+    ColumnProfile q = sc.p1;
+    m.apply(q, sc.bank->column_band(), 30, radial ? &sc.radial1 : nullptr);
+    for (int u = 0; u < 40; ++u) {
+      const double x = (2.0 * u + 1 - 40) / 40;
+      double want = (sc.p1.sum[u] - 30 * 3.0) * (1 + 0.02 * x - 0.05 * x * x);
+      if (radial) want += -0.05 * (sc.radial1.sum_y2[u] - sc.radial1.rows_y2_q8 * 3.0) / 256;
+      CHECK(q.q8);  // the mapped sums keep 8 fractional bits
+      CHECK(std::fabs(q.sum[u] / 256.0 - want) <= 1.0 / 256);
+    }
   }
 }
 
@@ -114,10 +119,10 @@ TEST(PhotometricMatch, MapsTheRowsShareOfARadialVignetting) {
       b[static_cast<size_t>(y * 40 + x)] = static_cast<uint8_t>(std::lround(std::min(255.0, px)));
     }
   ColumnProfile p0{}, plain{}, radial{};
+  RadialSums sums{};
   column_profile(a.data(), 40, 30, 40, sc.bank->column_band(), p0);
   column_profile(b.data(), 40, 30, 40, sc.bank->column_band(), plain);
-  column_profile(b.data(), 40, 30, 40, sc.bank->column_band(), radial, sc.bank->radial_rings());
-  CHECK_TRUE(radial.radial);
+  CHECK_TRUE(column_profile(b.data(), 40, 30, 40, sc.bank->column_band(), radial, sc.bank->radial_rings(), &sums));
   // cam1 -> cam0: (b - beta)(1 + v r^2)
   PhotometricMatch m;
   const int32_t p[3] = {0, q30(v), q30(beta / 64)};
@@ -125,7 +130,7 @@ TEST(PhotometricMatch, MapsTheRowsShareOfARadialVignetting) {
   double err[2];
   int i = 0;
   for (ColumnProfile* q : {&plain, &radial}) {
-    m.apply(*q, sc.bank->column_band(), 30);
+    m.apply(*q, sc.bank->column_band(), 30, q == &radial ? &sums : nullptr);
     double s0 = 0, s1 = 0;
     for (int u = 0; u < 40; ++u) {
       s0 += p0.sum[u];

@@ -32,15 +32,17 @@ using counter::ticks_between;
 alignas(4) uint8_t frame[2][lumavel::kMaxColumns * lumavel::kMaxRows];  // word loads
 lumavel::Estimator estimator;
 lumavel::ColumnProfile profile[2];
+lumavel::RadialSums radial1;
 lumavel::StereoMeasurement measurement;
 uint8_t report[lumavel::protocol::kMeasurementSize];
 
 __attribute__((noipa)) void do_columns(uint16_t w, uint16_t h) {
   const lumavel::KernelBank& bank = estimator.bank();
   const bool matching = (estimator.config().options & lumavel::kOptionPhotometricMatch) != 0;
-  for (int i = 0; i < 2; ++i)  // (as Estimator::step takes them: cam1's radial sums for the match)
-    lumavel::column_profile(frame[i], w, h, w, bank.column_band(), profile[i],
-                            i == 1 && matching ? bank.radial_rings() : nullptr);
+  lumavel::column_profile(frame[0], w, h, w, bank.column_band(), profile[0]);
+  // (as Estimator::step takes them: cam1's radial sums for the match)
+  lumavel::column_profile(frame[1], w, h, w, bank.column_band(), profile[1], matching ? bank.radial_rings() : nullptr,
+                          &radial1);
 }
 __attribute__((noipa)) void do_kernels() {
   lumavel::stereo_measurement(profile[0], profile[1], estimator.bank(), nullptr, measurement);

@@ -134,14 +134,14 @@ void sum_rows(const uint8_t* pixels, uint16_t width, uint16_t from, uint16_t to,
 // The sums ring by ring, each ring's also into sum_y2 at its weight: the
 // totals are sum_rows()'s over all rows, bit for bit.
 void sum_rows_radial(const uint8_t* pixels, uint16_t width, uint16_t height, uint16_t stride, bool aligned,
-                     const RadialRings& rings, ColumnProfile& out) {
+                     const RadialRings& rings, ColumnProfile& out, RadialSums& radial) {
   uint16_t outer = 0;  // rows from each edge already summed
   for (int k = 0; k < kRadialRings; ++k) {
     const bool middle = k == kRadialRings - 1;
     const uint16_t inner = middle ? static_cast<uint16_t>(height / 2) : rings.edge[k];
     const uint16_t to2 = static_cast<uint16_t>(height - outer), from2 = middle ? to2 : static_cast<uint16_t>(height - inner);
     sum_rows<true>(pixels, width, outer, middle ? from2 : inner, from2, to2, stride, aligned, out.sum,
-                   Ring{out.sum_y2, rings.weight_q8[k], k == 0});
+                   Ring{radial.sum_y2, rings.weight_q8[k], k == 0});
     outer = inner;
   }
 }
@@ -157,18 +157,19 @@ int32_t to_band_q8(const uint8_t* col, int32_t s, uint16_t from, uint16_t height
 
 }  // namespace
 
-void column_profile(const uint8_t* pixels, uint16_t width, uint16_t height, uint16_t stride,
-                    const ColumnBand* band_in, ColumnProfile& out, const RadialRings* rings) {
+bool column_profile(const uint8_t* pixels, uint16_t width, uint16_t height, uint16_t stride,
+                    const ColumnBand* band_in, ColumnProfile& out, const RadialRings* rings, RadialSums* radial) {
   // A line-scan build keeps no band (kBandColumns == 1).
   const ColumnBand* const band = kBandColumns > 1 ? band_in : nullptr;
   out.width = width;
   out.q8 = band != nullptr;
   out.plain_x256 = false;
   const bool aligned = ((reinterpret_cast<uintptr_t>(pixels) | stride) & 3u) == 0;
-  out.radial = rings != nullptr && band == nullptr && kBandColumns > 1 && height >= 2 && rings->height == height;
-  out.rows_y2_q8 = out.radial ? rings->rows_y2_q8 : 0;
-  if (out.radial) {
-    sum_rows_radial(pixels, width, height, stride, aligned, *rings, out);
+  const bool radial_taken = rings != nullptr && radial != nullptr && band == nullptr && kBandColumns > 1 &&
+                            height >= 2 && rings->height == height;
+  if (radial_taken) {
+    radial->rows_y2_q8 = rings->rows_y2_q8;
+    sum_rows_radial(pixels, width, height, stride, aligned, *rings, out, *radial);
   } else if (band == nullptr) {
     sum_rows<false>(pixels, width, 0, height, 0, 0, stride, aligned, out.sum);
   } else {
@@ -216,6 +217,7 @@ void column_profile(const uint8_t* pixels, uint16_t width, uint16_t height, uint
   }
   out.clipped = clipped;
   out.clip_sampled = static_cast<uint32_t>((height + kClipRowStep - 1) / kClipRowStep) * width;
+  return radial_taken;
 }
 
 RadialRings radial_rings(uint16_t width, uint16_t height) {

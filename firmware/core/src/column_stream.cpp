@@ -13,8 +13,6 @@ void ColumnStream::start(uint16_t width, uint16_t height, const ColumnBand* band
   p_.q8 = band_ != nullptr;
   p_.plain_x256 = false;
   p_.edges = band_ == nullptr && kBandColumns > 1 && height >= 2;
-  p_.radial = false;  // (the rows' y^2 sums need the whole frame: column_profile)
-  p_.rows_y2_q8 = 0;
   p_.clipped = 0;
   p_.clip_sampled = static_cast<uint32_t>((height + params::kClipRowStep - 1) / params::kClipRowStep) * width;
   for (uint16_t u = 0; u < width; ++u) p_.sum[u] = 0;

@@ -82,14 +82,17 @@ void Estimator::reset() {
 
 Estimate Estimator::step(const FramePair& frames) {
   ColumnProfile p[2];
-  if (configured_)
-    for (int i = 0; i < 2; ++i)
-      column_profile(frames.cam[i], cfg_.width, cfg_.height, frames.stride, bank_.column_band(), p[i],
-                     i == 1 && (cfg_.options & kOptionPhotometricMatch) ? bank_.radial_rings() : nullptr);  // (cam1's rows' share of the vignetting)
-  return step_profiles(frames.t_ns, p[0], p[1]);
+  RadialSums radial1;  // cam1's, for the photometric match's rows' share of the vignetting
+  bool radial = false;
+  if (configured_) {
+    column_profile(frames.cam[0], cfg_.width, cfg_.height, frames.stride, bank_.column_band(), p[0]);
+    radial = column_profile(frames.cam[1], cfg_.width, cfg_.height, frames.stride, bank_.column_band(), p[1],
+                            (cfg_.options & kOptionPhotometricMatch) ? bank_.radial_rings() : nullptr, &radial1);
+  }
+  return step_profiles(frames.t_ns, p[0], p[1], radial ? &radial1 : nullptr);
 }
 
-Estimate Estimator::step_profiles(uint64_t t_ns, ColumnProfile& p0, ColumnProfile& p1) {
+Estimate Estimator::step_profiles(uint64_t t_ns, ColumnProfile& p0, ColumnProfile& p1, const RadialSums* radial1) {
   Estimate est{};
   est.t_ns = t_ns;
   est.frame_index = frame_index_++;
@@ -100,12 +103,12 @@ Estimate Estimator::step_profiles(uint64_t t_ns, ColumnProfile& p0, ColumnProfil
   const bool no_stereo = same_textured_profile(p0, p1, bank_.column_band(), cfg_.height);
   const bool matching = (cfg_.options & kOptionPhotometricMatch) != 0;  // (validate(): only where built in)
 #if LUMAVEL_MATCH_FRAMES > 0
-  if (matching) match_.apply(p1, bank_.column_band(), cfg_.height);
+  if (matching) match_.apply(p1, bank_.column_band(), cfg_.height, radial1);
 #endif
   stereo_measurement(p0, p1, bank_, (cfg_.options & kOptionPhotometricBalance) ? &balance_ : nullptr, m);
 #if LUMAVEL_MATCH_FRAMES > 0
   MatchJac jac;
-  if (matching) match_.jacobian(p1, bank_.column_band(), cfg_.height, bank_.cam[1], bank_.count, m.f[1], jac);
+  if (matching) match_.jacobian(p1, bank_.column_band(), cfg_.height, radial1, bank_.cam[1], bank_.count, m.f[1], jac);
   MatchInput match_in{};
   match_in.usable = false;
 #endif
@@ -235,6 +238,7 @@ Estimate Estimator::step_profiles(uint64_t t_ns, ColumnProfile& p0, ColumnProfil
   }
 #else
   (void)matching;
+  (void)radial1;  // (the rows' share is the match's)
 #endif
   if (observer_.converging_now()) status |= kStatusConverging;
   prev_t_ns_ = t_ns;

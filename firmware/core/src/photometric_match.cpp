@@ -61,7 +61,7 @@ int64_t lerp(int64_t a, int64_t b, int64_t u_q16) { return a + fx::shr_round((b 
 
 void PhotometricMatch::reset() { *this = PhotometricMatch{}; }
 
-void PhotometricMatch::apply(ColumnProfile& p1, const ColumnBand* band, uint16_t height) {
+void PhotometricMatch::apply(ColumnProfile& p1, const ColumnBand* band, uint16_t height, const RadialSums* radial) {
   // The mapped sums keep 8 fractional bits (a plain profile becomes Q8): a
   // whole-number rounding would add noise that the twin does not have.
   const int up = p1.q8 ? 0 : 8;
@@ -83,9 +83,9 @@ void PhotometricMatch::apply(ColumnProfile& p1, const ColumnBand* band, uint16_t
     const int64_t t = fx::shr_round(int64_t{p1.sum[u]} * (int64_t{1} << kBetaDnFrac) - rows_in_sum(p1, band, height, u) * p_[2],
                                     kBetaDnFrac - up);
     int64_t s = fx::shr_round(t * g, kQ);
-    if (p1.radial) {  // the rows' share of the vignetting: a2 (sum_y2 - rows_y2 beta), Q8 (< 2^53 before the shift)
-      const int64_t t2 = fx::shr_round(int64_t{p1.sum_y2[u]} * (int64_t{1} << kBetaDnFrac) - int64_t{p1.rows_y2_q8} * p_[2],
-                                       kBetaDnFrac);
+    if (radial) {  // the rows' share of the vignetting: a2 (sum_y2 - rows_y2 beta), Q8 (< 2^53 before the shift)
+      const int64_t t2 = fx::shr_round(
+          int64_t{radial->sum_y2[u]} * (int64_t{1} << kBetaDnFrac) - int64_t{radial->rows_y2_q8} * p_[2], kBetaDnFrac);
       s += fx::shr_round(t2 * p_[1], kQ);
     }
     s = s < 0 ? 0 : (s > kMaxQ8Sum ? kMaxQ8Sum : s);
@@ -98,7 +98,8 @@ void PhotometricMatch::apply(ColumnProfile& p1, const ColumnBand* band, uint16_t
 }
 
 void PhotometricMatch::jacobian(const ColumnProfile& p1, const ColumnBand* band, uint16_t height,
-                                const CameraKernels& ck, uint8_t count, const ValueQ28* f1, MatchJac& jac) {
+                                const RadialSums* radial, const CameraKernels& ck, uint8_t count, const ValueQ28* f1,
+                                MatchJac& jac) {
   const int64_t n = kdot::dot(ck.norm, p1);
   for (uint8_t k = 0; k < count; ++k)
     for (int j = 0; j < kMatchParams; ++j) jac[k][j] = 0;
@@ -114,20 +115,21 @@ void PhotometricMatch::jacobian(const ColumnProfile& p1, const ColumnBand* band,
     const int64_t x = column_x(u, p1.width);
     du[0][u] = static_cast<int32_t>(fx::shr_round(int64_t{p1.sum[u]} * x, kQ));
     du[1][u] = static_cast<int32_t>(fx::shr_round(int64_t{p1.sum[u]} * fx::shr_round(x * x, kQ), kQ) +
-                                    (p1.radial ? p1.sum_y2[u] : 0));
+                                    (radial ? radial->sum_y2[u] : 0));
   }
   const bool beta_kept = beta_dots_.valid && beta_dots_.width == p1.width && beta_dots_.height == height &&
                          beta_dots_.q8 == p1.q8 && beta_dots_.count == count && beta_dots_.p[0] == p_[0] &&
-                         beta_dots_.p[1] == p_[1] && beta_dots_.p[2] == p_[2] && beta_dots_.radial == p1.radial &&
-                         beta_dots_.rows_y2 == p1.rows_y2_q8;
+                         beta_dots_.p[1] == p_[1] && beta_dots_.p[2] == p_[2] && beta_dots_.radial == (radial != nullptr) &&
+                         beta_dots_.rows_y2 == (radial ? radial->rows_y2_q8 : 0);
   if (!beta_kept) {
     int32_t db[kMaxColumns];
     for (uint16_t u = 0; u < p1.width; ++u)
       db[u] = static_cast<int32_t>(-fx::shr_round(
           (rows_in_sum(p1, band, height, u) * gain_q30(p_, column_x(u, p1.width)) +
-           (p1.radial ? int64_t{p1.rows_y2_q8} * p_[1] : 0)) * kOffsetUnitDn,
+           (radial ? int64_t{radial->rows_y2_q8} * p_[1] : 0)) * kOffsetUnitDn,
           kQ));
-    beta_dots_ = BetaDots{true, p1.q8, count, p1.width, height, {p_[0], p_[1], p_[2]}, p1.radial, p1.rows_y2_q8,
+    beta_dots_ = BetaDots{true, p1.q8, count, p1.width, height, {p_[0], p_[1], p_[2]}, radial != nullptr,
+                          radial ? radial->rows_y2_q8 : 0,
                           kdot::dot_values(ck.norm, db, p1.width), {}};
     for (uint8_t k = 0; k < count; ++k) beta_dots_.k[k] = kdot::dot_values(ck.k[k], db, p1.width);
   }

@@ -43,14 +43,6 @@ struct ColumnProfile {
   // products on the plain sums, in 32-bit products (kernel_dot.hpp).
   bool plain_x256;
   bool edges;
-  // With radial rings (RadialRings): each column's sum weighted by y^2 (y =
-  // (2r + 1 - H) / W the row's centre, in units of half the width), each
-  // ring of rows at its mean y^2, in Q8 (a uniform image of value 1 sums to
-  // the rings' rows_y2_q8 in every column; < 2^30: y^2 < 64, 255 * kMaxRows
-  // < 2^15). The photometric match's radial vignetting (photometric_match.hpp).
-  int32_t sum_y2[kBandColumns];
-  int32_t rows_y2_q8;
-  bool radial;
   uint32_t clipped;           // pixels at 0 or 255 among the sampled rows
   uint32_t clip_sampled;      // pixels inspected for clipping (every 8th row)
 };
@@ -70,12 +62,25 @@ struct RadialRings {
 };
 RadialRings radial_rings(uint16_t width, uint16_t height);
 
+// Each column's sum weighted by y^2 (y = (2r + 1 - H) / W the row's centre,
+// in units of half the width), each ring of rows at its mean y^2, in Q8 (a
+// uniform image of value 1 sums to rows_y2_q8 in every column; < 2^30: y^2
+// < 64, 255 * kMaxRows < 2^15): the photometric match's radial vignetting
+// (photometric_match.hpp), for cam1 only. Apart from ColumnProfile so that
+// a device that streams its rows (column_stream.hpp) does not carry it.
+struct RadialSums {
+  int32_t sum_y2[kBandColumns];
+  int32_t rows_y2_q8;
+};
+
 // band == nullptr: every column sums all rows. Also counts clipped pixels
 // (0 or 255) on every 8th row, band or not, for the saturation flag. With
-// rings (no band, their height), also sum_y2: the sums are then taken ring
-// by ring, their totals the same bits.
-void column_profile(const uint8_t* pixels, uint16_t width, uint16_t height, uint16_t stride,
-                    const ColumnBand* band, ColumnProfile& out, const RadialRings* rings = nullptr);
+// rings and radial (no band, the rings' height), also the radial sums: the
+// sums are then taken ring by ring, their totals the same bits. True when
+// the radial sums were taken.
+bool column_profile(const uint8_t* pixels, uint16_t width, uint16_t height, uint16_t stride,
+                    const ColumnBand* band, ColumnProfile& out, const RadialRings* rings = nullptr,
+                    RadialSums* radial = nullptr);
 
 // Both cameras delivered the same textured image (one frame twice: a wiring
 // or driver fault): every column sum equal, and not all columns alike. Two

@@ -55,8 +55,9 @@ class Estimator {
   // (column_profile, or ColumnStream as the rows arrive: no frame buffers);
   // they must be of the configured width and height and band (bank().
   // column_band()). step(frames) is column_profile then this. cam1's profile
-  // is mapped in place by the photometric match.
-  Estimate step_profiles(uint64_t t_ns, ColumnProfile& p0, ColumnProfile& p1);
+  // is mapped in place by the photometric match, with the rows' share of the
+  // vignetting where cam1's radial sums are given (bank().radial_rings()).
+  Estimate step_profiles(uint64_t t_ns, ColumnProfile& p0, ColumnProfile& p1, const RadialSums* radial1 = nullptr);
 
   const EstimatorConfig& config() const { return cfg_; }
   const KernelBank& bank() const { return bank_; }

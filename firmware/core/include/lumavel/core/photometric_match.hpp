@@ -68,15 +68,16 @@ struct MatchInput {
 class PhotometricMatch {
  public:
   void reset();
-  // cam1's profile mapped with the current p, in place.
-  void apply(ColumnProfile& p1, const ColumnBand* band, uint16_t height);
+  // cam1's profile mapped with the current p, in place (radial: its radial
+  // sums, or nullptr: the columns' own share of the vignetting only).
+  void apply(ColumnProfile& p1, const ColumnBand* band, uint16_t height, const RadialSums* radial);
   // cam1's dF/dp from the profile apply() gave and its outputs f1 (to first
   // order: d sum'/d a_j taken as sum' x^j, not sum' x^j / (1 + a1 x + a2 x^2);
   // an error of J slows the learning, it does not move where it ends). The
   // black level's column does not depend on the image: its dot products are
   // kept until p or the geometry changes (reset() on a new configuration).
-  void jacobian(const ColumnProfile& p1, const ColumnBand* band, uint16_t height, const CameraKernels& ck,
-                uint8_t count, const ValueQ28* f1, MatchJac& jac);
+  void jacobian(const ColumnProfile& p1, const ColumnBand* band, uint16_t height, const RadialSums* radial,
+                const CameraKernels& ck, uint8_t count, const ValueQ28* f1, MatchJac& jac);
   // One frame; true when p changed (by delta(), Q30 per parameter).
   bool learn(const MatchInput& in);
   const int32_t* params() const { return p_; }
