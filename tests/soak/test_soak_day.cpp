@@ -140,13 +140,15 @@ Figures run_day(double hours, DaySchedule& day) {
     scene.render(truth.s, gain, a, b);
     const host::EngineEstimate ef = fixed->step(t, a.data(), b.data());
     const host::EngineEstimate ed = dbl->step(t, a.data(), b.data());
-    // NO_TOF is a decision on a continuous match quality (time_of_flight.hpp):
-    // where a candidate sits on a gate, 1e-9 of arithmetic can tip it either
-    // way. Every other bit must agree on every frame.
+    // NO_TOF is a decision on a continuous match quality (time_of_flight.hpp),
+    // and so is the outvoting of a differential that points against the time
+    // of flight by 2 of its sigmas (velocity_fusion.hpp): where either sits on
+    // its margin, 1e-9 of arithmetic can tip it either way. Every other bit
+    // must agree on every frame.
     if ((ef.status & ~kStatusNoTof) != (ed.status & ~kStatusNoTof)) {
       if (f.status_mismatch++ < 5)
         std::printf("\n  t = %.3f s: status fixed %u, double %u", static_cast<double>(t) * 1e-9, ef.status, ed.status);
-    } else if (ef.status != ed.status) {
+    } else if (ef.status != ed.status || ef.outvoted != ed.outvoted) {
       ++f.tof_mismatch;
       t_tof_split = t;
       tof_split_seen = true;
@@ -291,7 +293,7 @@ TEST(SoakDay, ADayOfDrivingAgainstTheTruthAndTheTwin) {
               static_cast<unsigned long long>(f.twin_outside), static_cast<unsigned long long>(f.twin_checked),
               f.worst_twin_heading);
   std::printf("\n  heap in use grew by %ld bytes after the first 1000 s", f.heap_growth);
-  std::printf("\n  twin: NO_TOF differs on %llu of %llu frames, the match on %llu; worst scale gap %.2e; %llu frames in "
+  std::printf("\n  twin: NO_TOF or the outvote differs on %llu of %llu frames, the match on %llu; worst scale gap %.2e; %llu frames in "
               "the %.0f s after, %llu later ones with the scales over %.0e apart; on those, worst |V_fixed - V_double| "
               "%.2f %% of the speed",
               static_cast<unsigned long long>(f.tof_mismatch), static_cast<unsigned long long>(f.delivered),

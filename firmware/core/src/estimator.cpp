@@ -247,6 +247,7 @@ Estimate Estimator::step_profiles(uint64_t t_ns, ColumnProfile& p0, ColumnProfil
   est.v_differential = observer_.v();
   est.v = fusion_.v();
   est.scale = fusion_.scale();
+  est.outvoted = fusion_.differential_failed();
   est.distance = distance_;
   est.status = status;
   est.gyro_offset = gyro_offset_.offset();

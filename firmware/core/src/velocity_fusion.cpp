@@ -42,6 +42,8 @@ constexpr int64_t kLagSigmas2Q8 = fx::q_of(kFusionLagSigmas * kFusionLagSigmas, 
 constexpr int64_t kLagMaxQ16 = int64_t{1} << 23;  // speed differences held to 128 m/s: squares x a Q16 gain < 2^62
 constexpr int64_t kShortFramesQ16 = fx::q_of(kFusionScaleShortFrames, 16);
 constexpr int64_t kFailedHoldUs = fx::q_of(kFusionFailedHold * 1e6, 0);
+constexpr int64_t kCoastGrowth = fx::q_of(kFusionCoastSigmaGrowth, 0);
+static_assert(kCoastGrowth * 4 == fx::q_of(kFusionCoastSigmaGrowth, 2), "a whole factor: the variance stays exact");
 
 int64_t abs64(int64_t v) { return v < 0 ? -v : v; }
 int64_t clamp64(int64_t v, int64_t lo, int64_t hi) { return v < lo ? lo : (v > hi ? hi : v); }
@@ -122,12 +124,32 @@ FusionOutput VelocityFusion::update(const FusionInput& in) {
     failed_us_ = 0;
     const int64_t w = against ? kOneQ16 : fx::fraction_q16(sd2, sd2 + st2);
     target = vd + ((w * (zc - vd)) >> 16);
+    coast_z_ = zc;
+    coast_st2_ = st2;
+    coast_us_ = 0;
+    coast_frames_ = 0;
     // How far the time of flight really scatters, seen against a clean differential.
     if (residual_ < kScaleMaxResidualQ16 && !against) {
       const int64_t nu = int64_t{tof.v} - vd;
       const int64_t g = fx::div_q(nu * nu, st2 + sd2, 16);  // Q16
       tof_inflation_ = static_cast<int32_t>(
           clamp64(tof_inflation_ + fx::shr_round(kInflationGainQ16 * (g - tof_inflation_), 16), kOneQ16, kInflationMaxQ16));
+    }
+  }
+  if (!use_tof) {
+    // A track held through a miss: its last value, moved on by the fused rate,
+    // its sigma grown by kFusionCoastSigmaGrowth per frame (fusion_params.hpp).
+    // (st2 < 2^42, times (2 x 6)^2 at most: kTofTrackMisses frames.)
+    if (tof.held && coast_frames_ >= 0 && !failed_) {
+      coast_us_ = std::min<int64_t>(coast_us_ + dt_us, kInt31);
+      ++coast_frames_;
+      const int64_t zc = coast_z_ + fx::div_trunc(int64_t{accel_} * coast_us_, 1000000);
+      const int64_t grow = kCoastGrowth * (coast_frames_ + 1);
+      const int64_t st2 = coast_st2_ * grow * grow;
+      const int64_t w = fx::fraction_q16(sd2, sd2 + st2);
+      target = vd + ((w * (zc - vd)) >> 16);
+    } else {
+      coast_frames_ = -1;
     }
   }
   if (!use_tof && failed_) {

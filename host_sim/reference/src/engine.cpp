@@ -36,6 +36,7 @@ class FixedEngine final : public Engine {
     o.v_differential = si::Speed::to_si(e.v_differential);
     o.tof_s = static_cast<double>(e.tof_ns) * 1e-9;
     o.scale = si::Scale::to_si(e.scale);
+    o.outvoted = e.outvoted;
     int32_t p[kMatchParams];
     est_->photometric_params(p);
     for (int j = 0; j < kMatchParams; ++j) o.photometric[j] = static_cast<double>(p[j]) / 1073741824.0;

@@ -163,6 +163,7 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
   est.v_differential = observer_.v();
   est.v = fusion_.v();
   est.scale = fusion_.scale();
+  est.outvoted = fusion_.differential_failed();
   est.distance = distance_;
   est.status = status;
   est.gyro_offset = gyro_offset_.offset();

@@ -147,7 +147,10 @@ FloatTofResult FloatTimeOfFlight::track(double baseline, double max_rotation, do
       acquire_count_ = 0;
     }
   }
-  if (!have) return r;
+  if (!have) {
+    r.held = misses_ < kTofTrackMisses;
+    return r;
+  }
   track_ns_ = pick.stau_ns;
   track_t_ns_ = at(0).t_ns;
   misses_ = 0;

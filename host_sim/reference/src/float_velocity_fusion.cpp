@@ -76,10 +76,26 @@ FloatFusionOutput FloatVelocityFusion::update(const FloatFusionInput& in) {
     failed_us_ = 0;
     const double w = against ? 1.0 : sd2 / (sd2 + st * st);
     target = vd + w * (zc - vd);
+    coast_z_ = zc;
+    coast_st2_ = st * st;
+    coast_us_ = 0;
+    coast_frames_ = 0;
     if (residual_ < kFusionScaleMaxResidual && !against) {
       const double g = (tof.v - vd) * (tof.v - vd) / (st * st + sd2);
       tof_inflation_ = std::clamp(tof_inflation_ + kFusionTofInflationGain * (g - tof_inflation_), 1.0,
                                   kFusionTofInflationMax);
+    }
+  }
+  if (!use_tof) {  // a track held through a miss (the core's comment)
+    if (tof.held && coast_frames_ >= 0 && !failed_) {
+      coast_us_ = std::min<int64_t>(coast_us_ + dt_us, int64_t{1} << 31);
+      ++coast_frames_;
+      const double zc = coast_z_ + accel_ * static_cast<double>(coast_us_) * 1e-6;
+      const double grow = kFusionCoastSigmaGrowth * (coast_frames_ + 1);
+      const double st2 = coast_st2_ * grow * grow;
+      target = vd + sd2 / (sd2 + st2) * (zc - vd);
+    } else {
+      coast_frames_ = -1;
     }
   }
   if (!use_tof && failed_) {  // held until it agrees again (the core's comment)

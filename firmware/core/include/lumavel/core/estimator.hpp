@@ -37,6 +37,8 @@ struct Estimate {
   SpeedQ16 v_differential;  // the differential observer alone (paper eq. 9)
   int64_t tof_ns;      // this frame's time of flight (0: none)
   ScaleQ24 scale;      // the differential's learned scale against the time of flight
+  bool outvoted;       // the differential pointed against the time of flight and was outvoted
+                       // (velocity_fusion.hpp: a decision on a continuous margin, as NO_TOF is)
 };
 
 class Estimator {

@@ -47,6 +47,7 @@ struct TofFrame {
 
 struct TofResult {
   bool ok;
+  bool held;          // no match this frame, but the track is kept (fewer than kTofTrackMisses misses)
   int8_t direction;   // +1: cam0 trails, the body moved +h since the match; -1: cam1 trails, -h
   int64_t tau_ns;     // time since the lead camera stood here
   SpeedQ16 v;         // displacement over tau: direction * h / tau

@@ -74,6 +74,7 @@ class VelocityFusion {
     since_start_us_ = 0;
     have_direct_ = false;
     failed_ = false;
+    coast_frames_ = -1;
   }
   FusionOutput update(const FusionInput& in);
   // The fused V: held over frames without an update (no light, gaps, low
@@ -101,6 +102,10 @@ class VelocityFusion {
   bool have_direct_ = false;
   bool failed_ = false;            // the differential failed against the time of flight ...
   int64_t failed_us_ = 0;          // ... this long ago (us, capped)
+  int64_t coast_z_ = 0;            // the last time of flight's value (Q16, moved to the present) ...
+  int64_t coast_st2_ = 0;          // ... its variance (Q32) ...
+  int64_t coast_us_ = 0;           // ... how long ago (us, capped) ...
+  int32_t coast_frames_ = -1;      // ... in frames since (-1: none to coast on)
   int64_t lag_compensation(const FusionInput& in, int64_t dt_us);        // how long the observer has measured without a break (us, capped)
   void learn_scale(const FusionInput& in, int64_t dt_us, int64_t q_res, int64_t q_change, int64_t q_short, int64_t q_turn);
 

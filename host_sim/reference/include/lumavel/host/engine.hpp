@@ -23,6 +23,7 @@ struct EngineEstimate {
   double v_differential = 0;  // the differential observer alone, m/s (v fuses it with the time of flight)
   double tof_s = 0;           // this frame's time of flight, s (0: none)
   double scale = 1;           // the differential's learned scale against the time of flight
+  bool outvoted = false;      // the differential outvoted by the time of flight (Estimate::outvoted)
   // The photometric match's mapping in use (photometric_match.hpp): cam1's
   // column gain tilt a1 and vignetting a2, and its black level over cam0's, DN.
   double photometric[3] = {0, 0, 0};

@@ -17,6 +17,7 @@ struct FloatTofFrame {
 
 struct FloatTofResult {
   bool ok = false;
+  bool held = false;   // no match, the track kept (the core's)
   int direction = 0;   // +1: cam0 trails (+h since the match), -1: cam1 trails
   double tau_ns = 0;
   double v = 0;        // m/s

@@ -34,6 +34,7 @@ class FloatVelocityFusion {
     since_start_us_ = 0;
     have_direct_ = false;
     failed_ = false;
+    coast_frames_ = -1;
   }
   FloatFusionOutput update(const FloatFusionInput& in);
   double v() const { return v_; }
@@ -54,6 +55,9 @@ class FloatVelocityFusion {
   bool have_direct_ = false;
   bool failed_ = false;     // the differential failed against the time of flight ...
   int64_t failed_us_ = 0;   // ... this long ago (us)
+  double coast_z_ = 0, coast_st2_ = 0;  // the last time of flight's value and variance ...
+  int64_t coast_us_ = 0;                // ... how long ago (us) ...
+  int coast_frames_ = -1;               // ... in frames (-1: none to coast on)
   double lag_compensation(const FloatFusionInput& in, double dt);
 };
 
