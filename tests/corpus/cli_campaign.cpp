@@ -31,6 +31,10 @@
 #include <tuple>
 #include <vector>
 
+#if LUMAVEL_CAMPAIGN_JPEG
+#include <jpeglib.h>
+#endif
+
 #include "lumavel/host/image_io.hpp"
 #include "recording_fixture.hpp"
 
@@ -607,12 +611,60 @@ std::vector<Case> read_cases(const std::string& report) {
 
 // ---- scenario files (render) ------------------------------------------------------
 
+// A 0.1 s scenario at 40x30 whose wall shows the photo `file` (beside it).
+std::string photo_scenario(const std::string& file) {
+  return "duration_s: 0.1\n"
+         "camera: {resolution: [40, 30], rate_hz: 60}\n"
+         "trajectory:\n"
+         "  segments:\n"
+         "    - {type: straight, duration_s: 1, speed: 1}\n"
+         "scene:\n"
+         "  planes:\n"
+         "    - {from: [-3, 2], to: [5, 2], z: [-1, 1], pattern: {type: photo, file: " + file + ", size_m: [2, 2], tiling: mirror}}\n";
+}
+
+#if LUMAVEL_CAMPAIGN_JPEG
+// A w x h 8-bit gray baseline JPEG of a ramp.
+void write_jpeg(const std::string& path, int w, int h) {
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  jpeg_compress_struct c{};
+  jpeg_error_mgr e{};
+  c.err = jpeg_std_error(&e);
+  jpeg_create_compress(&c);
+  jpeg_stdio_dest(&c, f);
+  c.image_width = static_cast<JDIMENSION>(w);
+  c.image_height = static_cast<JDIMENSION>(h);
+  c.input_components = 1;
+  c.in_color_space = JCS_GRAYSCALE;
+  jpeg_set_defaults(&c);
+  jpeg_start_compress(&c, TRUE);
+  std::vector<JSAMPLE> row(static_cast<size_t>(w));
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) row[static_cast<size_t>(x)] = static_cast<JSAMPLE>((x * 7 + y * 13) ^ (x * y));
+    JSAMPROW r = row.data();
+    jpeg_write_scanlines(&c, &r, 1);
+  }
+  jpeg_finish_compress(&c);
+  jpeg_destroy_compress(&c);
+  std::fclose(f);
+}
+#endif
+
 std::vector<Case> render_cases() {
   // 4 GB (sparse), render limited to 1 GB (was: "error: std::bad_alloc", naming nothing).
-  return {{"render: a 4 GB scenario", "render", [](const std::string& d) {
+  std::vector<Case> c = {{"render: a 4 GB scenario", "render", [](const std::string& d) {
              write_text(d + "/scenario.yaml", "duration_s: 1\n");
              fs::resize_file(d + "/scenario.yaml", uintmax_t{4} << 30);
            }, Expect::kRefused, "scenario.yaml", "4294967296 bytes", {}, {}, {}, 1024}};
+#if LUMAVEL_CAMPAIGN_JPEG
+  // libjpeg's warning went to stderr and the missing part was decoded gray: exit 0.
+  c.push_back({"render: photo a truncated JPEG", "render", [](const std::string& d) {
+                 write_text(d + "/scenario.yaml", photo_scenario("photo.jpg"));
+                 write_jpeg(d + "/photo.jpg", 256, 256);
+                 truncate_file(d + "/photo.jpg", read_text(d + "/photo.jpg").size() / 2);
+               }, Expect::kRefused, "photo.jpg", "Premature end of JPEG file", {}});
+#endif
+  return c;
 }
 
 // ---- running and judging -----------------------------------------------------------

@@ -49,6 +49,13 @@ void jpeg_fail(j_common_ptr cinfo) {
   std::longjmp(err->jump, 1);
 }
 
+// A warning (level -1) is damaged data that libjpeg would decode anyway,
+// the missing part gray ('Premature end of JPEG file' on stderr, exit 0):
+// an error here. Trace messages (level >= 0) stay silent.
+void jpeg_warning_fails(j_common_ptr cinfo, int level) {
+  if (level < 0) jpeg_fail(cinfo);
+}
+
 std::vector<unsigned char> load_jpeg(const std::string& path, int& w, int& h) {
   std::unique_ptr<FILE, int (*)(FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
   if (!f) throw std::runtime_error(path + ": cannot open JPEG");
@@ -56,6 +63,7 @@ std::vector<unsigned char> load_jpeg(const std::string& path, int& w, int& h) {
   JpegError err{};
   cinfo.err = jpeg_std_error(&err.mgr);
   err.mgr.error_exit = jpeg_fail;
+  err.mgr.emit_message = jpeg_warning_fails;
   std::vector<unsigned char> px;  // declared before setjmp: no non-trivial locals after it
   if (setjmp(err.jump)) {
     jpeg_destroy_decompress(&cinfo);
