@@ -656,7 +656,23 @@ std::vector<Case> render_cases() {
              write_text(d + "/scenario.yaml", "duration_s: 1\n");
              fs::resize_file(d + "/scenario.yaml", uintmax_t{4} << 30);
            }, Expect::kRefused, "scenario.yaml", "4294967296 bytes", {}, {}, {}, 1024}};
+  // A header claiming 10^10 pixels in a few bytes, render limited to 1 GB
+  // (was: 10 GB allocated, then "error: std::bad_alloc", naming nothing).
+  c.push_back({"render: photo a PGM claiming 100000x100000", "render", [](const std::string& d) {
+                 write_text(d + "/scenario.yaml", photo_scenario("photo.pgm"));
+                 write_text(d + "/photo.pgm", "P5\n100000 100000\n255\n" + std::string(64, '\x80'));
+               }, Expect::kRefused, "photo.pgm", "100000x100000", {}, {}, {}, 1024});
 #if LUMAVEL_CAMPAIGN_JPEG
+  // 60000x16 pixels whose frame header (SOF0) says 60000 rows: 3.6 GB claimed.
+  c.push_back({"render: photo a JPEG claiming 60000x60000", "render", [](const std::string& d) {
+                 write_text(d + "/scenario.yaml", photo_scenario("photo.jpg"));
+                 write_jpeg(d + "/photo.jpg", 60000, 16);
+                 std::string b = read_text(d + "/photo.jpg");
+                 const size_t sof = b.find("\xFF\xC0");
+                 b[sof + 5] = static_cast<char>(60000 >> 8);
+                 b[sof + 6] = static_cast<char>(60000 & 0xFF);
+                 write_text(d + "/photo.jpg", b);
+               }, Expect::kRefused, "photo.jpg", "60000x60000", {}, {}, {}, 1024});
   // libjpeg's warning went to stderr and the missing part was decoded gray: exit 0.
   c.push_back({"render: photo a truncated JPEG", "render", [](const std::string& d) {
                  write_text(d + "/scenario.yaml", photo_scenario("photo.jpg"));

@@ -2,6 +2,7 @@
 // to gray), JPEG (libjpeg, decoded as grayscale) or binary PGM.
 #include <png.h>
 #include <csetjmp>
+#include <cstdint>
 #include <cstdio>
 #include <fstream>
 #include <memory>
@@ -19,11 +20,29 @@
 namespace lumavel::host::render {
 namespace {
 
+// The largest photo decoded, checked on its header before its pixels are
+// allocated: a damaged header (or a 65000x65000 JPEG of a few megabytes)
+// claimed gigabytes, then 'std::bad_alloc'. Its summed-area table takes 8
+// bytes a pixel, 32 mirrored: 1 GB at this size; the cameras see a few
+// hundred of its pixels across.
+constexpr uint64_t kMaxPhotoPixels = uint64_t{1} << 25;
+
+// "" when a photo of w x h pixels may be decoded, else why not.
+std::string why_photo_too_big(uint64_t w, uint64_t h) {
+  if (w * h <= kMaxPhotoPixels) return "";
+  return "is " + std::to_string(w) + "x" + std::to_string(h) + " pixels: a photo may have at most " +
+         std::to_string(kMaxPhotoPixels) + " pixels (8192x4096): scale it down";
+}
+
 std::vector<unsigned char> load_png(const std::string& path, int& w, int& h) {
   png_image img{};
   img.version = PNG_IMAGE_VERSION;
   if (!png_image_begin_read_from_file(&img, path.c_str()))
     throw std::runtime_error(path + ": cannot read PNG: " + img.message);
+  if (const std::string why = why_photo_too_big(img.width, img.height); !why.empty()) {
+    png_image_free(&img);
+    throw std::runtime_error(path + ": " + why);
+  }
   img.format = PNG_FORMAT_GRAY;
   std::vector<unsigned char> px(PNG_IMAGE_SIZE(img));
   if (!png_image_finish_read(&img, nullptr, px.data(), 0, nullptr)) {
@@ -65,6 +84,7 @@ std::vector<unsigned char> load_jpeg(const std::string& path, int& w, int& h) {
   err.mgr.error_exit = jpeg_fail;
   err.mgr.emit_message = jpeg_warning_fails;
   std::vector<unsigned char> px;  // declared before setjmp: no non-trivial locals after it
+  std::string too_big;
   if (setjmp(err.jump)) {
     jpeg_destroy_decompress(&cinfo);
     throw std::runtime_error(path + ": corrupt JPEG: " + err.message);
@@ -72,6 +92,11 @@ std::vector<unsigned char> load_jpeg(const std::string& path, int& w, int& h) {
   jpeg_create_decompress(&cinfo);
   jpeg_stdio_src(&cinfo, f.get());
   jpeg_read_header(&cinfo, TRUE);
+  too_big = why_photo_too_big(cinfo.image_width, cinfo.image_height);
+  if (!too_big.empty()) {
+    jpeg_destroy_decompress(&cinfo);
+    throw std::runtime_error(path + ": " + too_big);
+  }
   cinfo.out_color_space = JCS_GRAYSCALE;
   jpeg_start_decompress(&cinfo);
   w = static_cast<int>(cinfo.output_width);
@@ -99,6 +124,8 @@ std::vector<unsigned char> load_pgm(const std::string& path, int& w, int& h) {
   in >> magic >> w >> h >> maxval;
   if (!in || magic != "P5" || w <= 0 || h <= 0 || maxval != 255)
     throw std::runtime_error(path + ": not a binary 8-bit PGM");
+  if (const std::string why = why_photo_too_big(static_cast<uint64_t>(w), static_cast<uint64_t>(h)); !why.empty())
+    throw std::runtime_error(path + ": " + why);
   in.get();
   std::vector<unsigned char> px(static_cast<size_t>(w) * static_cast<size_t>(h));
   in.read(reinterpret_cast<char*>(px.data()), static_cast<std::streamsize>(px.size()));
