@@ -134,6 +134,10 @@ TEST(Cli, UsageErrorsExitTwo) {
   r = sim("reproduce --only 'no such study'");
   LONGS_EQUAL(2, r.code);
   STRCMP_CONTAINS("--only 'no such study': no study title contains it", r.err.c_str());
+  // Was: the full run, replacing docs/results.md (here it stops at the missing scenarios, exit 1).
+  r = sim("reproduce --only '' --scenarios no_such_folder --out out_only --doc out_only/results.md");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("--only: needs a part of a study title, not an empty one", r.err.c_str());
 }
 
 TEST(Cli, MissingRecordingExitsOne) {

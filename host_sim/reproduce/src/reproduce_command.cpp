@@ -327,10 +327,19 @@ void add_reproduce_command(cli::Tool& tool) {
   c->add_flag("--quick", o->quick,
               "a small subset (40x30 and below, short runs) for CI; its page\n"
               "goes to OUT/results.md, marked quick");
+  // Every title contains '' (an unset shell variable): the full run, which
+  // replaces docs/results.md after an hour, where a partial one was asked.
   c->add_option("--only", o->only,
                 "only the studies whose title contains TEXT (e.g. Lens); the\n"
                 "page then goes to OUT/results.md unless --doc is given")
-      ->type_name("TEXT");
+      ->type_name("TEXT")
+      ->check(CLI::Validator(
+          [](const std::string& v) {
+            return v.empty() ? std::string("needs a part of a study title, not an empty one (which every title "
+                                           "contains: the full run)")
+                             : std::string();
+          },
+          ""));
   c->add_option("--out", o->out,
                 "recordings and plots (default out/reproduce in the source\n"
                 "tree; with --quick out/reproduce-quick)")
