@@ -66,3 +66,21 @@ TEST(GroundTruth, InterpolatedAtFrameTimesNanOutside) {
   CHECK(std::isnan(v[6]));
   CHECK(std::isnan(true_forward_velocity({}, {1000})[0]));
 }
+
+// A 1 s hole in 200 Hz ground truth (was: the straight line from 1 to 3 m/s
+// across it taken as the truth of every frame inside, scored in E).
+TEST(GroundTruth, NoTruthInsideAHole) {
+  const double q[4] = {1, 0, 0, 0};
+  const double slow[3] = {1, 0, 0}, fast[3] = {3, 0, 0};
+  std::vector<GroundTruthSample> gt;
+  for (uint64_t t = 0; t <= 1000000000; t += 5000000) gt.push_back(sample(t, q, slow));
+  for (uint64_t t = 2000000000; t <= 3000000000; t += 5000000) gt.push_back(sample(t, q, fast));
+  const std::vector<double> v = true_forward_velocity(gt, {500000000, 1002500000, 1500000000, 2500000000});
+  DOUBLES_EQUAL(1.0, v[0], 1e-12);
+  CHECK(std::isnan(v[1]));
+  CHECK(std::isnan(v[2]));
+  DOUBLES_EQUAL(3.0, v[3], 1e-12);
+  // Up to 10 median intervals is interpolated (a few samples lost).
+  gt.erase(gt.begin() + 100, gt.begin() + 109);  // 0.5 .. 0.545 s: a 50 ms interval
+  DOUBLES_EQUAL(1.0, true_forward_velocity(gt, {520000000})[0], 1e-12);
+}

@@ -35,10 +35,25 @@ double body_forward_velocity(const GroundTruthSample& g) {
   return bx[0] * g.v[0] + bx[1] * g.v[1] + bx[2] * g.v[2];
 }
 
+namespace {
+
+// The longest interval interpolated across: kGroundTruthMaxHoleIntervals
+// times the median one (the samples' times rise strictly).
+uint64_t longest_interpolated_interval(const std::vector<GroundTruthSample>& gt) {
+  if (gt.size() < 2) return 0;
+  std::vector<uint64_t> dt(gt.size() - 1);
+  for (size_t k = 0; k + 1 < gt.size(); ++k) dt[k] = gt[k + 1].t_ns - gt[k].t_ns;
+  std::nth_element(dt.begin(), dt.begin() + static_cast<std::ptrdiff_t>(dt.size() / 2), dt.end());
+  return static_cast<uint64_t>(static_cast<double>(dt[dt.size() / 2]) * layout::kGroundTruthMaxHoleIntervals);
+}
+
+}  // namespace
+
 std::vector<double> true_forward_velocity(const std::vector<GroundTruthSample>& gt,
                                           const std::vector<uint64_t>& t_ns) {
   std::vector<double> out(t_ns.size(), std::numeric_limits<double>::quiet_NaN());
   if (gt.empty()) return out;
+  const uint64_t longest = longest_interpolated_interval(gt);
   size_t j = 0;
   for (size_t i = 0; i < t_ns.size(); ++i) {
     const uint64_t t = t_ns[i];
@@ -50,6 +65,7 @@ std::vector<double> true_forward_velocity(const std::vector<GroundTruthSample>& 
     }
     const GroundTruthSample& a = gt[j];
     const GroundTruthSample& b = gt[j + 1];
+    if (b.t_ns - a.t_ns > longest) continue;  // inside a hole of the ground truth: no truth
     const double f = static_cast<double>(t - a.t_ns) / static_cast<double>(b.t_ns - a.t_ns);
     out[i] = (1 - f) * body_forward_velocity(a) + f * body_forward_velocity(b);
   }

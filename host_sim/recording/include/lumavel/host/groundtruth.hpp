@@ -20,7 +20,8 @@ std::string why_not_unit_quaternion(double norm);
 // V_xb at one ground-truth sample (q need not be normalised; it is).
 double body_forward_velocity(const GroundTruthSample& g);
 
-// V_xb at each of `t_ns` (sorted); NaN outside the ground truth's time span.
+// V_xb at each of `t_ns` (sorted); NaN outside the ground truth's time span
+// and inside its holes (layout::kGroundTruthMaxHoleIntervals).
 std::vector<double> true_forward_velocity(const std::vector<GroundTruthSample>& gt,
                                           const std::vector<uint64_t>& t_ns);
 

@@ -39,6 +39,11 @@ constexpr double kImuMaxAccelMps2 = 100000;
 constexpr double kGroundTruthMaxPositionM = 1e7;
 constexpr double kGroundTruthMaxSpeedMps = 1000;
 constexpr double kGroundTruthQuaternionNormTolerance = 0.01;
+// Ground truth is interpolated at a frame only between two samples at most
+// this many of its median intervals apart: across a longer hole (a stretch
+// the motion capture lost) the motion is unknown, and a straight line through
+// it made up the truth of every frame inside, scored in E as if measured.
+constexpr double kGroundTruthMaxHoleIntervals = 10;
 
 inline const std::vector<std::string>& groundtruth_columns() {
   static const std::vector<std::string> v = {
