@@ -577,6 +577,9 @@ std::vector<Case> read_cases(const std::string& report) {
   // --file takes several names (was: "width=80: does not exist", no more said).
   c.push_back({"config: a setting after --file FILE", "config", [](const std::string& d) { write_text(d + "/rig.cfg", "width=40\n"); },
                Expect::kRefused, "width=80", "give the settings before --file", {}, {"width=80"}});
+  // As in a file (was: the last one taken, 'ok', exit 0).
+  c.push_back({"config: a key twice on the command line", "config", [](const std::string& d) { write_text(d + "/rig.cfg", "height=30\n"); },
+               Expect::kRefused, "command line: width=80", "width is given again (first as width=40)", {}, {"--", "width=40", "width=80"}});
   auto replay = [&](std::string name, std::function<std::string(const std::string&)> bytes, std::string where) {
     c.push_back({"replay: " + name, "replay", [bytes, report](const std::string& d) { write_text(d + "/run.hidrep", bytes(read_text(report))); },
                  Expect::kRefused, "run.hidrep", std::move(where), {}});

@@ -169,7 +169,7 @@ int set_config(Device& dev, const host::GivenSettings& given) {
 host::GivenSettings ConfigInput::read_and_check() const {
   host::GivenSettings given;
   for (const std::string& f : files) given.add_file(f);
-  for (const std::string& kv : settings) given.add(kv, "command line");
+  given.add_command_line(settings);
   host::check_settings_offline(given);
   return given;
 }

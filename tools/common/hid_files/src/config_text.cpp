@@ -354,22 +354,38 @@ void GivenSettings::add(const std::string& kv, const std::string& where) {
   }
 }
 
+// Within one source (a file, the command line) a key is given once: which of
+// two values was meant is not for lumavel to guess (files and the command
+// line after them do override earlier ones, as documented). The setting of
+// items[first..] with the last one's key, or nullptr.
+const GivenSetting* GivenSettings::given_before(size_t first) const {
+  for (size_t i = first; i + 1 < items.size(); ++i)
+    if (items[i].key == items.back().key) return &items[i];
+  return nullptr;
+}
+
 void GivenSettings::add_file(const std::string& path) {
   const std::string text = read_settings_file(path);
   const size_t first = items.size();
   for_each_setting_line(text, path, [&](size_t n, const std::string& line) {
     const std::string where = path + ":" + std::to_string(n);
     add(line, where);
-    // Within one file a key is given once: which of two values was meant is
-    // not for lumavel to guess (files and the command line after them do
-    // override earlier ones, as documented).
-    for (size_t i = first; i + 1 < items.size(); ++i)
-      if (items[i].key == items.back().key)
-        throw std::runtime_error(where + ": " + items.back().key + " is given again (first at " + items[i].where +
-                                 "): one value per key in a file");
+    if (const GivenSetting* earlier = given_before(first))
+      throw std::runtime_error(where + ": " + items.back().key + " is given again (first at " + earlier->where +
+                               "): one value per key in a file");
   });
   if (items.size() == first)
     throw std::runtime_error(shown_path(path) + ": no KEY=VALUE line (only blank lines and # comments)");
+}
+
+void GivenSettings::add_command_line(const std::vector<std::string>& settings) {
+  const size_t first = items.size();
+  for (const std::string& kv : settings) {
+    add(kv, "command line");
+    if (const GivenSetting* earlier = given_before(first))
+      throw std::runtime_error("command line: " + kv + ": " + items.back().key + " is given again (first as " +
+                               earlier->key + "=" + earlier->value + "): one value per key on the command line");
+  }
 }
 
 bool GivenSettings::has(const std::string& key) const {

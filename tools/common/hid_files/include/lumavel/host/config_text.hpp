@@ -46,8 +46,14 @@ struct GivenSettings {
   // Every setting line of FILE (as apply_settings_file reads it); refuses a
   // key given twice in the file and a file without any setting.
   void add_file(const std::string& path);
+  // The command line's KEY=VALUE settings ("command line"); refuses a key
+  // given twice among them.
+  void add_command_line(const std::vector<std::string>& settings);
   void apply_to(DeviceSetup& s) const;  // in order (seal_lens afterwards)
   bool has(const std::string& key) const;
+
+ private:
+  const GivenSetting* given_before(size_t first) const;
 };
 
 // Checks what can be checked without a device: every given key against its
