@@ -75,6 +75,7 @@ usage
 usage bogus
 usage --backend usb list
 usage stream --count many
+usage replay x.hidrep -n 0  # was: every measurement, exit 0 (0 was the default's "no limit")
 usage stream --live --no-live
 usage replay
 usage replay a b

@@ -47,9 +47,11 @@ void add_stream_options(CLI::App* c, StreamOptions& o, bool live_options) {
   c->add_option("-o,--output", o.output, "write the CSV to FILE (nothing is left behind if it\ncannot be written)")
       ->type_name("FILE")
       ->check(cli::path_name());
-  c->add_option("-n,--count", o.count, "stop after N measurements")
+  // 0 is the default's "no limit" inside: given, it asked for no measurement
+  // and got them all.
+  c->add_option("-n,--count", o.count, "stop after N measurements (default: no limit)")
       ->type_name("N")
-      ->check(cli::whole_number_in(0, 1000000000000LL));
+      ->check(cli::whole_number_in(1, 1000000000000LL));
   if (!live_options) return;
   c->add_option("--timeout", o.timeout_s, "give up after S seconds without a report (default: never)")
       ->type_name("S")
