@@ -614,7 +614,8 @@ std::vector<Case> read_cases(const std::string& report) {
 
 // ---- scenario files (render) ------------------------------------------------------
 
-// A 0.1 s scenario at 40x30 whose wall shows the photo `file` (beside it).
+// A 0.1 s scenario at 40x30 whose wall shows the photo `file` (beside it,
+// named at line 8).
 std::string photo_scenario(const std::string& file) {
   return "duration_s: 0.1\n"
          "camera: {resolution: [40, 30], rate_hz: 60}\n"
@@ -664,7 +665,7 @@ std::vector<Case> render_cases() {
   c.push_back({"render: photo a PGM claiming 100000x100000", "render", [](const std::string& d) {
                  write_text(d + "/scenario.yaml", photo_scenario("photo.pgm"));
                  write_text(d + "/photo.pgm", "P5\n100000 100000\n255\n" + std::string(64, '\x80'));
-               }, Expect::kRefused, "photo.pgm", "100000x100000", {}, {}, {}, 1024});
+               }, Expect::kRefused, "scenario.yaml:8: photo", "photo.pgm: is 100000x100000", {}, {}, {}, 1024});
 #if LUMAVEL_CAMPAIGN_JPEG
   // 60000x16 pixels whose frame header (SOF0) says 60000 rows: 3.6 GB claimed.
   c.push_back({"render: photo a JPEG claiming 60000x60000", "render", [](const std::string& d) {
@@ -675,13 +676,13 @@ std::vector<Case> render_cases() {
                  b[sof + 5] = static_cast<char>(60000 >> 8);
                  b[sof + 6] = static_cast<char>(60000 & 0xFF);
                  write_text(d + "/photo.jpg", b);
-               }, Expect::kRefused, "photo.jpg", "60000x60000", {}, {}, {}, 1024});
+               }, Expect::kRefused, "scenario.yaml:8: photo", "photo.jpg: is 60000x60000", {}, {}, {}, 1024});
   // libjpeg's warning went to stderr and the missing part was decoded gray: exit 0.
   c.push_back({"render: photo a truncated JPEG", "render", [](const std::string& d) {
                  write_text(d + "/scenario.yaml", photo_scenario("photo.jpg"));
                  write_jpeg(d + "/photo.jpg", 256, 256);
                  truncate_file(d + "/photo.jpg", read_text(d + "/photo.jpg").size() / 2);
-               }, Expect::kRefused, "photo.jpg", "Premature end of JPEG file", {}});
+               }, Expect::kRefused, "scenario.yaml:8: photo", "photo.jpg: corrupt JPEG: Premature end of JPEG file", {}});
 #endif
   return c;
 }

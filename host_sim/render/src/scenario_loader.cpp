@@ -50,12 +50,16 @@ class Reader {
     }
   }
 
-  [[noreturn]] void fail(const YAML::Node& n, const std::string& what) const {
+  // "FILE:LINE" of a node (FILE alone where yaml-cpp knows no line).
+  std::string at(const YAML::Node& n) const {
     std::ostringstream os;
     os << file_;
     if (n.IsDefined() && n.Mark().line >= 0) os << ':' << (n.Mark().line + 1);
-    os << ": " << what;
-    throw ScenarioError(os.str());
+    return os.str();
+  }
+
+  [[noreturn]] void fail(const YAML::Node& n, const std::string& what) const {
+    throw ScenarioError(at(n) + ": " + what);
   }
 
   void expect_map(const YAML::Node& n, const std::string& where) const {
@@ -335,6 +339,7 @@ void read_pattern(const Reader& r, const YAML::Node& n, PatternSpec& p,
     const YAML::Node f = n["file"];
     if (!f || !f.IsScalar()) r.fail(n, "photo pattern needs 'file'");
     p.file = resolve_path(f.Scalar(), base_dir);
+    p.file_at = r.at(f);
     if (const std::string why = why_not_a_file(p.file); !why.empty()) r.fail(f, "photo '" + p.file + "' " + why);
     if (!std::ifstream(p.file)) r.fail(f, "cannot open photo '" + p.file + "'");
     if (!n["size_m"]) r.fail(n, "photo pattern needs 'size_m: [width, height]'");

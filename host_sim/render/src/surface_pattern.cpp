@@ -62,6 +62,17 @@ class CheckerPattern : public SurfacePattern {
   double q_, mid_, half_;
 };
 
+// The photo's pixels; its errors name the scenario's line as the loader's
+// do (the photo is decoded when the scene is built, after the loader).
+std::vector<unsigned char> load_photo(const PatternSpec& spec, int& w, int& h) {
+  try {
+    return load_photo_gray(spec.file, w, h);
+  } catch (const std::runtime_error& e) {
+    if (spec.file_at.empty()) throw;
+    throw std::runtime_error(spec.file_at + ": photo " + e.what());
+  }
+}
+
 }  // namespace
 
 double SurfacePattern::mean_over(double s0, double s1, double v0, double v1) const {
@@ -152,7 +163,7 @@ std::unique_ptr<SurfacePattern> PatternFactory::make(const PatternSpec& spec) {
   for (const auto& p : photos_)
     if (p.first == key) return std::make_unique<PhotoPattern>(p.second, spec);
   int w = 0, h = 0;
-  const auto px = load_photo_gray(spec.file, w, h);
+  const auto px = load_photo(spec, w, h);
   auto table = std::make_shared<const PhotoTable>(px, w, h, spec.tiling);
   photos_.emplace_back(key, table);
   return std::make_unique<PhotoPattern>(table, spec);
@@ -168,7 +179,7 @@ std::unique_ptr<SurfacePattern> make_pattern(const PatternSpec& spec) {
       return std::make_unique<CheckerPattern>(spec);
     case PatternKind::Photo: {
       int w = 0, h = 0;
-      const auto px = load_photo_gray(spec.file, w, h);
+      const auto px = load_photo(spec, w, h);
       return std::make_unique<PhotoPattern>(std::make_shared<const PhotoTable>(px, w, h, spec.tiling), spec);
     }
   }

@@ -72,6 +72,7 @@ struct PatternSpec {
   double square_m = 0.5, low = 0, high = 255;
   // photo: file (PNG/JPEG/PGM), physical size of one copy, tiling beyond it
   std::string file;
+  std::string file_at;  // "SCENARIO:LINE" of 'file:', named in the photo's errors (decoded later)
   double width_m = 1, height_m = 1;
   Tiling tiling = Tiling::None;
   double offset_h_m = 0, offset_v_m = 0;  // photo origin on the plane
