@@ -180,3 +180,13 @@ TEST(ImageIo, WriterRefusesEmptyImagesAndBadPaths) {
   STRCMP_CONTAINS("cannot write a 0x1", error_of([&] { write_png_gray(path("z.png"), px, 0, 1); }).c_str());
   STRCMP_CONTAINS("cannot create", error_of([&] { write_png_gray(path("no/such/dir.png"), px, 1, 1); }).c_str());
 }
+
+// A full disk gives its reason (was: "write error on close" or "PNG encoder:
+// Write Error", no reason, e.g. a render filling its disk).
+TEST(ImageIo, WriterSaysTheDiskIsFull) {
+  const std::vector<uint8_t> px(640 * 480, 77);
+  const char* const full = "No space left on device";
+  STRCMP_CONTAINS(full, error_of([&] { write_png_gray("/dev/full", px.data(), 4, 4); }).c_str());  // at fclose
+  STRCMP_CONTAINS(full, error_of([&] { write_png_gray("/dev/full", px.data(), 640, 480); }).c_str());  // in libpng
+  STRCMP_CONTAINS(full, error_of([&] { write_pgm("/dev/full", px.data(), 640, 480); }).c_str());
+}

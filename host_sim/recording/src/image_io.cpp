@@ -282,13 +282,24 @@ GrayImage read_gray_image(const std::string& path, int expect_width, int expect_
   return decode(bytes.data(), bytes.size(), path, Expect{expect_width, expect_height});
 }
 
+namespace {
+
+// `what` and the system's reason (errno, cleared before the write): a full
+// disk says "No space left on device" (was: "write error on close", no reason).
+std::string with_reason(const std::string& what) {
+  return errno != 0 ? what + ": " + std::strerror(errno) : what;
+}
+
+}  // namespace
+
 void write_png_gray(const std::string& path, const uint8_t* px, int w, int h) {
   check_size(path, w, h);
   FilePtr f(std::fopen(path.c_str(), "wb"));
   if (!f) throw recording_error_in(path, std::string("cannot create: ") + std::strerror(errno));
+  errno = 0;
   const std::string problem = encode_png(f.get(), px, w, h);
-  if (!problem.empty()) throw recording_error_in(path, problem);
-  if (std::fclose(f.release()) != 0) throw recording_error_in(path, "write error on close");
+  if (!problem.empty()) throw recording_error_in(path, with_reason(problem));
+  if (std::fclose(f.release()) != 0) throw recording_error_in(path, with_reason("write error on close"));
 }
 
 void write_pgm(const std::string& path, const uint8_t* px, int w, int h) {
@@ -296,8 +307,9 @@ void write_pgm(const std::string& path, const uint8_t* px, int w, int h) {
   FilePtr f(std::fopen(path.c_str(), "wb"));
   if (!f) throw recording_error_in(path, std::string("cannot create: ") + std::strerror(errno));
   const size_t n = static_cast<size_t>(w) * static_cast<size_t>(h);
+  errno = 0;
   const bool ok = std::fprintf(f.get(), "P5\n%d %d\n255\n", w, h) > 0 && std::fwrite(px, 1, n, f.get()) == n;
-  if (!ok || std::fclose(f.release()) != 0) throw recording_error_in(path, "write error");
+  if (!ok || std::fclose(f.release()) != 0) throw recording_error_in(path, with_reason("write error"));
 }
 
 }  // namespace lumavel::host
