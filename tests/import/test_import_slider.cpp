@@ -149,6 +149,19 @@ TEST(ImportSlider, BadInputNamesTheFile) {
   }
 }
 
+// As render's OUT (was: 'afile/mav0/cam0/data: cannot create folder: Not a directory').
+TEST(ImportSlider, AFileAsTheRecordingFolderIsRefused) {
+  fixture::TempDir tmp;
+  write_dataset(tmp.path() + "/data");
+  std::ofstream(tmp.path() + "/afile") << "x\n";
+  try {
+    import_slider(tmp.path() + "/data", tmp.path() + "/afile");
+    FAIL("a file was taken as the recording folder");
+  } catch (const RecordingError& e) {
+    STRCMP_CONTAINS("afile: is a file, not a folder to write the recording in", e.what());
+  }
+}
+
 TEST(ImportSlider, CommandLineRefusesABadBaseline) {
   const char* argv[] = {"import-slider", "a", "b", "--baseline", "-1"};
   LONGS_EQUAL(2, import_slider_main(5, const_cast<char**>(argv)));

@@ -4,6 +4,7 @@
 
 #include "lumavel/host/csv_table.hpp"
 #include "lumavel/host/image_io.hpp"
+#include "lumavel/host/path_check.hpp"
 #include "lumavel/host/recording_layout.hpp"
 
 namespace lumavel::host {
@@ -26,6 +27,11 @@ void make_dirs(const std::string& dir) {
 RecordingWriter::RecordingWriter(const std::string& rec_dir, const CameraSensor& cam0, const CameraSensor& cam1,
                                  const ImuSensor& imu, ImageFormat format)
     : root_(rec_dir + "/mav0"), cam_{cam0, cam1}, format_(format) {
+  // A new folder is made; an existing one must be a folder (import-slider
+  // onto a file said 'OUT/mav0/cam0/data: cannot create folder: Not a directory').
+  if (path_present(rec_dir))
+    if (const std::string why = why_not_a_folder(rec_dir, "folder to write the recording in"); !why.empty())
+      throw recording_error_in(shown_path(rec_dir), why);
   for (int c = 0; c < 2; ++c) {
     const std::string dir = root_ + "/" + layout::kCamDir[c];
     make_dirs(dir + "/data");

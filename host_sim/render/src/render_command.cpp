@@ -9,7 +9,6 @@
 #include <string>
 
 #include "lumavel/host/cli.hpp"
-#include "lumavel/host/path_check.hpp"
 #include "lumavel/host/recording.hpp"
 #include "lumavel/host/rig.hpp"
 #include "lumavel/host/rig_settings_check.hpp"
@@ -53,9 +52,6 @@ int render_to_folder(RenderArgs& a) {
   a.opt.progress = !a.quiet;
   render::Scenario s = render::load_scenario(a.scenario);
   render::apply_overrides(s, a.ov);
-  if (path_present(a.out))  // a new folder is made; an existing one must be a folder
-    if (const std::string why = why_not_a_folder(a.out, "folder to write the recording in"); !why.empty())
-      throw std::runtime_error(shown_path(a.out) + ": " + why);
   const std::string mav0 = a.out + "/mav0";
   if (std::filesystem::exists(mav0)) {
     if (!a.force) throw std::runtime_error(mav0 + " already exists (use --force to replace it)");
