@@ -466,6 +466,18 @@ TEST(Cli, UnwritableOutputsAreRefusedBeforeTheWork) {
   LONGS_EQUAL(1, r.code);
   STRCMP_CONTAINS("lumavel-sim calibrate: error: adir (--write): is a folder, not a configuration file", r.err.c_str());
   CHECK(r.err.find("registering") == std::string::npos);
+  // reproduce's page and folders, before its studies (was: every study run, then 'cannot write');
+  // --scenarios nowhere: without the check the run stops at its first scenario instead.
+  fixture::write_text(dir.path() + "/afile", "x");
+  for (const auto& [args, said] : std::vector<std::pair<std::string, std::string>>{
+           {"--out out_r --doc adir", "adir (--doc): is a folder, not a results page"},
+           {"--out out_r --doc page", "page (--doc): has no extension"},
+           {"--out afile --doc p.md", "afile (--out): is a file, not a folder for the recordings and plots"},
+           {"--out out_r --doc afile.md", "afile (the plots of --doc): is a file, not a folder for the page's plots"}}) {
+    r = sim("reproduce --only Lens --scenarios nowhere " + args);
+    LONGS_EQUAL_TEXT(1, r.code, args.c_str());
+    STRCMP_CONTAINS(said.c_str(), r.err.c_str());
+  }
 }
 
 // Below the 160 columns calibrate is validated at, it says so, one sentence a

@@ -14,6 +14,7 @@
 
 #include "lumavel/core/status.hpp"
 #include "lumavel/host/cli.hpp"
+#include "lumavel/host/path_check.hpp"
 #include "lumavel/host/recording.hpp"
 #include "lumavel/host/render/frame_renderer.hpp"
 #include "lumavel/host/render/scenario_loader.hpp"
@@ -314,6 +315,24 @@ void resolve_paths(Options& o) {
                           "default is OUT/results.md)");
 }
 
+// What the run writes, checked before its studies rather than after them
+// (was: --doc naming a folder ran every study, an hour for the full run,
+// then 'cannot write'; --out naming a file: 'filesystem error: cannot create
+// directories: Not a directory [FILE/results]').
+void check_outputs(const Options& o) {
+  const auto refuse = [](const std::string& path, const std::string& option, const std::string& why) {
+    if (!why.empty()) throw std::runtime_error(shown_path(path) + " (" + option + "): " + why);
+  };
+  if (path_present(o.out)) refuse(o.out, "--out", why_not_a_folder(o.out, "folder for the recordings and plots"));
+  if (path_present(o.doc)) refuse(o.doc, "--doc", why_not_writable(o.doc, "results page"));
+  const fs::path doc(o.doc);
+  // Its plots go to the folder of its name less the extension: without one, the page's own name.
+  if (doc.stem() == doc.filename())
+    refuse(o.doc, "--doc", "has no extension: its plots go to the folder named as it is without one (e.g. x.md, plots in x/)");
+  const std::string plots = (doc.parent_path() / doc.stem()).string();
+  if (path_present(plots)) refuse(plots, "the plots of --doc", why_not_a_folder(plots, "folder for the page's plots"));
+}
+
 }  // namespace
 
 void add_reproduce_command(cli::Tool& tool) {
@@ -322,6 +341,7 @@ void add_reproduce_command(cli::Tool& tool) {
     if (selected_studies(*o).empty() && selected_sections(*o).empty())
       throw cli::UsageError("--only '" + o->only + "': no study title contains it");
     resolve_paths(*o);
+    check_outputs(*o);
     return run(*o);
   });
   c->add_flag("--quick", o->quick,
