@@ -116,6 +116,19 @@ TEST(HostLinks, ErrorsNameTheDeviceAndSayWhatToDo) {
   const std::string hidg = open_error("hidg:/nonexistent/hidg7");
   CHECK_TRUE(contains(hidg, "/nonexistent/hidg7"));
   CHECK_TRUE(contains(hidg, "configfs"));
+  // A regular file is no device node: written over, and uhid then hung (was: exit 0 for hidg, a hang for uhid).
+  const std::string plain = temp_path("plain.txt");
+  std::FILE* f = std::fopen(plain.c_str(), "wb");
+  std::fputs("keep me\n", f);
+  std::fclose(f);
+  CHECK_TRUE(contains(open_error("hidg:" + plain), "plain.txt: is a regular file, not a HID gadget device node"));
+  CHECK_TRUE(contains(open_error("uhid:" + plain), "plain.txt: is a regular file, not a uhid device node"));
+  f = std::fopen(plain.c_str(), "rb");
+  char kept[16] = {0};
+  CHECK_TRUE(std::fgets(kept, sizeof kept, f) != nullptr);
+  std::fclose(f);
+  STRCMP_EQUAL("keep me\n", kept);
+  std::remove(plain.c_str());
   const std::string file = open_error("file:/nonexistent/dir/x.hidrep");
   CHECK_TRUE(contains(file, "/nonexistent/dir/x.hidrep"));
   CHECK_TRUE(contains(open_error("file:"), "needs a path"));

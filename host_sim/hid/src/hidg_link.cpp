@@ -12,6 +12,7 @@
 #include <deque>
 
 #include "links.hpp"
+#include "lumavel/host/path_check.hpp"
 #include "lumavel/host/hid_link.hpp"
 #include "lumavel/protocol/reports.hpp"
 
@@ -24,6 +25,7 @@ namespace proto = lumavel::protocol;
 class HidgLink : public hal::ReportLink {
  public:
   explicit HidgLink(const std::string& path) : path_(path) {
+    refuse_if_not_a_device(path, "HID gadget device node (/dev/hidgN)");
     fd_ = ::open(path.c_str(), O_RDWR | O_CLOEXEC | O_NONBLOCK);
     if (fd_ < 0) {
       const int e = errno;

@@ -11,4 +11,10 @@ std::unique_ptr<hal::ReportLink> make_uhid_link(const std::string& path);
 std::unique_ptr<hal::ReportLink> make_hidg_link(const std::string& path);
 std::unique_ptr<hal::ReportLink> make_file_link(const std::string& path);
 
+// uhid and hidg write their events and reports to a device node: a regular
+// file there was written over (and uhid then waited for kernel events that a
+// file never gives: a hang). Throws HidLinkError naming the path and what it
+// is, before it is opened; a missing path is left to open's own message.
+void refuse_if_not_a_device(const std::string& path, const std::string& what);
+
 }  // namespace lumavel::host

@@ -1,5 +1,6 @@
 #include "links.hpp"
 #include "lumavel/host/hid_link.hpp"
+#include "lumavel/host/path_check.hpp"
 
 namespace lumavel::host {
 
@@ -21,6 +22,12 @@ LinkSpec split(const std::string& spec) {
 }
 
 }  // namespace
+
+void refuse_if_not_a_device(const std::string& path, const std::string& what) {
+  if (!path_present(path)) return;
+  if (const std::string why = why_not_a_device(path, what); !why.empty())
+    throw HidLinkError(path + ": " + why + "; a report file is --hid file:PATH");
+}
 
 std::string check_host_link_spec(const std::string& spec) {
   const LinkSpec s = split(spec);

@@ -9,6 +9,7 @@
 #include <cstring>
 
 #include "links.hpp"
+#include "lumavel/host/path_check.hpp"
 #include "lumavel/host/hid_link.hpp"
 #include "lumavel/protocol/descriptor.hpp"
 
@@ -21,6 +22,7 @@ namespace proto = lumavel::protocol;
 class UhidLink : public hal::ReportLink {
  public:
   explicit UhidLink(const std::string& path) : path_(path) {
+    refuse_if_not_a_device(path, "uhid device node (/dev/uhid)");
     fd_ = ::open(path.c_str(), O_RDWR | O_CLOEXEC | O_NONBLOCK);
     if (fd_ < 0) {
       const int e = errno;

@@ -51,6 +51,15 @@ std::string why_too_big_for_text(const std::string& path, const std::string& hol
          " bytes are read)";
 }
 
+std::string why_not_a_device(const std::string& path, const std::string& what) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) return stat_failure(errno);
+  if (S_ISCHR(st.st_mode)) return {};
+  if (S_ISREG(st.st_mode)) return "is a regular file, not a " + what;
+  if (S_ISDIR(st.st_mode)) return "is a folder, not a " + what;
+  return std::string("is ") + special_kind(st.st_mode) + ", not a " + what;
+}
+
 std::string why_not_a_file(const std::string& path, const std::string& what) {
   struct stat st {};
   if (path.empty()) return "an empty path, not a " + what;

@@ -13,6 +13,10 @@ namespace lumavel::host {
 // not a configuration file", "is a FIFO (named pipe), not a configuration
 // file", "is a loop of symbolic links".
 std::string why_not_a_file(const std::string& path, const std::string& what = "file");
+// "" when `path` (symlinks followed) is a character device node, such as
+// /dev/uhid or /dev/hidg0; otherwise the reason, e.g. "is a regular file, not
+// a uhid device node" (what = "uhid device node").
+std::string why_not_a_device(const std::string& path, const std::string& what);
 // "" when `path` is a folder; otherwise the reason, e.g. "is a file, not a
 // recording folder" (what = "recording folder").
 std::string why_not_a_folder(const std::string& path, const std::string& what = "folder");
