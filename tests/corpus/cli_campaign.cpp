@@ -666,6 +666,13 @@ std::vector<Case> render_cases() {
                  write_text(d + "/scenario.yaml", photo_scenario("photo.pgm"));
                  write_text(d + "/photo.pgm", "P5\n100000 100000\n255\n" + std::string(64, '\x80'));
                }, Expect::kRefused, "scenario.yaml:8: photo", "photo.pgm: is 100000x100000", {}, {}, {}, 1024});
+  // 3e9 frame pairs (was: 25 s counting them past INT_MAX, then 'std::bad_alloc'; 1e10 hung).
+  c.push_back({"render: 3e9 frame pairs", "render", [](const std::string& d) {
+                 write_text(d + "/scenario.yaml", photo_scenario("photo.pgm"));
+                 write_text(d + "/photo.pgm", "P5\n2 2\n255\n" + std::string(4, '\x80'));
+                 replace_in(d + "/scenario.yaml", "duration_s: 0.1", "duration_s: 300000");
+                 replace_in(d + "/scenario.yaml", "rate_hz: 60", "rate_hz: 10000");
+               }, Expect::kRefused, "scenario.yaml", "camera rate_hz = 10000 Hz for duration_s = 300000 s is 3e+09 frame pairs", {}});
 #if LUMAVEL_CAMPAIGN_JPEG
   // 60000x16 pixels whose frame header (SOF0) says 60000 rows: 3.6 GB claimed.
   c.push_back({"render: photo a JPEG claiming 60000x60000", "render", [](const std::string& d) {

@@ -514,4 +514,20 @@ void apply_overrides(Scenario& s, const Overrides& o) {
   }
 }
 
+void check_render_size(const Scenario& s) {
+  // From the stream's first sample (or scenario time 0, whichever is earlier) to the end.
+  const auto check = [&s](const char* what, const char* rate_key, double rate_hz, double from_s) {
+    const double n = std::floor((s.duration_s - std::min(from_s, 0.0)) * rate_hz) + 1;
+    if (n <= kMaxRenderSamples) return;
+    std::ostringstream os;
+    os << s.file << ": " << rate_key << " = " << rate_hz << " Hz for duration_s = " << s.duration_s << " s is "
+       << n << " " << what << ": a render makes at most " << kMaxRenderSamples
+       << " (shorten the duration or lower the rate)";
+    throw ScenarioError(os.str());
+  };
+  check("frame pairs", "camera rate_hz", s.camera.rate_hz, s.camera.first_frame_s);
+  check("gyro samples", "imu rate_hz", s.imu.rate_hz, s.imu.offset_s);
+  check("ground-truth samples", "groundtruth_rate_hz", s.groundtruth_rate_hz, 0);
+}
+
 }  // namespace lumavel::host::render

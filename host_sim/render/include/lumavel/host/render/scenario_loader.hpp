@@ -31,4 +31,13 @@ struct Overrides {
 };
 void apply_overrides(Scenario& s, const Overrides& o);
 
+// The most frame pairs, gyro samples or ground-truth samples one render makes
+// (1e7: 46 hours of 60 Hz frames, 14 of 200 Hz ground truth): the samples are
+// held in memory and the frames counted in an int.
+constexpr double kMaxRenderSamples = 1e7;
+// Throws ScenarioError "FILE: ..." when the scenario (overrides applied)
+// asks for more of any stream than kMaxRenderSamples, naming its rate and
+// duration.
+void check_render_size(const Scenario& s);
+
 }  // namespace lumavel::host::render
