@@ -38,11 +38,8 @@ uint8_t report[lumavel::protocol::kMeasurementSize];
 
 __attribute__((noipa)) void do_columns(uint16_t w, uint16_t h) {
   const lumavel::KernelBank& bank = estimator.bank();
-  const bool matching = (estimator.config().options & lumavel::kOptionPhotometricMatch) != 0;
   lumavel::column_profile(frame[0], w, h, w, bank.column_band(), profile[0]);
-  // (as Estimator::step takes them: cam1's radial sums for the match)
-  lumavel::column_profile(frame[1], w, h, w, bank.column_band(), profile[1], matching ? bank.radial_rings() : nullptr,
-                          &radial1);
+  lumavel::column_profile(frame[1], w, h, w, bank.column_band(), profile[1], estimator.cam1_rings(), &radial1);
 }
 __attribute__((noipa)) void do_kernels() {
   lumavel::stereo_measurement(profile[0], profile[1], estimator.bank(), nullptr, measurement);

@@ -131,18 +131,25 @@ void sum_rows(const uint8_t* pixels, uint16_t width, uint16_t from, uint16_t to,
   }
 }
 
+// Ring k's rows (column_profile.hpp): [from, to) and their mirrors [from2,
+// to2); the middle ring one range (from2 == to2).
+struct RingRows {
+  uint16_t from, to, from2, to2;
+};
+RingRows ring_rows(const RadialRings& r, int k) {
+  const uint16_t outer = k == 0 ? 0 : r.edge[k - 1];
+  if (k == kRadialRings - 1) return {outer, static_cast<uint16_t>(r.height - outer), 0, 0};
+  return {outer, r.edge[k], static_cast<uint16_t>(r.height - r.edge[k]), static_cast<uint16_t>(r.height - outer)};
+}
+
 // The sums ring by ring, each ring's also into sum_y2 at its weight: the
 // totals are sum_rows()'s over all rows, bit for bit.
-void sum_rows_radial(const uint8_t* pixels, uint16_t width, uint16_t height, uint16_t stride, bool aligned,
-                     const RadialRings& rings, ColumnProfile& out, RadialSums& radial) {
-  uint16_t outer = 0;  // rows from each edge already summed
+void sum_rows_radial(const uint8_t* pixels, uint16_t width, uint16_t stride, bool aligned, const RadialRings& rings,
+                     ColumnProfile& out, RadialSums& radial) {
   for (int k = 0; k < kRadialRings; ++k) {
-    const bool middle = k == kRadialRings - 1;
-    const uint16_t inner = middle ? static_cast<uint16_t>(height / 2) : rings.edge[k];
-    const uint16_t to2 = static_cast<uint16_t>(height - outer), from2 = middle ? to2 : static_cast<uint16_t>(height - inner);
-    sum_rows<true>(pixels, width, outer, middle ? from2 : inner, from2, to2, stride, aligned, out.sum,
+    const RingRows rr = ring_rows(rings, k);
+    sum_rows<true>(pixels, width, rr.from, rr.to, rr.from2, rr.to2, stride, aligned, out.sum,
                    Ring{radial.sum_y2, rings.weight_q8[k], k == 0});
-    outer = inner;
   }
 }
 
@@ -169,7 +176,7 @@ bool column_profile(const uint8_t* pixels, uint16_t width, uint16_t height, uint
                             height >= 2 && rings->height == height;
   if (radial_taken) {
     radial->rows_y2_q8 = rings->rows_y2_q8;
-    sum_rows_radial(pixels, width, height, stride, aligned, *rings, out, *radial);
+    sum_rows_radial(pixels, width, stride, aligned, *rings, out, *radial);
   } else if (band == nullptr) {
     sum_rows<false>(pixels, width, 0, height, 0, 0, stride, aligned, out.sum);
   } else {
@@ -225,23 +232,22 @@ RadialRings radial_rings(uint16_t width, uint16_t height) {
   r.height = height;
   for (int k = 0; k + 1 < kRadialRings; ++k)
     r.edge[k] = static_cast<uint16_t>((uint32_t{height} * static_cast<uint32_t>(k + 1) + kRadialRings) / (2 * kRadialRings));
-  uint16_t outer = 0;
   for (int k = 0; k < kRadialRings; ++k) {
-    const uint16_t inner = k == kRadialRings - 1 ? static_cast<uint16_t>(height / 2) : r.edge[k];
-    // The ring's rows: [outer, inner) and their mirrors (the middle row of an
-    // odd height once). 256 sum (2r + 1 - H)^2 / (n W^2), rounded (< 2^37).
+    // 256 sum (2r + 1 - H)^2 / (n W^2) over the ring's rows, rounded (< 2^37).
+    const RingRows rr = ring_rows(r, k);
     uint64_t num = 0;
     uint32_t n = 0;
-    const uint16_t last = k == kRadialRings - 1 ? static_cast<uint16_t>(height - outer) : inner;
-    for (uint16_t row = outer; row < last; ++row) {
-      const int32_t d = 2 * row + 1 - height;
-      num += static_cast<uint64_t>(d * d) * (k == kRadialRings - 1 ? 1 : 2);
-      n += k == kRadialRings - 1 ? 1 : 2;
-    }
+    const auto add = [&](uint16_t from, uint16_t to) {
+      for (uint16_t row = from; row < to; ++row, ++n) {
+        const int32_t d = 2 * row + 1 - height;
+        num += static_cast<uint64_t>(d * d);
+      }
+    };
+    add(rr.from, rr.to);
+    add(rr.from2, rr.to2);
     const uint64_t den = uint64_t{n} * width * width;
     r.weight_q8[k] = den == 0 ? 0 : static_cast<int32_t>((num * 256 + den / 2) / den);
     r.rows_y2_q8 += r.weight_q8[k] * static_cast<int32_t>(n);
-    outer = inner;
   }
   return r;
 }

@@ -87,7 +87,7 @@ Estimate Estimator::step(const FramePair& frames) {
   if (configured_) {
     column_profile(frames.cam[0], cfg_.width, cfg_.height, frames.stride, bank_.column_band(), p[0]);
     radial = column_profile(frames.cam[1], cfg_.width, cfg_.height, frames.stride, bank_.column_band(), p[1],
-                            (cfg_.options & kOptionPhotometricMatch) ? bank_.radial_rings() : nullptr, &radial1);
+                            cam1_rings(), &radial1);
   }
   return step_profiles(frames.t_ns, p[0], p[1], radial ? &radial1 : nullptr);
 }

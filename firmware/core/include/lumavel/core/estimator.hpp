@@ -58,8 +58,13 @@ class Estimator {
   // they must be of the configured width and height and band (bank().
   // column_band()). step(frames) is column_profile then this. cam1's profile
   // is mapped in place by the photometric match, with the rows' share of the
-  // vignetting where cam1's radial sums are given (bank().radial_rings()).
+  // vignetting where cam1's radial sums are given (taken with cam1_rings()).
   Estimate step_profiles(uint64_t t_ns, ColumnProfile& p0, ColumnProfile& p1, const RadialSums* radial1 = nullptr);
+  // The rings cam1's radial sums are taken with (nullptr: none: no match,
+  // a band, a line scan), as step() takes them.
+  const RadialRings* cam1_rings() const {
+    return (cfg_.options & kOptionPhotometricMatch) ? bank_.radial_rings() : nullptr;
+  }
 
   const EstimatorConfig& config() const { return cfg_; }
   const KernelBank& bank() const { return bank_; }
