@@ -4,6 +4,7 @@
 // bilinear reading is exact up to the 1/256 weights and the final rounding);
 // a barrel lens stays inside the sensor, a pincushion lens does not and says so.
 #include <cmath>
+#include <cstdio>
 #include <cstdint>
 #include <vector>
 
@@ -89,4 +90,46 @@ TEST(LensRemap, APincushionLensLeavesTheSensorAtTheCorners) {
   std::vector<uint8_t> src(kW * kH, 100), dst(kW * kH, 0);
   remap.apply(src.data(), dst.data());
   for (uint8_t b : dst) LONGS_EQUAL(100, b);
+}
+
+TEST_GROUP(LensInverse){};
+
+// The inverse at every pixel edge of a 4:3 image of 120 deg (normalised
+// corners at (+-1.73, +-1.30)) through the wide-lens scenes' barrel (k1 -0.22,
+// k2 0.05: one-to-one there). The fixed-point iteration it replaced did not
+// settle in those corners, so the renderer refused the lens.
+TEST(LensInverse, AStrongBarrelInvertsToItsCornersAtHfov120) {
+  LensDistortion lens_model;
+  lens_model.k = {-0.22, 0.05, 0, 0};
+  const double tx = std::tan(M_PI / 3), ty = tx * 3 / 4;
+  double worst = 0, least = 1e9, most = 0;
+  for (int j = 0; j <= 30; ++j)
+    for (int i = 0; i <= 40; ++i) {
+      const double xd = tx * (2.0 * i / 40 - 1), yd = ty * (2.0 * j / 30 - 1);
+      double x = 0, y = 0, rx = 0, ry = 0;
+      CHECK(lens_model.undistort(xd, yd, x, y));
+      lens_model.distort(x, y, rx, ry);
+      worst = std::fmax(worst, std::hypot(rx - xd, ry - yd));
+      const double scale = lens_radial_scale(xd, yd, x, y);
+      least = std::fmin(least, scale);
+      most = std::fmax(most, scale);
+    }
+  std::printf("\n  hfov 120, k1 -0.22, k2 0.05: distort(undistort) off by %.1e at worst; undistorted / distorted "
+              "radius %.3f to %.3f", worst, least, most);
+  CHECK(worst < 1e-12);
+  // Within the plausible range the recording check holds lenses to (rig.cpp).
+  CHECK(least >= kLensMinRadialScale && most <= kLensMaxRadialScale);
+}
+
+// A lens that folds over (k1 -3: its radius peaks at r = 1/3) has no one-to-one
+// inverse beyond the fold: refused there, inverted inside it.
+TEST(LensInverse, AFoldingLensIsRefusedBeyondItsFold) {
+  LensDistortion lens_model;
+  lens_model.k = {-3, 0, 0, 0};
+  double x = 0, y = 0;
+  CHECK(lens_model.undistort(0.1, 0.05, x, y));
+  double rx = 0, ry = 0;
+  lens_model.distort(x, y, rx, ry);
+  DOUBLES_EQUAL(0.1, rx, 1e-12);
+  CHECK_FALSE(lens_model.undistort(0.5, 0.0, x, y));  // the peak radius is 2 / (3 sqrt 3) = 0.385
 }

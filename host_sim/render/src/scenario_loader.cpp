@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <initializer_list>
@@ -159,6 +160,15 @@ void read_distortion(const Reader& r, const YAML::Node& d, CameraSpec& c) {
       double x, y;
       if (!lens.undistort(xd, yd, x, y))
         r.fail(d, "'distortion' cannot be inverted at the image edge (lens folds over)");
+      const double scale = lens_radial_scale(xd, yd, x, y);
+      if (!(scale <= kLensMaxRadialScale && scale >= kLensMinRadialScale)) {
+        char b[200];
+        std::snprintf(b, sizeof b,
+                      "'distortion' moves a point of the image to %.3g times its pinhole distance from the centre "
+                      "(a lens moves it to between %g and %g times): is a coefficient wrong?",
+                      scale, kLensMinRadialScale, kLensMaxRadialScale);
+        r.fail(d, b);
+      }
       gx[static_cast<size_t>(j * kGrid + i)] = x;
       gy[static_cast<size_t>(j * kGrid + i)] = y;
       const bool rising = (i == 0 || x > gx[static_cast<size_t>(j * kGrid + i - 1)]) &&
