@@ -243,3 +243,26 @@ TEST(LensDistortionYaml, BadCoefficientsAreRefusedWithFileAndLine) {
   }
   STRCMP_EQUAL("(accepted)", lens_error("[-0.14, 0.09, 0.001, -0.002]").c_str());
 }
+
+// k1 = 10 at hfov 90 is one-to-one (a pincushion that only grows) but squeezes
+// the view's edge to a third of its pinhole distance: a wrong coefficient, refused
+// as the recording check refuses it (lens_distortion.hpp, kLensMinRadialScale).
+TEST(LensDistortionYaml, AnImplausibleLensIsRefusedWithFileAndLine) {
+  const std::string text =
+      "duration_s: 2\n"
+      "camera:\n"
+      "  resolution: [40, 30]\n"
+      "  fov_deg: [90, 73.74]\n"
+      "  distortion: [10, 0, 0, 0]\n"
+      "trajectory:\n"
+      "  segments:\n"
+      "    - {type: straight, duration_s: 2, speed: 1}\n";
+  std::string e = "(accepted)";
+  try {
+    parse_scenario(text, "lens.yaml");
+  } catch (const ScenarioError& err) {
+    e = err.what();
+  }
+  STRCMP_CONTAINS("lens.yaml:5:", e.c_str());
+  STRCMP_CONTAINS("times its pinhole distance from the centre", e.c_str());
+}
