@@ -74,8 +74,11 @@ TEST_GROUP(LensIdentity){};
 // (26 / 45 / 97 at 80x60, 19 / 43 / 87 at 160x120). The undistorted lens's
 // extra error at 40x30 is the periphery's resolution: a barrel lens gives it
 // fewer sensor pixels per pinhole pixel. At hfov 120 the identity fails for
-// the pinhole itself (40 columns of 3 degrees against this texture; issue 11's
-// 2 % is not met there). Bounds: at hfov 90 the undistorted lens within 3
+// the pinhole itself: this texture (periods 0.23-0.71 m on a wall 2 m away)
+// is squeezed fourfold into the outer columns of a pinhole seen at 60 deg,
+// where its 0.23 m period spans 1.6 deg against columns of 1.4: aliased at
+// 40x30 (the next test: with its periods doubled the identity holds within
+// 5 %; issue 11's 2 % is not met at either field). Bounds: at hfov 90 the undistorted lens within 3
 // points of the pinhole and read as pinhole at least 1.5 times as far off;
 // at hfov 120 read as pinhole at least twice as far off as undistorted.
 TEST(LensIdentity, ABarrelLensUndistortedTurnsLikeAPinhole) {
@@ -105,4 +108,36 @@ TEST(LensIdentity, ABarrelLensUndistortedTurnsLikeAPinhole) {
       CHECK(ignored > 2 * corrected);
     }
   }
+}
+
+// The same rig at hfov 120 on a texture the 40x30 columns resolve at the
+// periphery (the periods above doubled): the identity holds for the pinhole
+// and for the barrel lens undistorted. Measured 4.12 % and 5.68 % of rms (issue
+// 11 asks 2 %: missed); bounds 6 % and 8 %. Read as pinhole: 23 %.
+TEST(LensIdentity, AtHfov120OnResolvedTextureTheIdentityHolds) {
+  test::SyntheticRig rig;
+  rig.width = kSensorW;
+  rig.height = kSensorH;
+  rig.hfov = 120 * M_PI / 180;
+  rig.vfov = 2 * std::atan(std::tan(rig.hfov / 2) * 3 / 4);
+  rig.supersample = 2;
+  rig.misalignment = 1.6 * M_PI / 180;
+  rig.texture = [](double X, double Z) {
+    return 128 + 45 * std::sin(2 * M_PI * X / 0.74) * std::cos(2 * M_PI * Z / 1.8) +
+           30 * std::sin(2 * M_PI * X / 0.46 + 1.3) + 20 * std::sin(2 * M_PI * X / 1.42 + 0.4);
+  };
+  const host::EstimatorSettings s = test::left_rig_settings(kWorkW, kWorkH, rig.hfov, rig.baseline, rig.misalignment);
+  auto bank = std::make_unique<KernelBank>();
+  build_kernel_bank(host::to_fixed_config(s), *bank);
+  const double pinhole = worst_rotation_error(rig, *bank, Lens::kNone);
+  rig.k1 = -0.22;
+  rig.k2 = 0.05;
+  const double corrected = worst_rotation_error(rig, *bank, Lens::kUndistorted);
+  const double ignored = worst_rotation_error(rig, *bank, Lens::kReadAsPinhole);
+  std::printf("\n  hfov 120, texture periods doubled, 40x30: worst error %.2f %% (pinhole), %.2f %% (barrel lens, "
+              "undistorted), %.2f %% (read as pinhole) of rms\n",
+              100 * pinhole, 100 * corrected, 100 * ignored);
+  CHECK(pinhole < 0.06);
+  CHECK(corrected < 0.08);
+  CHECK(ignored > 2 * corrected);
 }
