@@ -18,7 +18,6 @@ struct Signals {
   double a[4] = {0.05, 0.03, 0.04, 0.02}, w[4] = {6, 9, 12, 16}, p[4] = {0.3, 1.1, 2.0, 2.9};
   double f(int k, double x, double th) const { return a[k] * std::sin(w[k] * (th + kappa * x) + p[k]); }
   double r(int k, double x, double th) const { return a[k] * w[k] * std::cos(w[k] * (th + kappa * x) + p[k]); }
-  bool with_wave = true;  // false: w left 0, the turn's step not corrected
   StereoMeasurement at(double x, double th) const {
     StereoMeasurement m{};
     m.count = 4;
@@ -27,7 +26,6 @@ struct Signals {
       m.mid[k] = static_cast<ValueQ28>(std::lround(std::ldexp((f0 + f1) / 2, 28)));
       m.diff[k] = static_cast<ValueQ28>(std::lround(std::ldexp(f1 - f0, 28)));
       m.rot[k] = static_cast<SlopeQ20>(std::lround(std::ldexp((r(k, x - h / 2, th) + r(k, x + h / 2, th)) / 2, 20)));
-      if (with_wave) m.wave[k] = static_cast<WaveQ16>(std::lround(std::ldexp(w[k], 16)));
       // The phase difference the measurement reads from the cameras: w kappa h.
       m.half_phase[k] = static_cast<AngleQ28>(std::lround(std::ldexp(w[k] * kappa * h / 2, 28)));
     }
@@ -115,21 +113,6 @@ TEST(Observer, RotationIsRemovedWithTheGyro) {
   const Run r = simulate(sig, 0.5, 0, 0.3, 0, true);
   CHECK(r.first_within_1pct >= 0 && r.first_within_1pct < 0.5);
   CHECK(r.worst_after < 0.005);
-}
-
-TEST(Observer, FastTurnLeavesNoSpuriousSpeed) {
-  // 1.5 rad/s at 60 Hz: 0.025 rad a frame, w dtheta up to 0.4 rad on the
-  // 16 /rad kernel, where the trapezoid of R over-reads the turn by about
-  // (w dtheta)^2 / 12 = 1.3 %: of a rotation term worth 3 m/s (omega / |kappa|).
-  Signals sig;
-  const Run on = simulate(sig, 0.5, 0, 1.5, 0, true);
-  sig.with_wave = false;
-  const Run off = simulate(sig, 0.5, 0, 1.5, 0, true);
-  std::printf("\n  1.5 rad/s: mean error %.4f m/s with the turn's step, %.4f m/s without", on.mean_after,
-              off.mean_after);
-  CHECK(std::fabs(off.mean_after) > 0.005);  // the error is real
-  CHECK(std::fabs(on.mean_after) < 0.0005);
-  CHECK(on.worst_after < 0.005);
 }
 
 TEST(Observer, TracksASlowRampWithTheExpectedLag) {

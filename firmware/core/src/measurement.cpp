@@ -103,13 +103,11 @@ constexpr int64_t kSigmaW2MinQ24 = fx::q_of(params::kSigmaW2Min, 24);
 constexpr int64_t kSigmaW2MaxQ24 = fx::q_of(params::kSigmaW2Max, 24);
 static_assert(kSigmaW2MinQ24 > 0 && kSigmaW2MaxQ24 < (int64_t{1} << 30), "the root below needs u in (0, 2^30)");
 
-// Half the phase difference between the cameras of kernel k (see measurement.hpp),
-// and the frequency w it reads (Q16 /rad) in *wave.
+// Half the phase difference between the cameras of kernel k (see measurement.hpp).
 // (sigma w)^2 is clamped to [kSigmaW2Min, kSigmaW2Max] (estimator_params.hpp):
 // continuous, so that noise near w^2 = 0 cannot switch the correction.
 AngleQ28 half_phase(const CameraOutputs& c0, const CameraOutputs& c1, ValueQ28 dc0, ValueQ28 dc1,
-                    AngleQ28 sigma, uint8_t k, WaveQ16* wave) {
-  *wave = 0;
+                    AngleQ28 sigma, uint8_t k) {
   const int64_t r0 = c0.r[k], r1 = c1.r[k];  // Q20
   const int64_t rr = fx::shr_round(r0 * r0 + r1 * r1, 8);                                  // Q32
   if (rr == 0) return 0;
@@ -131,7 +129,6 @@ AngleQ28 half_phase(const CameraOutputs& c0, const CameraOutputs& c1, ValueQ28 d
   }
   const int64_t root = fx::isqrt32(static_cast<uint32_t>(u));  // sqrt(u) * 2^(12 + s2)
   const int64_t inv_w = fx::div_q(sigma, root, 8 + s2);           // Q24 rad
-  *wave = fx::div_q(root, sigma, 32 - s2);                        // w = sqrt(u) / sigma, Q16 (< 2^23)
   const int64_t a0 = clamp30(int64_t{c0.f[k]} - dc0), a1 = clamp30(int64_t{c1.f[k]} - dc1);
   const int64_t b0 = clamp30(-fx::shr_round(r0 * inv_w, 16)), b1 = clamp30(-fx::shr_round(r1 * inv_w, 16));
   int64_t re = a1 * a0 + b1 * b0, im = b1 * a0 - a1 * b0;  // Q56, |.| < 2^61
@@ -177,13 +174,8 @@ void stereo_measurement(const ColumnProfile& p0, const ColumnProfile& p1, const 
   }
   out.saturated = sat;
   out.clipped = p0.clipped + p1.clipped;
-  for (uint8_t k = 0; k < bank.count; ++k) {
-    out.wave[k] = 0;
-    if (!out.no_light)
-      out.half_phase[k] = half_phase(c0, c1, bank.dc[0][k], bank.dc[1][k], bank.sigma[k], k, &out.wave[k]);
-    else
-      out.half_phase[k] = 0;
-  }
+  for (uint8_t k = 0; k < bank.count; ++k)
+    out.half_phase[k] = out.no_light ? 0 : half_phase(c0, c1, bank.dc[0][k], bank.dc[1][k], bank.sigma[k], k);
 }
 
 }  // namespace lumavel

@@ -56,32 +56,16 @@ FracQ16 residual_ratio(const int32_t* e, const int32_t* a, uint8_t count, int32_
   return static_cast<FracQ16>(q > (int64_t{1} << fx::kFracFrac) ? (int64_t{1} << fx::kFracFrac) : q);
 }
 
-// The finite step in time (header). Over a step, a kernel's output moves by
-// its half phase step y twice: x_k d / h from the translation and w_k
-// dtheta / 2 from the turn (both in the phase of z, measurement.hpp). The
-// trapezoid means see that change as 2 y of their slope, the change itself
-// is 2 tan(y): dM y / tan(y) = d A / h + dtheta Rbar. Without the turn's
-// share a fast turn reads as a distance (a 60 deg camera spinning at
-// 1.4 rad/s at 60 Hz: -0.03 m/s, about 1 % of its rotation term).
-struct StepTerms {
-  int64_t d_mid[kMaxKernels];   // dM, Q28
-  int64_t turn[kMaxKernels];    // dtheta Rbar, Q28
-  int64_t y_turn[kMaxKernels];  // w dtheta / 2, Q28
-};
-
-// The innovation of kernel k with the step corrected at `ratio` (Q28): dM y / tan(y) - dtheta Rbar.
-int32_t corrected_innovation(const StepTerms& st, const int32_t* half, uint8_t k, int32_t ratio) {
-  bool clamped = false;  // (the innovation as measured carries the saturation flag)
-  const int64_t y = fx::shr_round(int64_t{half[k]} * ratio, fx::kValueFrac) + st.y_turn[k];
-  return clamp4(fx::shr_round(st.d_mid[k] * x_over_tan_q30(y), 30) - st.turn[k], &clamped);
-}
-
-// The ratio d / h that explains the corrected innovations: one evaluation of
-// that map at `ratio` (Q28), over the products' common denominator.
-int32_t step_corrected_ratio(const StepTerms& st, const int32_t* a, const int32_t* half, uint8_t count, int32_t ratio,
+// The finite step in time (header): the ratio d / h that explains e once each
+// kernel's innovation is scaled by y / tan(y), y = x_k d / h. One evaluation
+// of that map at `ratio` (Q28), over the products' common denominator.
+int32_t step_corrected_ratio(const int32_t* e, const int32_t* a, const int32_t* half, uint8_t count, int32_t ratio,
                              int64_t den, bool* sat) {
   int64_t num = 0;  // Q56
-  for (uint8_t k = 0; k < count; ++k) num += int64_t{corrected_innovation(st, half, k, ratio)} * a[k];
+  for (uint8_t k = 0; k < count; ++k) {
+    const int64_t y = fx::shr_round(int64_t{half[k]} * ratio, fx::kValueFrac);
+    num += fx::shr_round(int64_t{e[k]} * x_over_tan_q30(y), 30) * a[k];
+  }
   return fx::div_q(num, den, fx::kValueFrac, sat);
 }
 
@@ -89,10 +73,10 @@ int32_t step_corrected_ratio(const StepTerms& st, const int32_t* a, const int32_
 // as the ratio grows (a longer step, a stronger correction), so its iterates
 // alternate about the fixed point, which lies between the last two: the
 // extrapolation is taken only then (else the second iterate).
-int32_t solve_step_correction(const StepTerms& st, const int32_t* a, const int32_t* half, uint8_t count, int32_t r0,
+int32_t solve_step_correction(const int32_t* e, const int32_t* a, const int32_t* half, uint8_t count, int32_t r0,
                               int64_t den, bool* sat) {
-  const int32_t r1 = step_corrected_ratio(st, a, half, count, r0, den, sat);
-  const int32_t r2 = step_corrected_ratio(st, a, half, count, r1, den, sat);
+  const int32_t r1 = step_corrected_ratio(e, a, half, count, r0, den, sat);
+  const int32_t r2 = step_corrected_ratio(e, a, half, count, r1, den, sat);
   const int64_t d1 = int64_t{r1} - r0, d2 = int64_t{r2} - r1;
   if ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) {
     // |d2 - d1| > |d2|: the step d2^2 / (d2 - d1) is below |d2| (|d2| < 2^32: d2^2 < 2^64 as unsigned).
@@ -114,16 +98,12 @@ ObserverOutput VelocityObserver::update(const ObserverInput& in) {
   const uint8_t count = in.cur->count;
   int32_t s_bar[kMaxKernels], e[kMaxKernels];
   int64_t ss = 0, ss_cur = 0, ss_prev = 0;  // Q56
-  StepTerms st;
   for (uint8_t k = 0; k < count; ++k) {
-    st.d_mid[k] = int64_t{in.cur->mid[k]} - in.prev->mid[k];
+    const int64_t d_mid = int64_t{in.cur->mid[k]} - in.prev->mid[k];
     s_bar[k] = clamp4(fx::shr_round(int64_t{in.cur->diff[k]} + in.prev->diff[k], 1), &sat);
     const int64_t r_bar = fx::shr_round(int64_t{in.cur->rot[k]} + in.prev->rot[k], 1);
-    st.turn[k] = fx::shr_round(int64_t{in.dtheta} * r_bar, fx::kSlopeFrac);
-    // w dtheta / 2 with w the interval's mean: Q16 x Q28 >> 17 (|w| < 2^31, |dtheta| < 2^31).
-    st.y_turn[k] = fx::shr_round(((int64_t{in.cur->wave[k]} + in.prev->wave[k]) >> 1) * in.dtheta, fx::kWaveFrac + 1);
     // Innovation with the rotation term removed: Q28.
-    e[k] = clamp4(st.d_mid[k] - st.turn[k], &sat);
+    e[k] = clamp4(d_mid - fx::shr_round(int64_t{in.dtheta} * r_bar, fx::kSlopeFrac), &sat);
     ss += int64_t{s_bar[k]} * s_bar[k];
     const int64_t sc = clamp4(in.cur->diff[k], &sat), sp = clamp4(in.prev->diff[k], &sat);
     ss_cur += sc * sc;
@@ -156,9 +136,11 @@ ObserverOutput VelocityObserver::update(const ObserverInput& in) {
   // Distance over the interval: d = h * num / den.
   int32_t ratio = fx::div_q(num, den, fx::kValueFrac, &sat);  // Q28
   if (in.baseline_correction) {
-    ratio = solve_step_correction(st, a_used, half, count, ratio, den, &sat);
+    ratio = solve_step_correction(e, a_used, half, count, ratio, den, &sat);
     // (the residual of the model as corrected)
-    for (uint8_t k = 0; k < count; ++k) e[k] = corrected_innovation(st, half, k, ratio);
+    for (uint8_t k = 0; k < count; ++k)
+      e[k] = static_cast<int32_t>(
+          fx::shr_round(int64_t{e[k]} * x_over_tan_q30(fx::shr_round(int64_t{half[k]} * ratio, fx::kValueFrac)), 30));
   }
   const int64_t d_q24 = fx::shr_round(int64_t{ratio} * in.baseline, fx::kValueFrac);       // Q24 m
   const SpeedQ16 v_direct = fx::div_q(d_q24 * 1000000000, in.dt_ns * 256, 0, &sat);       // Q16 m/s

@@ -42,16 +42,14 @@ CameraOutputs camera_outputs(const FloatColumnProfile& p, const FloatCameraKerne
 }
 
 // Kernel k's output as a local sinusoid: omega^2 = -C R / R^2 and
-// z_i = (F_i - dc) - i R_i / omega; arg(z1 conj(z0)) = k h, halved; omega in *wave.
+// z_i = (F_i - dc) - i R_i / omega; arg(z1 conj(z0)) = k h, halved.
 double half_phase(const CameraOutputs& c0, const CameraOutputs& c1, double dc0, double dc1, double sigma,
-                  Eigen::Index k, double* wave) {
-  *wave = 0;
+                  Eigen::Index k) {
   const double rr = c0.r[k] * c0.r[k] + c1.r[k] * c1.r[k];
   if (rr <= 0) return 0;
   const double w2 = -(c0.c[k] * c0.r[k] + c1.c[k] * c1.r[k]) / rr;
   const double u = std::clamp(w2 * sigma * sigma, params::kSigmaW2Min, params::kSigmaW2Max);  // (sigma w)^2
   const double omega = std::sqrt(u) / sigma;
-  *wave = omega;
   const double a0 = c0.f[k] - dc0, b0 = -c0.r[k] / omega;
   const double a1 = c1.f[k] - dc1, b1 = -c1.r[k] / omega;
   return std::atan2(b1 * a0 - a1 * b0, a1 * a0 + b1 * b0) / 2;
@@ -81,10 +79,9 @@ FloatStereoMeasurement float_stereo_measurement(const FloatColumnProfile& p0, co
   }
   m.clipped = p0.clipped + p1.clipped;
   m.half_phase = Eigen::VectorXd::Zero(n);
-  m.wave = Eigen::VectorXd::Zero(n);
   for (Eigen::Index j = 0; j < n && !m.no_light; ++j)
-    m.half_phase[j] = half_phase(c[0], c[1], bank.cam[0].dc[j], bank.cam[1].dc[j],
-                                 bank.sigma[static_cast<size_t>(j)], j, &m.wave[j]);
+    m.half_phase[j] =
+        half_phase(c[0], c[1], bank.cam[0].dc[j], bank.cam[1].dc[j], bank.sigma[static_cast<size_t>(j)], j);
   return m;
 }
 

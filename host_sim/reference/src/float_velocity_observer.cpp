@@ -16,33 +16,21 @@ double x_over_tan(double x) {
   return std::fabs(x) > 1e-12 ? x / std::tan(x) : 1.0;
 }
 
-// The finite step in time and turn (velocity_observer.cpp): the change dM
-// over a half phase step y = x_k d / h + w_k dtheta / 2 is scaled by
-// y / tan(y), the turn's term dtheta Rbar is not.
-struct StepTerms {
-  Eigen::VectorXd d_mid, turn, y_turn;
-};
-
-// Kernel k's innovation with the step corrected at `ratio`, clamped as the core's.
-double corrected_innovation(const StepTerms& st, const Eigen::VectorXd& half, Eigen::Index k, double ratio) {
-  constexpr double kClamp = 4;
-  return std::clamp(st.d_mid[k] * x_over_tan(half[k] * ratio + st.y_turn[k]) - st.turn[k], -kClamp, kClamp);
-}
-
-// The ratio d / h that explains the corrected innovations.
-double step_corrected_ratio(const StepTerms& st, const Eigen::VectorXd& a, const Eigen::VectorXd& half, double ratio,
-                            double den) {
+// The finite step in time: the ratio d / h that explains e once each kernel's
+// innovation is scaled by y / tan(y), y = x_k d / h (velocity_observer.cpp).
+double step_corrected_ratio(const Eigen::VectorXd& e, const Eigen::VectorXd& a, const Eigen::VectorXd& half,
+                            double ratio, double den) {
   double num = 0;
-  for (Eigen::Index k = 0; k < a.size(); ++k) num += corrected_innovation(st, half, k, ratio) * a[k];
+  for (Eigen::Index k = 0; k < e.size(); ++k) num += e[k] * x_over_tan(half[k] * ratio) * a[k];
   return num / den;
 }
 
 // Its fixed point: two evaluations and Aitken's extrapolation where the
 // iterates alternate (else the second iterate), as the core.
-double solve_step_correction(const StepTerms& st, const Eigen::VectorXd& a, const Eigen::VectorXd& half, double r0,
-                             double den) {
-  const double r1 = step_corrected_ratio(st, a, half, r0, den);
-  const double r2 = step_corrected_ratio(st, a, half, r1, den);
+double solve_step_correction(const Eigen::VectorXd& e, const Eigen::VectorXd& a, const Eigen::VectorXd& half,
+                             double r0, double den) {
+  const double r1 = step_corrected_ratio(e, a, half, r0, den);
+  const double r2 = step_corrected_ratio(e, a, half, r1, den);
   const double d1 = r1 - r0, d2 = r2 - r1;
   if ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) return r2 - d2 * d2 / (d2 - d1);
   return r2;
@@ -59,9 +47,8 @@ FloatObserverOutput FloatVelocityObserver::update(const FloatObserverInput& in) 
   const FloatStereoMeasurement& prev = *in.prev;
   const Eigen::VectorXd s_bar = (cur.diff + prev.diff) / 2;
   const Eigen::VectorXd r_bar = (cur.rot + prev.rot) / 2;
-  const StepTerms st{cur.mid - prev.mid, in.dtheta * r_bar, (cur.wave + prev.wave) / 2 * (in.dtheta / 2)};
   // Innovation with the rotation term removed.
-  Eigen::VectorXd e = st.d_mid - st.turn;
+  Eigen::VectorXd e = (cur.mid - prev.mid) - in.dtheta * r_bar;
   Eigen::VectorXd a = s_bar;
   const Eigen::VectorXd half = (cur.half_phase + prev.half_phase) / 2;
   if (in.baseline_correction)
@@ -77,8 +64,8 @@ FloatObserverOutput FloatVelocityObserver::update(const FloatObserverInput& in) 
   // Distance over the interval: d = h e.A / A.A.
   double d = in.baseline * e.dot(a) / den;
   if (in.baseline_correction) {
-    d = in.baseline * solve_step_correction(st, a, half, d / in.baseline, den);
-    for (Eigen::Index k = 0; k < e.size(); ++k) e[k] = corrected_innovation(st, half, k, d / in.baseline);  // (the residual as corrected)
+    d = in.baseline * solve_step_correction(e, a, half, d / in.baseline, den);
+    for (Eigen::Index k = 0; k < e.size(); ++k) e[k] *= x_over_tan(half[k] * d / in.baseline);  // (the residual as corrected)
   }
   out.v_direct = d / in.dt;
   const double ee = e.squaredNorm();

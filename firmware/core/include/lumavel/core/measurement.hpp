@@ -34,7 +34,6 @@ struct StereoMeasurement {
   // w^2 = -C R / R^2 (C = d3F/dtheta3, derivatives of N neglected) and
   // z_i = (F_i - dc) - i R_i / w; half_phase = arg(z1 conj(z0)) / 2 = k h / 2.
   AngleQ28 half_phase[kMaxKernels];
-  WaveQ16 wave[kMaxKernels];    // that w (0 where R is 0): the observer's finite step in the turn
   ValueQ28 f[2][kMaxKernels];   // each camera's F (the time of flight compares cam0 with cam1's past)
   SlopeQ20 r[2][kMaxKernels];   // each camera's dF/dtheta
   ValueQ28 balance[kMaxKernels];  // the photometric offset subtracted from cam1's F (photometric_balance.hpp)

@@ -30,11 +30,7 @@
 // that map and Aitken's extrapolation reach its fixed point (one evaluation
 // over-corrects by half the bias again: the first d is the biased one).
 // (y from the observer's V instead gave the same figures for one evaluation,
-// but split the day soak's twin on 10 frames: it was not kept.) A turn is a
-// step too: y = x d / h + w dtheta / 2 (w the kernel's frequency, as the
-// phase reads it), and the change, not the innovation, is scaled:
-// dM y / tan(y) - dtheta Rbar = d A / h. (Spinning at 1.4 rad/s at 60 Hz, a
-// 60 deg camera read -0.03 m/s without the turn's share.)
+// but split the day soak's twin on 10 frames: it was not kept.)
 #pragma once
 #include <cstdint>
 

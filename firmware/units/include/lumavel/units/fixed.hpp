@@ -13,9 +13,6 @@
 //   PixelQ16    int32    Q15.16   [-32768, 32768) px    1.53e-5 px        intrinsics fu, cu
 //   CurvQ12     int32    Q19.12   [-524288, 524288)/rad^3 2.4e-4 /rad^3   d3F/dtheta3 (a correction term:
 //                                                                         1e-4 relative is plenty)
-//   WaveQ16     int32    Q15.16   [0, 32768) /rad       1.53e-5 /rad      a kernel output's local angular
-//                                                                         frequency w (the phase's; at most
-//                                                                         4 / sigma: 200 /rad at sigma 0.02)
 //   FracQ16     int32    Q15.16   [0, 1] used           1.53e-5           fractions and ratios: the observer's
 //                                                                         least-squares residual, weights,
 //                                                                         relative precisions
@@ -62,7 +59,6 @@ using ValueQ28 = int32_t;
 using SlopeQ20 = int32_t;
 using PixelQ16 = int32_t;
 using CurvQ12 = int32_t;
-using WaveQ16 = int32_t;
 using EdgeOffsetQ15 = int16_t;
 using ElevationScaleQ14 = uint16_t;
 using LeanQ24 = int32_t;
@@ -83,7 +79,6 @@ constexpr int kValueFrac = 28;
 constexpr int kSlopeFrac = 20;
 constexpr int kPixelFrac = 16;
 constexpr int kCurvFrac = 12;
-constexpr int kWaveFrac = 16;
 constexpr int kEdgeOffsetFrac = 15;
 constexpr int kElevationScaleFrac = 14;
 constexpr int kLeanFrac = 24;

@@ -13,7 +13,6 @@ namespace lumavel::host {
 struct FloatStereoMeasurement {
   Eigen::VectorXd mid, diff, rot;  // M = (F0 + F1) / 2, S = F1 - F0, R = mean dF/dtheta
   Eigen::VectorXd half_phase;      // x = k h / 2 per kernel, from the cameras' phases
-  Eigen::VectorXd wave;            // the frequency w each half phase reads (0 where R is 0)
   Eigen::VectorXd f[2], r[2];      // each camera's F and dF/dtheta
   Eigen::VectorXd balance;         // the photometric offset subtracted from cam1's F
   bool no_light = false;           // a normaliser was not positive
