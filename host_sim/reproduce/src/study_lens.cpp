@@ -162,7 +162,12 @@ std::string lens_table(const StudyResult& sr, std::vector<SectionTarget>& target
         "tables alone leave the part of the lens that bends each column across its rows (docs/design.md, \"Lens "
         "distortion\"). At hfov 90 the columns sum one elevation band by default (from 80 degrees; docs/design.md, "
         "\"Column profile\"): without it the pinhole itself leaves twice the spin's spurious V (0.04 m/s), the "
-        "column sums' geometry on a wide camera.\n";
+        "column sums' geometry on a wide camera. At hfov 60 the kernels are narrower in angle and the same turn "
+        "moves the image further across them in a frame: the spin's spurious V grows with the yaw rate (about "
+        "-0.03 m/s at 1.4 rad/s; in part the rotation term's trapezoid over a finite turn, docs/design.md, \"Finite "
+        "step\", measured and not taken), and on its slalom the VO, whose keypoints see the narrow view at a finer "
+        "angle, is ahead at 160x120. At hfov 120 the corrected lens stays with the undistorted camera and the VO "
+        "falls behind (the wall at grazing angles in the image's outer columns).\n";
   md << "\nPlots (fixed engine, first working size):";
   for (const CaseResult& c : sr.cases)
     if (c.engine == EngineKind::kFixed && !c.plot.empty()) md << " [" << c.c.id << "](" << c.plot << ")";
