@@ -44,14 +44,16 @@ def size_arg(text):
     return w, h
 
 
-def frames_arg(text):
-    try:
-        n = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"'{text}' is not a whole number")
-    if not 4 <= n <= 500:
-        raise argparse.ArgumentTypeError(f"{n}: 4..500 frames")
-    return n
+def bounded_int(lo, hi):
+    def parse(text):
+        try:
+            n = int(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"'{text}' is not a whole number")
+        if not lo <= n <= hi:
+            raise argparse.ArgumentTypeError(f"{n}: must be {lo}..{hi}")
+        return n
+    return parse
 
 
 def profile(qemu, machine, image, stream_name, cpu, workdir):
@@ -88,10 +90,10 @@ def main():
     ap.add_argument("--build", default="build", help="the host build folder (default: build)")
     ap.add_argument("--cpu", default="cortex-m3", choices=sorted(VARIANTS), help="core (default: cortex-m3)")
     ap.add_argument("--size", default=(40, 30), type=size_arg, help="working resolution WxH (default: 40x30)")
-    ap.add_argument("--frames", default=20, type=frames_arg,
+    ap.add_argument("--frames", default=20, type=bounded_int(4, 500),
                     help="N: the runs take N and 2N frames, 4..500 (default: 20; the log of 40x30 is about "
                          "4 MB a frame, read as it comes)")
-    ap.add_argument("--top", default=30, type=int, help="functions shown (default: 30)")
+    ap.add_argument("--top", default=30, type=bounded_int(1, 500), help="functions shown, 1..500 (default: 30)")
     a = ap.parse_args()
 
     qemu = shutil.which("qemu-system-arm")
