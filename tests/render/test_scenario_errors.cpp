@@ -198,3 +198,13 @@ TEST(ScenarioErrors, TimesThatLeaveTheFormatAreRefused) {
   STRCMP_CONTAINS("bad.yaml:5:", e.c_str());
   STRCMP_CONTAINS("first_frame_s", e.c_str());
 }
+
+// The gyro's first sample time became int64 nanoseconds: imu offset_s 1e300
+// overflowed them and the render hung stepping from the wrapped time.
+TEST(ScenarioErrors, AGyroOffsetBeyondTheRangeIsRefused) {
+  std::string e = error_of(std::string(kGood) + "imu: {offset_s: 1e300}\n");
+  STRCMP_CONTAINS("bad.yaml:14: 'offset_s' = 1e+300 is out of range [-1e+06, 1e+06]", e.c_str());
+  e = error_of(std::string(kGood) + "imu: {offset_s: -2e6}\n");
+  STRCMP_CONTAINS("bad.yaml:14: 'offset_s' = -2e+06 is out of range", e.c_str());
+  STRCMP_EQUAL("(accepted)", error_of(std::string(kGood) + "imu: {offset_s: 0.0013}\n").c_str());
+}

@@ -419,7 +419,10 @@ void read_imu(const Reader& r, const YAML::Node& n, Scenario& s) {
                           "gyro_bias_deg_s", "accel_noise_density"});
   ImuSpec& m = s.imu;
   m.rate_hz = r.num(n, "rate_hz", m.rate_hz, 1, 100000);
-  m.offset_s = r.num(n, "offset_s", m.offset_s, -kInf, kInf);
+  // Bounded as first_frame_s is: the first sample's time is rounded to int64
+  // nanoseconds, and 1e300 s overflowed it (the sample loop then stepped
+  // from the wrapped time for ever: the render hung).
+  m.offset_s = r.num(n, "offset_s", m.offset_s, -1e6, 1e6);
   m.gyro_noise_density = r.num(n, "gyro_noise_density", 0, 0, 10);
   m.gyro_random_walk = r.num(n, "gyro_random_walk", 0, 0, 10);
   m.gyro_bias_z = r.num(n, "gyro_bias_deg_s", 0, -1000, 1000) * kPi / 180.0;
