@@ -208,3 +208,16 @@ TEST(ScenarioErrors, AGyroOffsetBeyondTheRangeIsRefused) {
   STRCMP_CONTAINS("bad.yaml:14: 'offset_s' = -2e+06 is out of range", e.c_str());
   STRCMP_EQUAL("(accepted)", error_of(std::string(kGood) + "imu: {offset_s: 0.0013}\n").c_str());
 }
+
+// YAML::Load reads the first document only: a second one (after '---'), or
+// text after a '...' end marker, was ignored and the render made without it.
+TEST(ScenarioErrors, ASecondDocumentIsRefused) {
+  std::string e = error_of(std::string(kGood) + "---\nduration_s: 5\n");
+  STRCMP_CONTAINS("bad.yaml:14: a second YAML document (after '---')", e.c_str());
+  e = error_of(std::string(kGood) + "...\n# a comment\nseed: 7\n");
+  STRCMP_CONTAINS("bad.yaml:16: text after the end of the document ('...' at line 14)", e.c_str());
+  // A '---' before the content (a document start marker), a final '...' and
+  // '---' inside a quoted text stay what they are.
+  STRCMP_EQUAL("(accepted)", error_of(std::string("# a scenario\n---\n") + kGood + "...\n\n").c_str());
+  STRCMP_EQUAL("(accepted)", error_of(std::string("description: \"a\n  --- b\"\n") + kGood).c_str());
+}
