@@ -221,3 +221,21 @@ TEST(ScenarioErrors, ASecondDocumentIsRefused) {
   STRCMP_EQUAL("(accepted)", error_of(std::string("# a scenario\n---\n") + kGood + "...\n\n").c_str());
   STRCMP_EQUAL("(accepted)", error_of(std::string("description: \"a\n  --- b\"\n") + kGood).c_str());
 }
+
+// Aliases of aliases ("billion laughs"): 12 lines that expand to 9^12 values.
+// The check for repeated keys visited each of them: the render hung.
+TEST(ScenarioErrors, AliasesThatMultiplyAreRefused) {
+  std::string bomb = "a0: &a0 [x, x, x, x, x, x, x, x, x]\n";
+  for (int i = 1; i < 12; ++i) {
+    const std::string p = "*a" + std::to_string(i - 1);
+    bomb += "a" + std::to_string(i) + ": &a" + std::to_string(i) + " [" + p;
+    for (int k = 1; k < 9; ++k) bomb += ", " + p;
+    bomb += "]\n";
+  }
+  const std::string e = error_of(bomb + kGood);
+  STRCMP_CONTAINS("bad.yaml:", e.c_str());
+  STRCMP_CONTAINS(": the file's aliases (*NAME) expand it to more than 1000000 values", e.c_str());
+  // An alias used a few times is a value shared, as meant.
+  STRCMP_EQUAL("(accepted)", error_of(replace(kGood, "{type: uniform, value: 90}", "&p {type: uniform, value: 90}") +
+                                      "    - {from: [0, -2], to: [5, -2], z: [-1, 1], pattern: *p}\n").c_str());
+}

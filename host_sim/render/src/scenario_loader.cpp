@@ -33,7 +33,17 @@ class Reader {
 
   // A key given twice in one map would be read once and the other value
   // ignored, silently: refused, at every level (as sensor.yaml's keys are).
-  void check_unique_keys(const YAML::Node& n) const {
+  //
+  // `budget`: the values left to visit. An alias (*NAME) is the anchored node
+  // itself, visited again at each use: a dozen lines of aliases of aliases
+  // ("billion laughs") made 3e10 visits, and the render hung. Without
+  // aliases a file holds at most one value per character, so more visits
+  // than that (or a million) can only be aliases multiplying.
+  void check_unique_keys(const YAML::Node& n, size_t& budget, size_t limit) const {
+    if (budget == 0)
+      fail(n, "the file's aliases (*NAME) expand it to more than " + std::to_string(limit) +
+                  " values: a scenario holds a few hundred");
+    --budget;
     if (n.IsMap()) {
       std::map<std::string, int> seen;
       for (const auto& kv : n) {
@@ -44,10 +54,10 @@ class Reader {
           fail(kv.first, "key '" + key + "' is given again (first at line " + std::to_string(at->second) +
                              "): one value per key");
         seen.emplace(key, line);
-        check_unique_keys(kv.second);
+        check_unique_keys(kv.second, budget, limit);
       }
     } else if (n.IsSequence()) {
-      for (const auto& e : n) check_unique_keys(e);
+      for (const auto& e : n) check_unique_keys(e, budget, limit);
     }
   }
 
@@ -487,7 +497,9 @@ Scenario parse_scenario(const std::string& text, const std::string& name,
     throw ScenarioError(name + ":" + std::to_string(root.Mark().line + 1) +
                         ": a scenario must be a YAML map of KEY: VALUE lines (host_sim/scenarios/README.md)");
   try {
-    r.check_unique_keys(root);
+    const size_t limit = std::max<size_t>(1000000, text.size());
+    size_t budget = limit;
+    r.check_unique_keys(root, budget, limit);
     r.check_keys(root, "scenario", {"description", "duration_s", "seed", "start_ns",
                                     "groundtruth_rate_hz", "camera", "trajectory", "scene",
                                     "lighting", "imu", "drops"});
