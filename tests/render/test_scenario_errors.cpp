@@ -239,3 +239,15 @@ TEST(ScenarioErrors, AliasesThatMultiplyAreRefused) {
   STRCMP_EQUAL("(accepted)", error_of(replace(kGood, "{type: uniform, value: 90}", "&p {type: uniform, value: 90}") +
                                       "    - {from: [0, -2], to: [5, -2], z: [-1, 1], pattern: *p}\n").c_str());
 }
+
+// A list or a map where a key or a text belongs: yaml-cpp's conversion threw
+// and the message was "bad.yaml:1: bad conversion", naming no key, no rule.
+TEST(ScenarioErrors, AListWhereTextOrAKeyBelongsIsNamed) {
+  std::string e = error_of(std::string("description: [a, b]\n") + kGood);
+  STRCMP_CONTAINS("bad.yaml:1: 'description' must be text, not a list or a map", e.c_str());
+  e = error_of(replace(kGood, "    - from: [0, 2]\n", "    - name: {a: 1}\n      from: [0, 2]\n"));
+  STRCMP_CONTAINS("bad.yaml:10: 'name' must be text, not a list or a map", e.c_str());
+  e = error_of(replace(kGood, "  rate_hz: 60\n", "  [rate_hz]: 60\n"));
+  STRCMP_CONTAINS("bad.yaml:4: a key in 'camera' must be a word, not a list or a map", e.c_str());
+  STRCMP_EQUAL("(accepted)", error_of(std::string("description:\n") + kGood).c_str());
+}

@@ -81,7 +81,9 @@ class Reader {
                   std::initializer_list<const char*> allowed) const {
     expect_map(map, where);
     for (const auto& kv : map) {
-      const std::string key = kv.first.as<std::string>();
+      // (as<std::string>() of a list or map key threw yaml-cpp's bare "bad conversion")
+      if (!kv.first.IsScalar()) fail(kv.first, "a key in '" + where + "' must be a word, not a list or a map");
+      const std::string key = kv.first.Scalar();
       bool ok = false;
       for (const char* a : allowed) ok = ok || key == a;
       if (!ok) {
@@ -144,6 +146,15 @@ class Reader {
       list += std::string(list.empty() ? "" : ", ") + a;
     }
     fail(n, std::string("'") + key + "' = '" + v + "' is not one of: " + list);
+  }
+
+  // A text value (description, a plane's name): a list or a map there threw
+  // yaml-cpp's bare "bad conversion", naming neither the key nor the rule.
+  // An empty value ("description:") stays accepted, as empty text.
+  std::string text(const YAML::Node& n, const std::string& key) const {
+    if (n.IsNull()) return "";
+    if (!n.IsScalar()) fail(n, "'" + key + "' must be text, not a list or a map");
+    return n.Scalar();
   }
 
   const std::string& file() const { return file_; }
@@ -389,7 +400,7 @@ void read_scene(const Reader& r, const YAML::Node& n, Scenario& s, const std::st
   for (const auto& e : planes) {
     r.check_keys(e, "plane", {"name", "from", "to", "z", "pattern"});
     PlaneSpec p;
-    p.name = e["name"] ? e["name"].as<std::string>() : "plane" + std::to_string(s.planes.size());
+    p.name = e["name"] ? r.text(e["name"], "name") : "plane" + std::to_string(s.planes.size());
     if (!e["from"] || !e["to"] || !e["z"]) r.fail(e, "plane needs 'from', 'to' and 'z'");
     const auto a = r.list(e["from"], "from", 2, -1e6, 1e6);
     const auto b = r.list(e["to"], "to", 2, -1e6, 1e6);
@@ -505,7 +516,7 @@ Scenario parse_scenario(const std::string& text, const std::string& name,
                                     "lighting", "imu", "drops"});
     Scenario s;
     s.file = name;
-    if (root["description"]) s.description = root["description"].as<std::string>();
+    if (root["description"]) s.description = r.text(root["description"], "description");
     s.duration_s = r.req_num(root, "duration_s", 1e-3, 1e6, "scenario");
     const double seed = r.num(root, "seed", 1, 0, 9007199254740992.0);
     if (seed != std::floor(seed)) r.fail(root["seed"], "'seed' must be a whole number");
