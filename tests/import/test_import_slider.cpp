@@ -162,6 +162,23 @@ TEST(ImportSlider, AFileAsTheRecordingFolderIsRefused) {
   }
 }
 
+// The frames are read as they are written: a damaged late frame left the
+// pairs before it as a recording, which 'run' then refused blaming the gyro
+// file the import had not written ("imu0/data.csv:2: no gyro samples").
+TEST(ImportSlider, AFailedImportLeavesNoRecording) {
+  fixture::TempDir tmp;
+  const std::string d = tmp.path() + "/data";
+  write_dataset(d);
+  fixture::write_text(d + "/images/frame_00000008.png", fixture::read_text(d + "/images/frame_00000008.png").substr(0, 70));
+  try {
+    import_slider(d, tmp.path() + "/rec");
+    FAIL("a truncated frame was accepted");
+  } catch (const RecordingError& e) {
+    STRCMP_CONTAINS((d + "/images.txt:9: ").c_str(), e.what());
+  }
+  CHECK_FALSE(std::filesystem::exists(tmp.path() + "/rec/mav0"));
+}
+
 TEST(ImportSlider, CommandLineRefusesABadBaseline) {
   const char* argv[] = {"import-slider", "a", "b", "--baseline", "-1"};
   LONGS_EQUAL(2, import_slider_main(5, const_cast<char**>(argv)));

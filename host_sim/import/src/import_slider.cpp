@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <memory>
 #include <stdexcept>
 #include <vector>
@@ -12,6 +13,7 @@
 #include "lumavel/host/cli.hpp"
 #include "lumavel/host/groundtruth.hpp"
 #include "lumavel/host/image_io.hpp"
+#include "lumavel/host/path_check.hpp"
 #include "lumavel/host/recording_writer.hpp"
 #include "lumavel/host/rig.hpp"
 #include "lumavel/host/sensor_yaml.hpp"
@@ -148,33 +150,49 @@ ImportSliderSummary import_slider(const std::string& data_dir, const std::string
   cam0.comment = "slider camera (Event-Camera Dataset), imported by lumavel-sim import-slider";
   cam1.comment = "cam0's frames time-shifted to the slider position x + " + std::to_string(h) +
                  " m (pixelwise blend of the two bracketing frames, weighted by position)";
-  RecordingWriter out(out_rec, cam0, cam1, imu);
+  // A frame found damaged while writing (the images are read lazily) left the
+  // pairs before it as a recording, and 'run' on it then blamed the gyro file
+  // this import had not finished ("imu0/data.csv:2: no gyro samples"). A
+  // mav0 this import made is removed on any failure (one that was there is
+  // not this import's to delete).
+  const std::string mav0 = out_rec + "/mav0";
+  const bool made_here = !path_present(mav0);
+  const auto write = [&] {
+    RecordingWriter out(out_rec, cam0, cam1, imu);
 
-  std::vector<uint8_t> shifted(ref.px.size());
-  for (const ShiftedPair& p : pairs) {
-    const GrayImage& a = image(p.before);
-    const GrayImage& b = image(p.before + 1);
-    blend_gray(a.px.data(), b.px.data(), p.w, shifted.size(), shifted.data());
-    out.add_frame_pair(to_ns(d.frames[p.cam0].t), image(p.cam0).px.data(), shifted.data());
-    sum.max_blend_gap_m = std::max(sum.max_blend_gap_m, x[p.before + 1] - x[p.before]);
-  }
-  sum.pairs = pairs.size();
+    std::vector<uint8_t> shifted(ref.px.size());
+    for (const ShiftedPair& p : pairs) {
+      const GrayImage& a = image(p.before);
+      const GrayImage& b = image(p.before + 1);
+      blend_gray(a.px.data(), b.px.data(), p.w, shifted.size(), shifted.data());
+      out.add_frame_pair(to_ns(d.frames[p.cam0].t), image(p.cam0).px.data(), shifted.data());
+      sum.max_blend_gap_m = std::max(sum.max_blend_gap_m, x[p.before + 1] - x[p.before]);
+    }
+    sum.pairs = pairs.size();
 
-  // Zero gyro (and gravity only) at imu_rate_hz, covering every frame.
-  const uint64_t period = to_ns(1.0 / options.imu_rate_hz);
-  const uint64_t t_first = to_ns(d.frames[pairs.front().cam0].t);
-  const uint64_t t_last = to_ns(d.frames[pairs.back().cam0].t);
-  const double zero[3] = {0, 0, 0}, gravity[3] = {0, 0, 9.81};
-  for (uint64_t t = t_first / period * period; t < t_last + period; t += period) {
-    out.add_imu(t, zero, gravity);
-    ++sum.imu_samples;
-  }
+    // Zero gyro (and gravity only) at imu_rate_hz, covering every frame.
+    const uint64_t period = to_ns(1.0 / options.imu_rate_hz);
+    const uint64_t t_first = to_ns(d.frames[pairs.front().cam0].t);
+    const uint64_t t_last = to_ns(d.frames[pairs.back().cam0].t);
+    const double zero[3] = {0, 0, 0}, gravity[3] = {0, 0, 9.81};
+    for (uint64_t t = t_first / period * period; t < t_last + period; t += period) {
+      out.add_imu(t, zero, gravity);
+      ++sum.imu_samples;
+    }
 
-  for (const GroundTruthSample& g : truth) {
-    out.add_groundtruth(g);
-    ++sum.groundtruth_samples;
+    for (const GroundTruthSample& g : truth) {
+      out.add_groundtruth(g);
+      ++sum.groundtruth_samples;
+    }
+    out.finish();
+  };
+  try {
+    write();
+  } catch (...) {
+    std::error_code ignored;
+    if (made_here) std::filesystem::remove_all(mav0, ignored);
+    throw;
   }
-  out.finish();
   return sum;
 }
 
