@@ -179,6 +179,32 @@ TEST(ImportSlider, AFailedImportLeavesNoRecording) {
   CHECK_FALSE(std::filesystem::exists(tmp.path() + "/rec/mav0"));
 }
 
+// Written over, an earlier recording kept its frames beside the new ones
+// (120 old PNGs in cam0/data with 10 new) and was lost without a word.
+TEST(ImportSlider, AnExistingRecordingIsRefusedUnlessForced) {
+  fixture::TempDir tmp;
+  write_dataset(tmp.path() + "/data");
+  fixture::write_recording(tmp.path() + "/rec");
+  const auto pngs = [&] {
+    size_t n = 0;
+    for (const auto& e : std::filesystem::directory_iterator(tmp.path() + "/rec/mav0/cam0/data")) n += e.is_regular_file();
+    return n;
+  };
+  const size_t before = pngs();
+  try {
+    import_slider(tmp.path() + "/data", tmp.path() + "/rec");
+    FAIL("an existing recording was written over");
+  } catch (const RecordingError& e) {
+    STRCMP_CONTAINS("rec/mav0: already exists (use --force to replace it)", e.what());
+  }
+  LONGS_EQUAL(before, pngs());  // left as it was
+  ImportSliderOptions o;
+  o.force = true;
+  const ImportSliderSummary s = import_slider(tmp.path() + "/data", tmp.path() + "/rec", o);
+  LONGS_EQUAL(s.pairs, pngs());  // replaced whole: none of the old frames left
+  LONGS_EQUAL(s.pairs, load_recording(tmp.path() + "/rec").frames.size());
+}
+
 TEST(ImportSlider, CommandLineRefusesABadBaseline) {
   const char* argv[] = {"import-slider", "a", "b", "--baseline", "-1"};
   LONGS_EQUAL(2, import_slider_main(5, const_cast<char**>(argv)));

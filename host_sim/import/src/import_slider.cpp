@@ -150,13 +150,22 @@ ImportSliderSummary import_slider(const std::string& data_dir, const std::string
   cam0.comment = "slider camera (Event-Camera Dataset), imported by lumavel-sim import-slider";
   cam1.comment = "cam0's frames time-shifted to the slider position x + " + std::to_string(h) +
                  " m (pixelwise blend of the two bracketing frames, weighted by position)";
+  // Written over, an earlier recording kept its frames beside the new ones in
+  // cam0/data and cam1/data and was lost without a word: refused, as render
+  // refuses it, unless --force (then it is replaced whole).
+  const std::string mav0 = out_rec + "/mav0";
+  bool made_here = !path_present(mav0);
+  std::error_code not_a_folder;
+  if (!made_here && std::filesystem::is_directory(out_rec, not_a_folder)) {
+    if (!options.force) throw recording_error_in(shown_path(mav0), "already exists (use --force to replace it)");
+    std::filesystem::remove_all(mav0);
+    made_here = true;
+  }
   // A frame found damaged while writing (the images are read lazily) left the
   // pairs before it as a recording, and 'run' on it then blamed the gyro file
   // this import had not finished ("imu0/data.csv:2: no gyro samples"). A
-  // mav0 this import made is removed on any failure (one that was there is
-  // not this import's to delete).
-  const std::string mav0 = out_rec + "/mav0";
-  const bool made_here = !path_present(mav0);
+  // mav0 this import made is removed on any failure (one under OUT_REC when
+  // that is not a folder is the writer's to refuse, not this import's to delete).
   const auto write = [&] {
     RecordingWriter out(out_rec, cam0, cam1, imu);
 
@@ -227,6 +236,7 @@ void add_import_slider_command(cli::Tool& tool) {
   std::snprintf(baseline_help, sizeof baseline_help, "h in metres, cam1 ahead of cam0, (0, 1] (default %g)",
                 kDefaultSliderBaseline);
   c->add_option("--baseline", a->o.baseline, baseline_help)->type_name("H")->check(cli::positive_number_up_to(1));
+  c->add_flag("--force", a->o.force, "replace an existing OUT_REC/mav0");
 }
 
 int import_slider_main(int argc, char** argv) {

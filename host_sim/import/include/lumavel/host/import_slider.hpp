@@ -19,6 +19,7 @@ constexpr double kDefaultSliderBaseline = 0.02;
 struct ImportSliderOptions {
   double baseline = kDefaultSliderBaseline;  // m, cam1 ahead of cam0
   double imu_rate_hz = 100;
+  bool force = false;  // replace an existing OUT/mav0 (else it is refused)
 };
 
 struct ImportSliderSummary {
