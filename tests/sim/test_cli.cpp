@@ -473,7 +473,10 @@ TEST(Cli, UnwritableOutputsAreRefusedBeforeTheWork) {
            {"--out out_r --doc adir", "adir (--doc): is a folder, not a results page"},
            {"--out out_r --doc page", "page (--doc): has no extension"},
            {"--out afile --doc p.md", "afile (--out): is a file, not a folder for the recordings and plots"},
-           {"--out out_r --doc afile.md", "afile (the plots of --doc): is a file, not a folder for the page's plots"}}) {
+           {"--out out_r --doc afile.md", "afile (the plots of --doc): is a file, not a folder for the page's plots"},
+           // (was: its section skipped as "not there", exit 0; only the default may be missing)
+           {"--out out_r --doc p.md --slider-data nowhere", "nowhere (--slider-data): does not exist"},
+           {"--out out_r --doc p.md --slider-data afile", "afile (--slider-data): is a file, not a dataset folder"}}) {
     r = sim("reproduce --only Lens --scenarios nowhere " + args);
     LONGS_EQUAL_TEXT(1, r.code, args.c_str());
     STRCMP_CONTAINS(said.c_str(), r.err.c_str());

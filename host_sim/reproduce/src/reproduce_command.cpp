@@ -340,6 +340,12 @@ void add_reproduce_command(cli::Tool& tool) {
   CLI::App* c = tool.command("reproduce", kDescription, [o] {
     if (selected_studies(*o).empty() && selected_sections(*o).empty())
       throw cli::UsageError("--only '" + o->only + "': no study title contains it");
+    // Only the default dataset may be missing: a --slider-data that is no
+    // folder (a typo) skipped its section as "not there", exit 0.
+    if (!o->slider_data.empty())
+      if (const std::string why = why_not_a_folder(o->slider_data, "dataset folder (images.txt, groundtruth.txt, calib.txt)");
+          !why.empty())
+        throw std::runtime_error(shown_path(o->slider_data) + " (--slider-data): " + why);
     resolve_paths(*o);
     check_outputs(*o);
     return run(*o);
@@ -379,7 +385,7 @@ void add_reproduce_command(cli::Tool& tool) {
       ->check(cli::whole_number_in(1, 64));
   c->add_option("--slider-data", o->slider_data,
                 "the slider_depth dataset (default ../shared/data/slider_depth\n"
-                "next to the source tree; its section is skipped when it is\n"
+                "next to the source tree; its section is skipped when that is\n"
                 "missing)")
       ->type_name("DIR")
       ->check(cli::path_name());
