@@ -46,6 +46,38 @@ TEST(Calibrate, NoAnswerOutsideTheSearchRange) {
   std::filesystem::remove_all(dir);
 }
 
+// A --max-shift below one step of the registration grid searched +-0 steps,
+// and one below the misalignment found every good match at the end of the
+// search: no frame registered, and the error blamed the scene ("does the
+// rig move past a textured scene?").
+TEST(Calibrate, ASearchNarrowerThanOneStepIsRefused) {
+  const std::string dir = rendered("robustness_wall.yaml", 0.5, "narrow");
+  CalibrationOptions o;
+  o.max_shift_deg = 0.01;
+  std::string error = "(no error)";
+  try {
+    calibrate_misalignment(load_recording(dir), o);
+  } catch (const std::runtime_error& e) {
+    error = e.what();
+  }
+  std::filesystem::remove_all(dir);
+  STRCMP_CONTAINS("--max-shift 0.01 deg is less than one step of the registration grid (", error.c_str());
+  STRCMP_CONTAINS(" deg at 160 columns): nothing would be searched", error.c_str());
+  // A few steps, less than the rig's misalignment (1.6 deg): every good match
+  // lies at the end of the search.
+  const std::string misaligned = rendered("paper_sim_misaligned.yaml", 2, "narrow_misaligned");
+  o.max_shift_deg = 0.05;
+  error = "(no error)";
+  try {
+    calibrate_misalignment(load_recording(misaligned), o);
+  } catch (const std::runtime_error& e) {
+    error = e.what();
+  }
+  std::filesystem::remove_all(misaligned);
+  STRCMP_CONTAINS("frames matched well only at the end of the +-0.05 deg searched (--max-shift): is the misalignment larger?",
+                  error.c_str());
+}
+
 // At 40 columns the paper's rig misaligned by -3 deg calibrated to -2.64 deg
 // with a quoted 0.04 deg (8 sigma off) and calibrate suggested sending it.
 // The uncertainty now carries the registration's resolution floor: the truth

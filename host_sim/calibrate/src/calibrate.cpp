@@ -271,6 +271,13 @@ Calibration calibrate_misalignment(const Recording& rec, const CalibrationOption
                          " deg shift search");
   g.n = static_cast<int>((hi - lo) / g.step);
   const int max_shift = static_cast<int>(shift_steps);
+  // Below one step of the grid the search was +-0 steps: nothing registered,
+  // and the error blamed the scene ("does the rig move past a textured scene?").
+  if (max_shift < 1)
+    throw std::runtime_error("--max-shift " + deg(opt.max_shift_deg * M_PI / 180) +
+                             " deg is less than one step of the registration grid (" + deg(g.step) + " deg at " +
+                             std::to_string(width) + " columns): nothing would be searched; give at least " +
+                             deg(g.step) + " deg, and more than the misalignment");
 
   // Profiles and gyro headings at every frame.
   FileStereoCamera camera(rec, width, height);
@@ -323,6 +330,7 @@ Calibration calibrate_misalignment(const Recording& rec, const CalibrationOption
   out.width = width;
   out.height = height;
   std::vector<FrameShifts> shifts;
+  size_t at_edge = 0;  // frames whose best match, a good one, lay at the end of the search
   for (size_t i = 0; i + 1 < p0.size(); ++i) {
     if (opt.progress) opt.progress("registering", i, p0.size() - 1);
     // Standing still: every lag matches; such frames say nothing.
@@ -345,6 +353,7 @@ Calibration calibrate_misalignment(const Recording& rec, const CalibrationOption
       if (bwd[l].corr > best_corr) best_corr = bwd[l].corr, lag = l, dir = -1;
     }
     const std::vector<Match>& m = dir > 0 ? fwd : bwd;
+    if (lag != 0 && !m[lag].interior && best_corr >= opt.min_correlation) ++at_edge;
     if (lag == 0 || !m[lag].interior || best_corr < opt.min_correlation) continue;
     // Lags around the best one, on both sides of the place.
     const Profile& before = dir > 0 ? p1[i] : p0[i];
@@ -382,6 +391,13 @@ Calibration calibrate_misalignment(const Recording& rec, const CalibrationOption
   }
   if (complete.size() >= kMinCompleteFrames) shifts.swap(complete);
   const std::vector<double> samples = zero_translation_samples(shifts, kShapeHalfSpan);
+  // A misalignment beyond --max-shift puts every best match at the end of the
+  // search, where it does not count: that was said as "does the rig move past
+  // a textured scene?", blaming the scene for a search too narrow.
+  if (samples.empty() && at_edge > 0)
+    throw std::runtime_error("no frame pair registered: " + std::to_string(at_edge) + " of " +
+                             std::to_string(out.candidates) + " frames matched well only at the end of the +-" +
+                             deg(opt.max_shift_deg * M_PI / 180) + " deg searched (--max-shift): is the misalignment larger?");
   if (samples.empty())
     throw std::runtime_error("no frame pair registered (does the rig move past a textured scene?)");
   out.misalignment = median(samples);
