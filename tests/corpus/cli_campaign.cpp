@@ -673,6 +673,17 @@ std::vector<Case> render_cases() {
                  replace_in(d + "/scenario.yaml", "duration_s: 0.1", "duration_s: 300000");
                  replace_in(d + "/scenario.yaml", "rate_hz: 60", "rate_hz: 10000");
                }, Expect::kRefused, "scenario.yaml", "camera rate_hz = 10000 Hz for duration_s = 300000 s is 3e+09 frame pairs", {}});
+  // netpbm allows '#' comments in the header, and GIMP writes one (was:
+  // refused, "photo.pgm: not a binary 8-bit PGM").
+  c.push_back({"render: photo a PGM with a comment (as GIMP writes)", "render", [](const std::string& d) {
+                 write_text(d + "/scenario.yaml", photo_scenario("photo.pgm"));
+                 write_text(d + "/photo.pgm", "P5\n# CREATOR: GIMP PNM Filter Version 1.1\n2 2\n255\n" + std::string("\x10\x80\x40\xF0", 4));
+               }, Expect::kSame, "", "", {}});
+  // (was: "photo.pgm: not a binary 8-bit PGM", not saying what in it is not)
+  c.push_back({"render: photo a 16-bit PGM", "render", [](const std::string& d) {
+                 write_text(d + "/scenario.yaml", photo_scenario("photo.pgm"));
+                 write_text(d + "/photo.pgm", "P5\n2 2\n65535\n" + std::string(8, '\x80'));
+               }, Expect::kRefused, "scenario.yaml:8: photo", "photo.pgm: PGM header: maxval 65535: only 8-bit PGMs (maxval 255) are read", {}});
 #if LUMAVEL_CAMPAIGN_JPEG
   // 60000x16 pixels whose frame header (SOF0) says 60000 rows: 3.6 GB claimed.
   c.push_back({"render: photo a JPEG claiming 60000x60000", "render", [](const std::string& d) {

@@ -117,16 +117,52 @@ std::vector<unsigned char> load_jpeg(const std::string& path, int&, int&) {
 }
 #endif
 
+// The PGM header's next number, after whitespace and '#' comments (to the end
+// of their line): netpbm allows them, and GIMP writes "# Created by GIMP".
+// Read with `>>`, such a header was refused as "not a binary 8-bit PGM". The
+// byte after the number is taken: for maxval, the one whitespace byte before
+// the raster. -1: no number there; -2: one beyond 10^9.
+long long pgm_number(std::istream& in) {
+  int c = in.get();
+  for (;;) {
+    if (c == '#')
+      while (c != EOF && c != '\n' && c != '\r') c = in.get();
+    if (c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f')
+      c = in.get();
+    else if (c != '#')
+      break;
+  }
+  if (c < '0' || c > '9') return -1;
+  long long v = 0;
+  for (; c >= '0' && c <= '9'; c = in.get()) {
+    v = v * 10 + (c - '0');
+    if (v > 1000000000) return -2;
+  }
+  if (c == '#') in.unget();  // a comment right after a number, before the raster
+  else if (!(c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f')) return -1;
+  return v;
+}
+
 std::vector<unsigned char> load_pgm(const std::string& path, int& w, int& h) {
   std::ifstream in(path, std::ios::binary);
-  std::string magic;
-  int maxval = 0;
-  in >> magic >> w >> h >> maxval;
-  if (!in || magic != "P5" || w <= 0 || h <= 0 || maxval != 255)
-    throw std::runtime_error(path + ": not a binary 8-bit PGM");
-  if (const std::string why = why_photo_too_big(static_cast<uint64_t>(w), static_cast<uint64_t>(h)); !why.empty())
+  in.ignore(2);  // "P5", checked by the caller
+  const char* names[3] = {"width", "height", "maxval"};
+  long long v[3] = {};
+  for (int i = 0; i < 3; ++i) {
+    v[i] = pgm_number(in);
+    if (v[i] == -1) throw std::runtime_error(path + ": PGM header: no " + names[i] + " (a decimal number) where it belongs");
+    if (v[i] == -2) throw std::runtime_error(path + ": PGM header: the " + std::string(names[i]) + " is beyond 10^9");
+  }
+  if (v[2] != 255)
+    throw std::runtime_error(path + ": PGM header: maxval " + std::to_string(v[2]) +
+                             ": only 8-bit PGMs (maxval 255) are read");
+  if (const std::string why = why_photo_too_big(static_cast<uint64_t>(v[0]), static_cast<uint64_t>(v[1])); !why.empty())
     throw std::runtime_error(path + ": " + why);
-  in.get();
+  if (v[0] == 0 || v[1] == 0)
+    throw std::runtime_error(path + ": PGM header: " + std::to_string(v[0]) + "x" + std::to_string(v[1]) +
+                             " pixels: width and height must be 1 or more");
+  w = static_cast<int>(v[0]);
+  h = static_cast<int>(v[1]);
   std::vector<unsigned char> px(static_cast<size_t>(w) * static_cast<size_t>(h));
   in.read(reinterpret_cast<char*>(px.data()), static_cast<std::streamsize>(px.size()));
   if (!in) throw std::runtime_error(path + ": truncated PGM");
