@@ -203,6 +203,16 @@ TEST(ImportSlider, AnExistingRecordingIsRefusedUnlessForced) {
   const ImportSliderSummary s = import_slider(tmp.path() + "/data", tmp.path() + "/rec", o);
   LONGS_EQUAL(s.pairs, pngs());  // replaced whole: none of the old frames left
   LONGS_EQUAL(s.pairs, load_recording(tmp.path() + "/rec").frames.size());
+  // --force does not delete the dataset it reads (it did, then: 'images.txt:2: ...: does not exist').
+  std::filesystem::rename(tmp.path() + "/data", tmp.path() + "/rec/mav0/data");
+  try {
+    import_slider(tmp.path() + "/rec/mav0/data", tmp.path() + "/rec", o);
+    FAIL("the dataset inside OUT_REC/mav0 was taken");
+  } catch (const RecordingError& e) {
+    STRCMP_CONTAINS("rec/mav0/data: lies inside ", e.what());
+    STRCMP_CONTAINS("rec/mav0, which --force would delete before reading it", e.what());
+  }
+  CHECK(std::filesystem::exists(tmp.path() + "/rec/mav0/data/images.txt"));
 }
 
 TEST(ImportSlider, CommandLineRefusesABadBaseline) {
