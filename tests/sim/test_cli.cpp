@@ -708,6 +708,32 @@ TEST(Cli, AnEmptyPathIsRefusedNamingTheOption) {
   CHECK(!exists(dir.path() + "/rec_estimates.svg"));
 }
 
+// --force deleted the scenario and its photo with the old recording when they
+// lay inside it: the scenario silently (exit 0), the photo, then "photo does
+// not exist". Now refused, nothing deleted.
+TEST(Cli, RenderForceKeepsWhatTheRenderReads) {
+  std::filesystem::create_directories(dir.path() + "/out/mav0");
+  fixture::write_text(dir.path() + "/out/mav0/photo.pgm", "P5\n2 2\n255\n" + std::string("\x10\x80\x40\xF0", 4));
+  const std::string scenario =
+      "duration_s: 0.1\ncamera: {resolution: [40, 30], rate_hz: 60}\ntrajectory:\n  segments:\n"
+      "    - {type: straight, duration_s: 1, speed: 1}\nscene:\n  planes:\n"
+      "    - {from: [-3, 2], to: [5, 2], z: [-1, 1], pattern: {type: photo, file: PHOTO, size_m: [2, 2], tiling: mirror}}\n";
+  const auto with_photo = [&scenario](const std::string& file) {
+    std::string t = scenario;
+    return t.replace(t.find("PHOTO"), 5, file);
+  };
+  fixture::write_text(dir.path() + "/photo.yaml", with_photo("out/mav0/photo.pgm"));
+  Outcome r = sim("render photo.yaml out --force -q");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("out/mav0/photo.pgm: lies inside out/mav0, which --force would delete: the render reads it", r.err.c_str());
+  CHECK(exists(dir.path() + "/out/mav0/photo.pgm"));
+  fixture::write_text(dir.path() + "/out/mav0/s.yaml", with_photo("photo.pgm"));
+  r = sim("render out/mav0/s.yaml out --force -q");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("out/mav0/s.yaml: lies inside out/mav0, which --force would delete", r.err.c_str());
+  CHECK(exists(dir.path() + "/out/mav0/s.yaml"));
+}
+
 // A scenario that loads but renders a recording run refuses (here no
 // baseline) fails the render with run's reason, naming the sensor.yaml.
 TEST(Cli, RenderRefusesARecordingThatRunWouldRefuse) {

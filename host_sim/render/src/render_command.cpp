@@ -1,12 +1,14 @@
 // Command line of `lumavel-sim render`.
 #include "lumavel/host/render_command.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <stdexcept>
 #include <exception>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "lumavel/host/cli.hpp"
 #include "lumavel/host/recording.hpp"
@@ -47,6 +49,14 @@ void check_runnable(const std::string& out) {
   }
 }
 
+// True when `path` is `folder` or lies inside it (symlinks resolved).
+bool lies_inside(const std::string& path, const std::string& folder) {
+  std::error_code ec;
+  const std::filesystem::path f = std::filesystem::weakly_canonical(folder, ec),
+                              p = std::filesystem::weakly_canonical(path, ec);
+  return std::mismatch(f.begin(), f.end(), p.begin(), p.end()).first == f.end();
+}
+
 int render_to_folder(RenderArgs& a) {
   if (!a.resolution.empty()) cli::parse_size(a.resolution, a.ov.width, a.ov.height);
   a.opt.progress = !a.quiet;
@@ -57,6 +67,17 @@ int render_to_folder(RenderArgs& a) {
   const std::string mav0 = a.out + "/mav0";
   if (std::filesystem::exists(mav0)) {
     if (!a.force) throw std::runtime_error(mav0 + " already exists (use --force to replace it)");
+    // --force deleted the scenario and its photos with the old recording when
+    // they lay inside it: the scenario silently (already read), a photo with
+    // "photo does not exist" (decoded later). What the render reads is kept.
+    std::vector<std::string> reads = {a.scenario};
+    for (const render::PlaneSpec& p : s.planes)
+      if (p.pattern.kind == render::PatternKind::Photo) reads.push_back(p.pattern.file);
+    for (const std::string& r : reads)
+      if (lies_inside(r, mav0))
+        throw std::runtime_error(r + ": lies inside " + mav0 +
+                                 ", which --force would delete: the render reads it; write the recording to "
+                                 "another folder");
     std::filesystem::remove_all(mav0);
   }
   const render::RenderSummary r = render::render_recording(s, a.out, a.opt);
