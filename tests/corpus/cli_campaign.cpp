@@ -463,6 +463,10 @@ std::vector<Case> recording_cases(const std::string& base) {
   c.push_back({"path with spaces", "run", [](const std::string& r) { fs::rename(r, r + " with spaces"); fs::create_directory(r); }, Expect::kSame, "", "", [](const std::string& r) { return r + " with spaces"; }});
   c.push_back({"symlink loop as REC", "run", [](const std::string& r) { fs::create_symlink(r + "/loop_b", r + "/loop_a"); fs::create_symlink(r + "/loop_a", r + "/loop_b"); }, Expect::kRefused, "loop_a", "loop", [](const std::string& r) { return r + "/loop_a"; }});
 
+  // --help is output too (was: exit 0, the help lost, nothing said).
+  c.push_back({"--help to a full standard output", "run", nullptr, Expect::kRefused, "lumavel-sim run: error: standard output",
+               "write error", {}, {"--help"}, "/dev/full"});
+
   // Beyond the clock's range the deadline overflowed: it ended at once, exit 0.
   c.push_back({"--hid-linger 1e300", "run", nullptr, Expect::kRefused, "--hid-linger", "1e300", {},
                {"--hid", "file:/dev/null", "--hid-linger", "1e300"}});
@@ -600,6 +604,9 @@ std::vector<Case> read_cases(const std::string& report) {
                Expect::kRefused, "standard output", "write error", {}, {"-o", "-"}, "/dev/full"});
   c.push_back({"config: 'ok' to a full standard output", "config", [](const std::string& d) { write_text(d + "/rig.cfg", "width=40\n"); },
                Expect::kRefused, "standard output", "write error", {}, {}, "/dev/full"});
+  // --help is output too (was: exit 0, the help lost, nothing said).
+  c.push_back({"config: --help to a full standard output", "config", [](const std::string& d) { write_text(d + "/rig.cfg", "width=40\n"); },
+               Expect::kRefused, "lumavel-read config check: error: standard output", "write error", {}, {"--help"}, "/dev/full"});
   // The CSV written over the report file being read (was: exit 0, the report file gone).
   for (const char* to : {"run.hidrep", "link.csv"}) {
     c.push_back({std::string("replay: -o onto the report file") + (to[0] == 'l' ? " (a symlink to it)" : ""), "replay",

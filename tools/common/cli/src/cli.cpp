@@ -109,7 +109,15 @@ int Tool::run(int argc, const char* const* argv) {
   try {
     app_.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help, --version
-    return app_.exit(e, std::cout, std::cerr) == 0 ? kExitOk : kExitUsage;
+    const int status = app_.exit(e, std::cout, std::cerr) == 0 ? kExitOk : kExitUsage;
+    // As a command's output: help lost on its way (a full disk, a closed
+    // standard output) was exit 0, nothing said.
+    std::cout.flush();
+    if (!std::cout || std::fflush(stdout) != 0 || std::ferror(stdout)) {
+      std::fprintf(stderr, "%s: error: standard output: write error\n", path_of(deepest()).c_str());
+      return kExitFailure;
+    }
+    return status;
   } catch (const CLI::ParseError& e) {
     const CLI::App* at = deepest();
     const std::string who = path_of(at);
