@@ -160,10 +160,7 @@ ImportSliderSummary import_slider(const std::string& data_dir, const std::string
     if (!options.force) throw recording_error_in(shown_path(mav0), "already exists (use --force to replace it)");
     // Nor may --force delete what it is about to read: the images are read
     // while the recording is written, after the old one is gone.
-    std::error_code ec;
-    const std::filesystem::path old_rec = std::filesystem::weakly_canonical(mav0, ec),
-                                data = std::filesystem::weakly_canonical(data_dir, ec);
-    if (std::mismatch(old_rec.begin(), old_rec.end(), data.begin(), data.end()).first == old_rec.end())
+    if (lies_inside(data_dir, mav0))
       throw recording_error_in(shown_path(data_dir), "lies inside " + shown_path(mav0) +
                                                          ", which --force would delete before reading it: write the "
                                                          "recording to another folder");

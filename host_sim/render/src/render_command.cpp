@@ -1,7 +1,6 @@
 // Command line of `lumavel-sim render`.
 #include "lumavel/host/render_command.hpp"
 
-#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <stdexcept>
@@ -11,6 +10,7 @@
 #include <vector>
 
 #include "lumavel/host/cli.hpp"
+#include "lumavel/host/path_check.hpp"
 #include "lumavel/host/recording.hpp"
 #include "lumavel/host/rig.hpp"
 #include "lumavel/host/rig_settings_check.hpp"
@@ -47,14 +47,6 @@ void check_runnable(const std::string& out) {
   } catch (const std::exception& e) {
     throw std::runtime_error(out + "/mav0 was written, but lumavel-sim run refuses it: " + e.what());
   }
-}
-
-// True when `path` is `folder` or lies inside it (symlinks resolved).
-bool lies_inside(const std::string& path, const std::string& folder) {
-  std::error_code ec;
-  const std::filesystem::path f = std::filesystem::weakly_canonical(folder, ec),
-                              p = std::filesystem::weakly_canonical(path, ec);
-  return std::mismatch(f.begin(), f.end(), p.begin(), p.end()).first == f.end();
 }
 
 int render_to_folder(RenderArgs& a) {

@@ -3,6 +3,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <climits>
 #include <cstring>
@@ -96,6 +97,13 @@ bool path_present(const std::string& path) {
   struct stat st {};
   if (::stat(path.c_str(), &st) == 0) return true;
   return errno != ENOENT;
+}
+
+bool lies_inside(const std::string& path, const std::string& folder) {
+  std::error_code ec;
+  const std::filesystem::path f = std::filesystem::weakly_canonical(folder, ec),
+                              p = std::filesystem::weakly_canonical(path, ec);
+  return std::mismatch(f.begin(), f.end(), p.begin(), p.end()).first == f.end();
 }
 
 std::string shown_path(const std::string& path) {

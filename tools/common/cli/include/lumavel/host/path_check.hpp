@@ -38,6 +38,9 @@ std::string why_too_big_for_text(const std::string& path, const std::string& hol
 // False only when nothing is at `path` (an optional input that is absent):
 // anything else there, readable or not, is for why_not_a_file to judge.
 bool path_present(const std::string& path);
+// True when `path` is `folder` or lies inside it, symlinks resolved (what a
+// remove_all of `folder` would take with it).
+bool lies_inside(const std::string& path, const std::string& folder);
 // "" when the file name `name` (from a table) has no NUL byte; otherwise
 // "'a.png' is followed by a NUL byte inside the name (character 6): a damaged
 // row" - the system would read the name up to the NUL and open a.png.
