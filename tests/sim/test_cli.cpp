@@ -453,6 +453,11 @@ TEST(Cli, UnwritableOutputsAreRefusedBeforeTheWork) {
   LONGS_EQUAL(1, r.code);
   STRCMP_CONTAINS("nowhere/p.svg (--plot): cannot be created: its folder nowhere does not exist", r.err.c_str());
   CHECK(!exists(dir.path() + "/est.csv"));
+  // The plot is an SVG drawing: another extension is refused before the run (it was written as SVG, unsaid).
+  r = sim("run rec -o est.csv --plot p.png");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("p.png (--plot): the plot is an SVG drawing, not .png: give a name ending in .svg", r.err.c_str());
+  CHECK(!exists(dir.path() + "/est.csv") && !exists(dir.path() + "/p.png"));
   r = sim("run rec -o est.csv --hid file:r.hidrep --hid-config adir");
   LONGS_EQUAL(1, r.code);
   STRCMP_CONTAINS("adir (--hid-config): is a folder, not a configuration file", r.err.c_str());

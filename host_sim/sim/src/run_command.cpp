@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <csignal>
+#include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -277,6 +278,15 @@ int run(const RunArgs& a) {
           throw cli::UsageError(shown_path(outs[i].first) + ": " + outs[j].second + " and " + outs[i].second +
                                 " name the same file");
     }
+  }
+  // The plot is an SVG drawing: under another extension (plot.png) a viewer
+  // would read it as what it is not; a name without one is taken as given.
+  if (const std::string ext = std::filesystem::path(a.plot).extension().string(); !ext.empty()) {
+    std::string lower = ext;
+    for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (lower != ".svg")
+      throw std::runtime_error(shown_path(a.plot) + " (--plot): the plot is an SVG drawing, not " + ext +
+                               ": give a name ending in .svg (rsvg-convert -o PLOT.png PLOT.svg makes a PNG of it)");
   }
   const WorkingSize fallback = default_working_size(rec);
   options.size = {a.width > 0 ? a.width : fallback.width, a.height > 0 ? a.height : fallback.height};
