@@ -40,11 +40,11 @@ bool LensDistortion::undistort(double xd, double yd, double& x, double& y) const
   };
   double err = miss(x, y);
   for (int i = 0; i < kMaxIterations && err >= kSettled; ++i) {
-    double a, b, c, d;
-    jacobian(x, y, a, b, c, d);
-    const double det = a * d - b * c;
+    double a, b, d;
+    jacobian(x, y, a, b, d);
+    const double det = a * d - b * b;
     if (!(det > 0)) return false;  // folded here: no one-to-one inverse
-    const double sx = (d * ex - b * ey) / det, sy = (a * ey - c * ex) / det;
+    const double sx = (d * ex - b * ey) / det, sy = (a * ey - b * ex) / det;
     double t = 1;
     const double ox = x, oy = y, old = err, oex = ex, oey = ey;
     for (int halvings = 0; halvings < kMaxHalvings; ++halvings, t /= 2) {
@@ -63,18 +63,21 @@ bool LensDistortion::undistort(double xd, double yd, double& x, double& y) const
     }
   }
   if (!std::isfinite(x) || !std::isfinite(y)) return false;
-  double a, b, c, d;
-  jacobian(x, y, a, b, c, d);
-  return a * d - b * c > 0 && err < kInverseTolerance;
+  return one_to_one_at(x, y) && err < kInverseTolerance;
 }
 
-void LensDistortion::jacobian(double x, double y, double& dxx, double& dxy, double& dyx, double& dyy) const {
+bool LensDistortion::one_to_one_at(double x, double y) const {
+  double a, b, d;
+  jacobian(x, y, a, b, d);
+  return a * d - b * b > 0;
+}
+
+void LensDistortion::jacobian(double x, double y, double& dxx, double& dxy, double& dyy) const {
   const double r2 = x * x + y * y;
   const double radial = 1 + k[0] * r2 + k[1] * r2 * r2;
   const double slope = k[0] + 2 * k[1] * r2;  // d radial / d r2
   dxx = radial + 2 * x * x * slope + 2 * k[2] * y + 6 * k[3] * x;
   dxy = 2 * x * y * slope + 2 * k[2] * x + 2 * k[3] * y;
-  dyx = 2 * x * y * slope + 2 * k[2] * x + 2 * k[3] * y;
   dyy = radial + 2 * y * y * slope + 6 * k[2] * y + 2 * k[3] * x;
 }
 

@@ -113,13 +113,11 @@ void check_lens_invertible(const CameraSensor& c, const std::string& yaml_path) 
                       (std::isfinite(miss) ? "the nearest misses by " + g(miss) + " px"
                                            : std::string("the inverse diverges")) +
                       "); is a coefficient wrong?");
-      double jxx, jxy, jyx, jyy;
-      lens.jacobian(x, y, jxx, jxy, jyx, jyy);
-      if (!(jxx * jyy - jxy * jyx > 0))
+      if (!lens.one_to_one_at(x, y))
         throw refused("the lens model cannot be inverted one-to-one at pixel (" + g(u) + ", " + g(v) +
                       "): it folds the image over there; is a coefficient wrong?");
       const double scale = lens_radial_scale(xd, yd, x, y);
-      if (!(scale <= kLensMaxRadialScale && scale >= kLensMinRadialScale))
+      if (!plausible_lens_scale(scale))
         throw refused("the lens model cannot be inverted plausibly at pixel (" + g(u) + ", " + g(v) +
                       "): it moves the pixel to " + g(scale) + " times its pinhole distance from the centre (a lens "
                       "moves it to between " + g(kLensMinRadialScale) + " and " + g(kLensMaxRadialScale) +

@@ -182,7 +182,7 @@ void read_distortion(const Reader& r, const YAML::Node& d, CameraSpec& c) {
       if (!lens.undistort(xd, yd, x, y))
         r.fail(d, "'distortion' cannot be inverted at the image edge (lens folds over)");
       const double scale = lens_radial_scale(xd, yd, x, y);
-      if (!(scale <= kLensMaxRadialScale && scale >= kLensMinRadialScale)) {
+      if (!plausible_lens_scale(scale)) {
         char b[200];
         std::snprintf(b, sizeof b,
                       "'distortion' moves a point of the image to %.3g times its pinhole distance from the centre "

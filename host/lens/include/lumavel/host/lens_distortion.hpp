@@ -18,6 +18,10 @@ constexpr double kLensMinRadialScale = 0.5, kLensMaxRadialScale = 4;
 
 // Undistorted (x, y) of distorted (xd, yd) over the distances from the centre (1 at the centre).
 double lens_radial_scale(double xd, double yd, double x, double y);
+// Whether that ratio is one a lens gives (within the bounds above).
+inline bool plausible_lens_scale(double scale) {
+  return scale >= kLensMinRadialScale && scale <= kLensMaxRadialScale;
+}
 
 struct LensDistortion {
   std::array<double, 4> k{};  // k1, k2, p1, p2
@@ -28,8 +32,13 @@ struct LensDistortion {
   // Distorted -> undistorted by Newton's method; false where no point maps
   // there one-to-one (the lens folds over, or the inverse diverges).
   bool undistort(double xd, double yd, double& x, double& y) const;
-  // d(xd, yd) / d(x, y) at an undistorted point.
-  void jacobian(double x, double y, double& dxx, double& dxy, double& dyx, double& dyy) const;
+  // Whether the model is one-to-one around the undistorted point (x, y): its
+  // Jacobian's determinant is positive (else the lens folds the image there).
+  bool one_to_one_at(double x, double y) const;
+
+ private:
+  // d(xd, yd) / d(x, y) at an undistorted point (symmetric: d xd/dy = d yd/dx).
+  void jacobian(double x, double y, double& dxx, double& dxy, double& dyy) const;
 };
 
 }  // namespace lumavel::host
