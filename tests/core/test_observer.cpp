@@ -144,3 +144,31 @@ TEST(Observer, HoldsVWithoutTexture) {
   LONGS_EQUAL(0, o.v);
   CHECK_TRUE(o.converging);
 }
+
+TEST(Observer, AStartIsAveragedNotDecayedFrom) {
+  // The first interval after a start reads 2 cm too far (one bad value, e.g.
+  // an exposure step); V is then 0.5 m/s at 60 Hz. Until tau has passed the
+  // observer averages the values since the start, the first weighed as
+  // 1 + kObserverStartPrior tau / dt of them: after m more frames its error is
+  // that share, w / (w + m), not the (tau / (tau + dt))^m of a first value
+  // decayed from.
+  Signals sig;
+  const double dt = 1.0 / 60, v = 0.5, tau = 0.1, bad = 0.02;
+  VelocityObserver obs;
+  StereoMeasurement prev = sig.at(-bad, 0), cur{};
+  double x = 0;
+  const double w = 1 + params::kObserverStartPrior * tau / dt;
+  for (int m = 0; m <= 5; ++m) {
+    x += v * dt;
+    cur = sig.at(x, 0);
+    ObserverInput in{&prev, &cur, static_cast<int64_t>(std::llround(dt * 1e9)), 0,
+                     static_cast<LengthQ24>(std::lround(std::ldexp(sig.h, 24))), 100000, 1 << 16, true};
+    const ObserverOutput o = obs.update(in);
+    const double err = std::ldexp(o.v, -16) - v, first_err = bad / dt;
+    const double expected = first_err * w / (w + m), decayed = first_err * std::pow(tau / (tau + dt), m);
+    if (m == 5) std::printf("\n  a bad first value after 5 frames: error %.3f m/s (averaged %.3f, decayed %.3f)", err,
+                            expected, decayed);
+    DOUBLES_EQUAL(expected, err, 0.03 * first_err);
+    prev = cur;
+  }
+}

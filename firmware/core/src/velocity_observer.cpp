@@ -151,8 +151,8 @@ ObserverOutput VelocityObserver::update(const ObserverInput& in) {
     started_ = true;
     since_start_ns_ = 0;
   } else {
-    v_ = observer_step(v_, v_direct, fx::div_trunc(in.dt_ns, 1000), in.tau_us, &sat);
     since_start_ns_ += in.dt_ns;
+    v_ = observer_step(v_, v_direct, fx::div_trunc(in.dt_ns, 1000), time_constant_us(in.tau_us), &sat);
   }
   out.v = v_;
   out.updated = true;

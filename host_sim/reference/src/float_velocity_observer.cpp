@@ -76,8 +76,8 @@ FloatObserverOutput FloatVelocityObserver::update(const FloatObserverInput& in) 
     since_start_ns_ = 0;
   } else {
     // Implicit Euler of dV/dt = (v_direct - V) / tau.
-    v_ = observer_step(v_, out.v_direct, in.dt, in.tau);
     since_start_ns_ += in.dt_ns;
+    v_ = observer_step(v_, out.v_direct, in.dt, time_constant(in.tau));
   }
   out.v = v_;
   out.updated = true;

@@ -10,7 +10,9 @@
 // and the V-hat update of eq. 9 with l2 normalised by |dF/dx|^2 becomes
 //   V <- V + g (d/dt - V),  g = dt / (tau + dt)          (implicit Euler)
 // so V's error decays with time constant tau whatever the texture contrast,
-// resolution or frame rate. The observer starts from the first direct value.
+// resolution or frame rate. The observer starts from the first direct value
+// and, until tau has passed, averages the values that came since: the time
+// constant is then the time since the start plus kObserverStartPrior tau.
 //
 // Finite-baseline correction: for texture of spatial frequency k the mean
 // M = (F0 + F1)/2 is attenuated by cos(kh/2) while S = F1 - F0 is 2 sin(kh/2)/k
@@ -89,6 +91,13 @@ class VelocityObserver {
     return o;
   }
   SpeedQ16 v() const { return v_; }
+  // The time constant of the last update (us, >= 1): tau_us, or less while
+  // the start is younger than tau (kObserverStartPrior). The fusion's lag
+  // correction takes the same.
+  uint32_t time_constant_us(uint32_t tau_us) const {
+    const int64_t young_us = fx::div_trunc(since_start_ns_, 1000) + ((int64_t{tau_us} * kStartPriorQ16) >> 16);
+    return static_cast<uint32_t>(young_us < 1 ? 1 : young_us < tau_us ? young_us : tau_us);
+  }
   // Not started, or started less than kConvergingTaus (3) time constants ago.
   bool converging_now() const {
     return !started_ || since_start_ns_ < ((kConvergingTausQ4 * tau_ns_) >> 4);
@@ -98,6 +107,7 @@ class VelocityObserver {
   // The converging time in time constants, Q4 (exact for whole and half values).
   static constexpr int64_t kConvergingTausQ4 = fx::q_of(params::kConvergingTaus, 4);
   static_assert(fx::q_of(params::kConvergingTaus, 30) == kConvergingTausQ4 << 26, "exact in Q4");
+  static constexpr int64_t kStartPriorQ16 = fx::q_of(params::kObserverStartPrior, 16);
   SpeedQ16 v_ = 0;
   bool started_ = false;
   int64_t since_start_ns_ = 0;

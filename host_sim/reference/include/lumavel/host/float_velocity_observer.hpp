@@ -2,8 +2,10 @@
 // header for the model, the least squares over kernels and the
 // finite-baseline correction).
 #pragma once
+#include <algorithm>
 #include <cstdint>
 
+#include "lumavel/core/estimator_params.hpp"
 #include "lumavel/host/float_measurement.hpp"
 
 namespace lumavel::host {
@@ -49,6 +51,12 @@ class FloatVelocityObserver {
     return o;
   }
   double v() const { return v_; }
+  // The time constant of the last update (s): tau, or less while the start is
+  // younger than tau (the core's time_constant_us(), its time in whole us).
+  double time_constant(double tau) const {
+    const double young = static_cast<double>(since_start_ns_ / 1000) * 1e-6 + params::kObserverStartPrior * tau;
+    return std::min(tau, std::max(young, 1e-6));
+  }
   // Not started, or started less than kConvergingTaus time constants ago.
   bool converging_now() const { return !started_ || since_start_ns_ < converging_ns_; }
 
