@@ -257,14 +257,17 @@ void PhotometricMatch::sample(int fixed, int fixed_cam, uint64_t t_other, int le
       ee_ -= fx::shr_round(ee_, kMemoryLog2);
       zz_ -= fx::shr_round(zz_, kMemoryLog2);
       dof_ -= fx::shr_round(dof_, kMemoryLog2);
+      ee_rows_ -= fx::shr_round(ee_rows_, kMemoryLog2);
     } else {
       ++samples_;
     }
     ++unsolved_;
     for (uint8_t k = 0; k < count; ++k) {
-      int64_t e = z[k];
-      for (int j = 0; j < kMatchParams; ++j) e -= fx::shr_round(jj[k][j] * est_[j], kQ);
-      ee_ += e * e;
+      if (solved_) {
+        int64_t e = z[k];
+        for (int j = 0; j < kMatchParams; ++j) e -= fx::shr_round(jj[k][j] * est_[j], kQ);
+        ee_ += e * e;
+      }
       zz_ += z[k] * z[k];
       for (int i2 = 0; i2 < kMatchParams; ++i2) {
         for (int j = 0; j < kMatchParams; ++j) a_[i2][j] += jj[k][i2] * jj[k][j];
@@ -272,14 +275,16 @@ void PhotometricMatch::sample(int fixed, int fixed_cam, uint64_t t_other, int le
       }
     }
     dof_ += rows;
+    if (solved_) ee_rows_ += rows;
     return;
   }
 }
 
 bool PhotometricMatch::solve() {
   // The samples' residual variance per row sets the prior's weight.
-  const int64_t free_rows = dof_ > kMatchParams + 1 ? dof_ - kMatchParams : 1;
-  int64_t s2 = ee_ / free_rows;  // Q40
+  const int64_t rows = solved_ ? ee_rows_ : dof_;
+  const int64_t free_rows = rows > kMatchParams + 1 ? rows - kMatchParams : 1;
+  int64_t s2 = (solved_ ? ee_ : zz_) / free_rows;  // Q40
   if (s2 > (int64_t{1} << 50)) s2 = int64_t{1} << 50;
   int64_t m[kMatchParams][kMatchParams];
   int64_t s[kMatchParams];  // sqrt of the diagonal, Q20
@@ -320,6 +325,7 @@ bool PhotometricMatch::solve() {
   // R^2 = p^T b / z^T z, both Q40 (p >> 10 times b >> 20: < 2^21 * 2^41);
   // the weight it gives, never less than it was (Q16).
   int64_t explained = 0;
+  solved_ = true;
   for (int i = 0; i < kMatchParams; ++i) {
     est_[i] = p[i];
     explained += fx::shr_round(p[i], 10) * fx::shr_round(b_[i], 20);

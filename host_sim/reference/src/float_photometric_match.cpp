@@ -120,12 +120,15 @@ void FloatPhotometricMatch::sample(size_t fixed, int fixed_cam, double t_other, 
       ee_ *= 1 - kForget;
       zz_ *= 1 - kForget;
       dof_ *= 1 - kForget;
+      ee_rows_ *= 1 - kForget;
     } else {
       ++samples_;
     }
     ++unsolved_;
-    const Eigen::VectorXd e = z - jj * est_;
-    ee_ += e.squaredNorm();
+    if (solved_) {
+      ee_ += (z - jj * est_).squaredNorm();
+      ee_rows_ += rows;
+    }
     zz_ += z.squaredNorm();
     a_ += jj.transpose() * jj;
     b_ += jj.transpose() * z;
@@ -135,14 +138,17 @@ void FloatPhotometricMatch::sample(size_t fixed, int fixed_cam, double t_other, 
 }
 
 bool FloatPhotometricMatch::solve() {
-  const double free_rows = dof_ > kParams + 1 ? dof_ - kParams : 1;
-  const double s2 = ee_ / free_rows;
+  // (the core's photometric_match.cpp: about the last solution, or all of it before one)
+  const double rows = solved_ ? ee_rows_ : dof_;
+  const double free_rows = rows > kParams + 1 ? rows - kParams : 1;
+  const double s2 = (solved_ ? ee_ : zz_) / free_rows;
   Eigen::Matrix<double, kParams, kParams> m = a_;
   for (int i = 0; i < kParams; ++i) m(i, i) += s2 * kInvPrior2[i];
   const Params p = m.ldlt().solve(b_);
   for (int i = 0; i < kParams; ++i)
     if (!std::isfinite(p[i]) || std::fabs(p[i]) > kMaxParam[i]) return false;
   est_ = p;
+  solved_ = true;
   const double explained = p.dot(b_);
   if (zz_ > 0 && explained > 0)
     weight_ = std::max(weight_, std::clamp((explained / zz_ - kMatchExplainedNone) /

@@ -54,7 +54,8 @@ class FloatPhotometricMatch {
   std::deque<Frame> hist_;
   Eigen::Matrix<double, kParams, kParams> a_ = Eigen::Matrix<double, kParams, kParams>::Zero();
   Params b_ = Params::Zero();
-  double ee_ = 0, zz_ = 0, dof_ = 0;
+  double ee_ = 0, zz_ = 0, dof_ = 0, ee_rows_ = 0;  // ee_ and its rows: after a solution only
+  bool solved_ = false;
   int samples_ = 0, unsolved_ = 0;
 };
 
