@@ -1,4 +1,5 @@
 // lumavel-sim as a user sees it: exit codes, messages, files written.
+#include <sys/stat.h>
 #include <sys/wait.h>
 
 #include <algorithm>
@@ -29,11 +30,13 @@ std::string line_of(const std::string& text, const std::string& key) {
 
 TEST_GROUP(Cli) {
   fixture::TempDir dir;
-  // Runs `lumavel-sim ARGS` in the temp dir, capturing both streams.
-  Outcome sim(const std::string& args) {
+  // Runs `lumavel-sim ARGS` in the temp dir, capturing both streams; killed
+  // after `timeout_s` seconds when not 0 (exit code 124 then).
+  Outcome sim(const std::string& args, int timeout_s = 0) {
     const std::string out = dir.path() + "/stdout.txt", err = dir.path() + "/stderr.txt";
+    const std::string limit = timeout_s > 0 ? "timeout -s KILL " + std::to_string(timeout_s) + " " : "";
     const std::string cmd =
-        "cd '" + dir.path() + "' && '" LUMAVEL_SIM_EXE "' " + args + " >'" + out + "' 2>'" + err + "'";
+        "cd '" + dir.path() + "' && " + limit + "'" LUMAVEL_SIM_EXE "' " + args + " >'" + out + "' 2>'" + err + "'";
     const int status = std::system(cmd.c_str());
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, fixture::read_text(out), fixture::read_text(err)};
   }
@@ -193,6 +196,21 @@ TEST(Cli, WritesThroughSpecialFilesWithoutReplacingThem) {
   LONGS_EQUAL(13, fixture::read_lines(target).size());
   LONGS_EQUAL(0, sim("run rec -o /dev/null --quiet").code);
   CHECK(exists("/dev/null"));
+}
+
+// An output that is a FIFO nobody reads is refused after a short wait for a
+// reader (was: run waited forever in open(), the work done and lost).
+TEST(Cli, AFifoNobodyReadsIsRefusedNotWaitedOn) {
+  rec();
+  CHECK(::mkfifo((dir.path() + "/fifo").c_str(), 0600) == 0);
+  for (const char* args : {"run rec --quiet -o fifo", "run rec --quiet -o est.csv --hid file:fifo",
+                           "run rec --quiet -o est.csv --plot fifo"}) {
+    const Outcome r = sim(args, 30);
+    LONGS_EQUAL_TEXT(1, r.code, args);
+    STRCMP_CONTAINS("fifo: cannot create", r.err.c_str());
+    STRCMP_CONTAINS("is a FIFO (named pipe) that no process reads (none came within 2 s)", r.err.c_str());
+    CHECK_TEXT(!exists(dir.path() + "/est.csv"), args);
+  }
 }
 
 TEST(Cli, RunWritesCsvSummaryAndPlot) {

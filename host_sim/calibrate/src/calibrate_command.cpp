@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstring>
 #include <cstdio>
-#include <fstream>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -140,12 +139,14 @@ int calibrate(CalibrateArgs& a) {
     return 0;
   }
   const DeviceSetup setup = device_setup_from_recording(rec, write_size, c.misalignment);
-  std::ofstream out(a.write_path, std::ios::binary | std::ios::trunc);
-  out << "# lumavel device configuration for " << a.rec << " (lumavel-sim calibrate --write)\n"
-      << "# send with: lumavel-read config set --file " << a.write_path << "\n"
-      << format_setup(setup);
-  out.close();
-  if (!out) throw std::runtime_error(a.write_path + ": cannot write the configuration file: " + std::strerror(errno));
+  const std::string text = "# lumavel device configuration for " + a.rec + " (lumavel-sim calibrate --write)\n" +
+                           "# send with: lumavel-read config set --file " + a.write_path + "\n" + format_setup(setup);
+  std::string why;
+  std::FILE* out = open_for_writing(a.write_path, "wb", why);  // a FIFO nobody reads: refused, not waited on
+  if (!out) throw std::runtime_error(a.write_path + ": cannot write the configuration file: " + why);
+  const bool written = std::fwrite(text.data(), 1, text.size(), out) == text.size();
+  if (std::fclose(out) != 0 || !written)
+    throw std::runtime_error(a.write_path + ": cannot write the configuration file: " + std::strerror(errno));
   std::printf("wrote %s (%dx%d working, lens tables: %s); send to a board: lumavel-read config set --file %s\n",
               a.write_path.c_str(), setup.config.width, setup.config.height,
               setup.config.lens == 0 ? "none, pinhole" : setup.config.lens == 3 ? "both cameras" : "one camera",

@@ -7,6 +7,8 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "lumavel/host/path_check.hpp"
+
 namespace lumavel::host {
 
 OutputFile::OutputFile(const std::string& path) : path_(path) {
@@ -21,8 +23,9 @@ OutputFile::OutputFile(const std::string& path) : path_(path) {
   struct stat st {};
   const bool special = ::lstat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode);
   if (!special) temp_ = path + ".tmp" + std::to_string(::getpid());
-  file_ = std::fopen((special ? path : temp_).c_str(), "w");
-  if (!file_) throw std::runtime_error(path + ": cannot create the output file: " + std::strerror(errno));
+  std::string why;
+  file_ = open_for_writing(special ? path : temp_, "w", why);
+  if (!file_) throw std::runtime_error(path + ": cannot create the output file: " + why);
 }
 
 OutputFile::~OutputFile() {

@@ -1,13 +1,16 @@
 #include "lumavel/host/path_check.hpp"
 
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
+#include <chrono>
 #include <climits>
 #include <cstring>
 #include <filesystem>
+#include <thread>
 
 namespace lumavel::host {
 namespace {
@@ -91,6 +94,41 @@ std::string why_not_writable(const std::string& path, const std::string& what) {
   if (::access(folder.c_str(), W_OK | X_OK) != 0)
     return "cannot be created: no permission to write in its folder " + shown_path(folder);
   return {};
+}
+
+std::FILE* open_for_writing(const std::string& path, const char* mode, std::string& why) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0 || !S_ISFIFO(st.st_mode)) {
+    std::FILE* f = std::fopen(path.c_str(), mode);
+    if (!f) why = std::strerror(errno);
+    return f;
+  }
+  // A FIFO opened for writing blocks until a process opens it for reading:
+  // forever when none does. Opened without blocking, it fails (ENXIO) while
+  // there is no reader.
+  const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(kFifoReaderWaitMs);
+  for (;;) {
+    const int fd = ::open(path.c_str(), O_WRONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd >= 0) {
+      const int flags = ::fcntl(fd, F_GETFL);
+      std::FILE* f = flags == -1 || ::fcntl(fd, F_SETFL, flags & ~O_NONBLOCK) == -1 ? nullptr : ::fdopen(fd, mode);
+      if (!f) {
+        why = std::strerror(errno);
+        ::close(fd);
+      }
+      return f;
+    }
+    if (errno != ENXIO) {
+      why = std::strerror(errno);
+      return nullptr;
+    }
+    if (std::chrono::steady_clock::now() >= end) {
+      why = "is a FIFO (named pipe) that no process reads (none came within " +
+            std::to_string(kFifoReaderWaitMs / 1000) + " s): start its reader first, or write to a file";
+      return nullptr;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
 }
 
 bool path_present(const std::string& path) {

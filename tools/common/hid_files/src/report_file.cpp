@@ -14,8 +14,9 @@ std::string why() { return std::strerror(errno); }
 }  // namespace
 
 ReportFileWriter::ReportFileWriter(const std::string& path) : f_(nullptr), path_(path) {
-  f_ = std::fopen(path.c_str(), "wb");
-  if (f_ == nullptr) throw std::runtime_error(path + ": cannot create report file: " + why());
+  std::string cannot;
+  f_ = open_for_writing(path, "wb", cannot);
+  if (f_ == nullptr) throw std::runtime_error(path + ": cannot create report file: " + cannot);
   if (std::fwrite(kReportFileMagic, 1, kMagicSize, f_) != kMagicSize) {
     std::fclose(f_);
     throw std::runtime_error(path + ": cannot write report file: " + why());

@@ -4,6 +4,7 @@
 // /dev/zero is never opened (reading one would hang or never end). Outputs
 // are checked before the work that fills them, not after it.
 #pragma once
+#include <cstdio>
 #include <string>
 
 namespace lumavel::host {
@@ -25,6 +26,15 @@ std::string why_not_a_folder(const std::string& path, const std::string& what = 
 // otherwise the reason, e.g. "is a folder, not a plot file", "cannot be
 // created: its folder out does not exist".
 std::string why_not_writable(const std::string& path, const std::string& what = "file");
+// How long an output that is a FIFO (named pipe) waits for a process to read
+// it (`run -o FIFO & reader FIFO` may start the reader a moment later).
+constexpr int kFifoReaderWaitMs = 2000;
+// Opens `path` for writing as std::fopen(path, mode) does ("w", "wb"),
+// except that a FIFO nobody reads is not waited on forever: it is opened when
+// a reader comes within kFifoReaderWaitMs, else refused. nullptr on failure,
+// with `why` the reason: "is a FIFO (named pipe) that no process reads (...)"
+// or the system's (strerror).
+std::FILE* open_for_writing(const std::string& path, const char* mode, std::string& why);
 // The text files the tools read whole (a sensor.yaml, a scenario, a
 // configuration file) hold a few hundred lines at most: anything bigger is
 // something else (a disk image, a video under the wrong name), refused by its
