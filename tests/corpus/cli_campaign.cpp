@@ -356,6 +356,9 @@ std::vector<Case> recording_cases(const std::string& base) {
   refused("CSV NUL inside a filename", [=](const std::string& r) {
     set_field(r + m + c0, line_of_row(mid), 1, frame_name(r, 0, mid) + std::string("\0junk", 5));
   }, c0, mid_line);  // was: exit 0, the frame before the NUL read
+  // A frame file named by two rows (was: exit 0, the repeated frame read as a standstill).
+  refused("CSV one frame file named twice", [=](const std::string& r) { set_field(r + m + c0, line_of_row(mid), 1, frame_name(r, 0, mid - 1)); },
+          c0, mid_line + " filename '" + frame_name(base, 0, mid - 1) + "' is also the frame of line " + n(line_of_row(mid - 1)));
   refused("CSV non-numeric timestamp", [=](const std::string& r) { set_field(r + m + c0, line_of_row(mid), 0, "abc"); }, c0, mid_line);
   refused("CSV NaN timestamp", [=](const std::string& r) { set_field(r + m + c0, line_of_row(mid), 0, "nan"); }, c0, mid_line);
   refused("CSV negative timestamp", [=](const std::string& r) { both_csv(r, [](const std::string& f) { set_field(f, 2, 0, "-1000000000"); }); }, c0, ":2:");
