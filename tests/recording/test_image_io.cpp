@@ -152,6 +152,26 @@ TEST(ImageIo, CorruptPngIsRefused) {
   STRCMP_CONTAINS("corrupt PNG", e.c_str());
 }
 
+// A header that claims fewer rows than the data holds, its CRC made right
+// (was: read, the extra rows dropped with a warning nobody saw).
+TEST(ImageIo, PngWithMoreDataThanItsHeaderSaysIsRefused) {
+  const std::vector<uint8_t> px = ramp(40, 31);
+  write_png_gray(path("m.png"), px.data(), 40, 31);
+  std::string bytes = fixture::read_text(path("m.png"));
+  bytes[23] = 30;  // IHDR height (big-endian, bytes 20..23): 31 -> 30
+  uint32_t crc = 0xffffffffu;  // the IHDR chunk's CRC-32, over its type and data (bytes 12..28)
+  for (size_t i = 12; i < 29; ++i) {
+    crc ^= static_cast<uint8_t>(bytes[i]);
+    for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
+  }
+  crc = ~crc;
+  for (int k = 0; k < 4; ++k) bytes[29 + static_cast<size_t>(k)] = static_cast<char>(crc >> (24 - 8 * k));
+  fixture::write_text(path("m.png"), bytes);
+  const std::string e = error_of([&] { read_gray_image(path("m.png")); });
+  STRCMP_CONTAINS(path("m.png").c_str(), e.c_str());
+  STRCMP_CONTAINS("corrupt PNG: IDAT: Too much image data", e.c_str());
+}
+
 TEST(ImageIo, BadPgmFilesAreRefused) {
   fixture::write_text(path("short.pgm"), "P5\n4 4\n255\n0123456789");
   STRCMP_CONTAINS("truncated PGM: 10 of 16", error_of([&] { read_gray_image(path("short.pgm")); }).c_str());
