@@ -757,6 +757,21 @@ TEST(Cli, RenderForceKeepsWhatTheRenderReads) {
   CHECK(exists(dir.path() + "/out/mav0/s.yaml"));
 }
 
+// A render that fails part way leaves no recording behind (was: the frames
+// and the tables written until then, as OUT/mav0, exit 1). Files of at most
+// 2 KiB (ulimit -f 2, SIGXFSZ ignored: writes then fail with EFBIG).
+TEST(Cli, ARenderThatFailsPartWayLeavesNoRecording) {
+  const std::string cmd = "cd '" + dir.path() + "' && sh -c \"trap '' XFSZ; ulimit -f 2; exec '" LUMAVEL_SIM_EXE
+                          "' render '" LUMAVEL_SOURCE_DIR "/host_sim/scenarios/paper_sim_aligned.yaml' out "
+                          "--resolution 40x30 --duration 0.3 -q\" 2>'" + dir.path() + "/stderr.txt'";
+  const int status = std::system(cmd.c_str());
+  CHECK(WIFEXITED(status));
+  LONGS_EQUAL(1, WEXITSTATUS(status));
+  STRCMP_CONTAINS("write error", fixture::read_text(dir.path() + "/stderr.txt").c_str());
+  CHECK(exists(dir.path() + "/out"));  // OUT itself is kept: only what the render wrote in it goes
+  CHECK(!exists(dir.path() + "/out/mav0"));
+}
+
 // A scenario that loads but renders a recording run refuses (here no
 // baseline) fails the render with run's reason, naming the sensor.yaml.
 TEST(Cli, RenderRefusesARecordingThatRunWouldRefuse) {

@@ -72,7 +72,17 @@ int render_to_folder(RenderArgs& a) {
                                  "another folder");
     std::filesystem::remove_all(mav0);
   }
-  const render::RenderSummary r = render::render_recording(s, a.out, a.opt);
+  // A render that fails part way (a full disk) left the frames and tables
+  // written so far as OUT/mav0, which could pass for a shorter recording:
+  // removed (it is this render's own: an earlier one was refused or removed).
+  render::RenderSummary r;
+  try {
+    r = render::render_recording(s, a.out, a.opt);
+  } catch (...) {
+    std::error_code ignored;
+    std::filesystem::remove_all(mav0, ignored);
+    throw;
+  }
   if (!a.quiet) {
     std::string bg = "no background visible";
     if (r.max_background_frame >= 0) {
