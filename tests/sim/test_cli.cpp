@@ -693,14 +693,25 @@ TEST(Cli, AReportFileThatCannotBeWrittenFailsTheRun) {
   STRCMP_CONTAINS("/dev/full: cannot write the report file: No space left on device", r.err.c_str());
 }
 
-// A --hid-config file that is not a stored configuration is said to be
-// ignored (a device silently keeps its defaults; the host user is told).
-TEST(Cli, AnInvalidHidConfigIsWarnedAbout) {
+// A --hid-config file that is not a stored configuration is refused before
+// the run (was: a warning, exit 0, and a set from the host wrote the store
+// over the user's file, a rig.cfg given by mistake).
+TEST(Cli, AnInvalidHidConfigIsRefused) {
   rec();
-  fixture::write_text(dir.path() + "/cfg", "garbage\n");
-  const Outcome r = sim("run rec --quiet -o est.csv --hid file:run.hidrep --hid-config cfg");
-  LONGS_EQUAL(0, r.code);
-  STRCMP_CONTAINS("cfg (--hid-config) is not a valid stored configuration", r.err.c_str());
+  const std::string rig = "width=40\nheight=30\n";
+  fixture::write_text(dir.path() + "/rig.cfg", rig);
+  Outcome r = sim("run rec --quiet -o est.csv --hid file:run.hidrep --hid-config rig.cfg");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("lumavel-sim run: error: rig.cfg (--hid-config): is not a stored configuration (", r.err.c_str());
+  STRCMP_CONTAINS("give a new name, or a file an earlier run saved there", r.err.c_str());
+  CHECK(!exists(dir.path() + "/est.csv") && !exists(dir.path() + "/run.hidrep"));
+  fixture::write_text(dir.path() + "/big", std::string(100000, 'x'));
+  r = sim("run rec --quiet -o est.csv --hid file:run.hidrep --hid-config big");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("big (--hid-config): is 100000 bytes, larger than a stored configuration (", r.err.c_str());
+  CHECK(fixture::read_text(dir.path() + "/rig.cfg") == rig);
+  fixture::write_text(dir.path() + "/empty", "");  // empty: a new store
+  LONGS_EQUAL(0, sim("run rec --quiet -o est.csv --hid file:run.hidrep --hid-config empty").code);
 }
 
 // calibrate's --write-size is checked as a usage error naming it.

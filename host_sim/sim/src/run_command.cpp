@@ -306,7 +306,8 @@ int run(const RunArgs& a) {
     if (!a.hid_config.empty()) {
       store = std::make_unique<FileConfigStore>(a.hid_config);
       // A device keeps its defaults when its stored configuration is invalid;
-      // on the host that file is the user's: say so rather than ignore it.
+      // on the host that file is the user's, and a set would write the store
+      // over it (a KEY=VALUE rig.cfg given here by mistake): refused.
       if (path_present(a.hid_config)) {
         uint8_t buf[protocol::kMaxStoredConfigSize];
         const size_t n = store->load(buf, sizeof buf);
@@ -314,14 +315,17 @@ int run(const RunArgs& a) {
         protocol::LensTables lens{};
         const protocol::ConfigField f =
             n == 0 ? protocol::ConfigField::kOk : protocol::decode_stored_config(buf, n, c, lens);
+        const std::string not_a_store =
+            ": --hid-config is the simulated device's own store, which a set overwrites: give a new name, or a file "
+            "an earlier run saved there (a KEY=VALUE file is sent with lumavel-read config set --file)";
         if (n == 0 && std::filesystem::file_size(a.hid_config) > 0)
-          std::fprintf(stderr, "hid: warning: %s (--hid-config) is larger than a stored configuration (%zu B): "
-                               "ignored, the defaults are served until a configuration is set\n",
-                       shown_path(a.hid_config).c_str(), sizeof buf);
-        else if (f != protocol::ConfigField::kOk)
-          std::fprintf(stderr, "hid: warning: %s (--hid-config) is not a valid stored configuration (%s: %s): "
-                               "ignored, the defaults are served until a configuration is set\n",
-                       shown_path(a.hid_config).c_str(), protocol::to_string(f), protocol::rule_of(f));
+          throw std::runtime_error(shown_path(a.hid_config) + " (--hid-config): is " +
+                                   std::to_string(std::filesystem::file_size(a.hid_config)) +
+                                   " bytes, larger than a stored configuration (" + std::to_string(sizeof buf) +
+                                   " B)" + not_a_store);
+        if (f != protocol::ConfigField::kOk)
+          throw std::runtime_error(shown_path(a.hid_config) + " (--hid-config): is not a stored configuration (" +
+                                   protocol::to_string(f) + ": " + protocol::rule_of(f) + ")" + not_a_store);
       }
     }
     HidSenderOptions hid_options = hid_sender_options_for(a.hid);
