@@ -495,6 +495,8 @@ TEST(Cli, UnwritableOutputsAreRefusedBeforeTheWork) {
   for (const auto& [args, said] : std::vector<std::pair<std::string, std::string>>{
            {"--out out_r --doc adir", "adir (--doc): is a folder, not a results page"},
            {"--out out_r --doc page", "page (--doc): has no extension"},
+           // (was: nowhere/ and nowhere/p/ made, the page written there)
+           {"--out out_r --doc nowhere/p.md", "nowhere/p.md (--doc): cannot be created: its folder nowhere does not exist"},
            {"--out afile --doc p.md", "afile (--out): is a file, not a folder for the recordings and plots"},
            {"--out out_r --doc afile.md", "afile (the plots of --doc): is a file, not a folder for the page's plots"},
            // (was: its section skipped as "not there", exit 0; only the default may be missing)

@@ -324,8 +324,12 @@ void check_outputs(const Options& o) {
     if (!why.empty()) throw std::runtime_error(shown_path(path) + " (" + option + "): " + why);
   };
   if (path_present(o.out)) refuse(o.out, "--out", why_not_a_folder(o.out, "folder for the recordings and plots"));
-  if (path_present(o.doc)) refuse(o.doc, "--doc", why_not_writable(o.doc, "results page"));
   const fs::path doc(o.doc);
+  // A new page goes in a folder that is there, as run -o's CSV does (was: its
+  // folders made, a typo in them unsaid), or in --out, which the run makes.
+  const std::string doc_folder = doc.parent_path().empty() ? "." : doc.parent_path().string();
+  if (path_present(o.doc) || !lies_inside(doc_folder, o.out))
+    refuse(o.doc, "--doc", why_not_writable(o.doc, "results page"));
   // Its plots go to the folder of its name less the extension: without one, the page's own name.
   if (doc.stem() == doc.filename())
     refuse(o.doc, "--doc", "has no extension: its plots go to the folder named as it is without one (e.g. x.md, plots in x/)");
