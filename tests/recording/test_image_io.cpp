@@ -172,6 +172,28 @@ TEST(ImageIo, PngWithMoreDataThanItsHeaderSaysIsRefused) {
   STRCMP_CONTAINS("corrupt PNG: IDAT: Too much image data", e.c_str());
 }
 
+// An ancillary chunk libpng reports as a benign error (here a second pHYs,
+// "duplicate"; in the wild a colour profile known to be wrong) does not
+// touch the pixels: the frame is read as it is.
+TEST(ImageIo, APngWithABadAncillaryChunkIsRead) {
+  const std::vector<uint8_t> px = ramp(40, 30);
+  write_png_gray(path("a.png"), px.data(), 40, 30);
+  std::string bytes = fixture::read_text(path("a.png"));
+  // after the signature (8 bytes) and IHDR (4 + 4 + 13 + 4), twice: length 9, "pHYs", 1 x 1 per unit, its CRC-32
+  std::string phys("\0\0\0\x09pHYs\0\0\0\1\0\0\0\1\0", 17);
+  uint32_t crc = 0xffffffffu;
+  for (size_t i = 4; i < phys.size(); ++i) {
+    crc ^= static_cast<uint8_t>(phys[i]);
+    for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
+  }
+  crc = ~crc;
+  for (int k = 0; k < 4; ++k) phys += static_cast<char>(crc >> (24 - 8 * k));
+  bytes.insert(33, phys + phys);
+  fixture::write_text(path("a.png"), bytes);
+  const GrayImage img = read_gray_image(path("a.png"));
+  CHECK(img.px == px);
+}
+
 TEST(ImageIo, BadPgmFilesAreRefused) {
   fixture::write_text(path("short.pgm"), "P5\n4 4\n255\n0123456789");
   STRCMP_CONTAINS("truncated PGM: 10 of 16", error_of([&] { read_gray_image(path("short.pgm")); }).c_str());

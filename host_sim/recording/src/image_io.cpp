@@ -60,6 +60,7 @@ struct PngSource {
   size_t size;
   size_t pos;
   char message[256];
+  char damage[256];             // the first warning about the image data itself ("" when none)
   std::vector<png_bytep> rows;  // lives here (address escapes) so it survives longjmp
 };
 
@@ -70,6 +71,18 @@ void png_fail(png_structp png, png_const_charp msg) {
 }
 
 void png_quiet_warning(png_structp, png_const_charp) {}
+
+// libpng reads past its "benign" errors with a warning. Those about the
+// image data (more rows than the header says, data after the zlib stream,
+// IDAT chunks out of place) mean a damaged frame: kept, to refuse it. Those
+// about an ancillary chunk (a colour profile known to be wrong, a bad text
+// chunk) do not touch the pixels: the frame is read as it is.
+void png_note_warning(png_structp png, png_const_charp msg) {
+  auto* src = static_cast<PngSource*>(png_get_error_ptr(png));
+  const bool about_pixels = std::strstr(msg, "IDAT") != nullptr || std::strstr(msg, "image data") != nullptr ||
+                            std::strstr(msg, "compressed data") != nullptr;
+  if (about_pixels && !src->damage[0]) std::snprintf(src->damage, sizeof src->damage, "%s", msg);
+}
 
 void png_read_mem(png_structp png, png_bytep out, png_size_t n) {
   auto* src = static_cast<PngSource*>(png_get_io_ptr(png));
@@ -103,8 +116,8 @@ std::string decode_png(const uint8_t* data, size_t size, GrayImage& img, Expect 
       return {};
     }
   }
-  PngSource src{data, size, 0, {0}, {}};
-  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &src, png_fail, png_quiet_warning);
+  PngSource src{data, size, 0, {0}, {0}, {}};
+  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &src, png_fail, png_note_warning);
   if (!png) return "out of memory";
   png_infop info = png_create_info_struct(png);
   if (!info) {
@@ -116,10 +129,6 @@ std::string decode_png(const uint8_t* data, size_t size, GrayImage& img, Expect 
     return std::string("corrupt PNG: ") + src.message;
   }
   png_set_user_limits(png, kMaxSide, kMaxSide);
-  // libpng reads past its "benign" errors with a warning: more image data
-  // than the header's rows, data after the zlib stream, a damaged ancillary
-  // chunk. In a frame each means a damaged file: refused, as a bad CRC is.
-  png_set_benign_errors(png, 0);
   // zlib's Adler-32 stays checked: a chunk CRC recomputed over damaged data
   // (an editor, a faulty writer) covers nothing, and only the Adler-32 of the
   // pixels then tells. It costs about 2 % of a 640x480 `run` (docs/benchmarks.md).
@@ -152,6 +161,7 @@ std::string decode_png(const uint8_t* data, size_t size, GrayImage& img, Expect 
   png_read_image(png, src.rows.data());
   png_read_end(png, nullptr);  // checks the trailing chunks: catches truncation after IDAT
   png_destroy_read_struct(&png, &info, nullptr);
+  if (src.damage[0]) return std::string("corrupt PNG: ") + src.damage;
   return {};
 }
 
