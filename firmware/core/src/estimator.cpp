@@ -196,7 +196,7 @@ Estimate Estimator::step_profiles(uint64_t t_ns, ColumnProfile& p0, ColumnProfil
       FusionInput fin{};
       fin.dt_ns = dt_ns;
       fin.v_differential = o.v;
-      fin.observer_tau_us = observer_.time_constant_us(cfg_.tau_us);
+      fin.observer_tau_us = observer_.time_constant_us();
       fin.direct = o.updated;
       fin.v_direct = o.v_direct;
       fin.residual = o.residual;

@@ -126,7 +126,7 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
       FloatFusionInput fin;
       fin.dt = dt;
       fin.v_differential = o.v;
-      fin.observer_tau = observer_.time_constant(s_.tau);
+      fin.observer_tau = observer_.time_constant();
       fin.direct = o.updated;
       fin.v_direct = o.v_direct;
       fin.residual = o.residual;

@@ -74,10 +74,14 @@ FloatObserverOutput FloatVelocityObserver::update(const FloatObserverInput& in) 
     v_ = out.v_direct;
     started_ = true;
     since_start_ns_ = 0;
+    since_start_us_ = 0;
+    tau_now_ = std::max(params::kObserverStartPrior * in.tau, 1e-6);
   } else {
     // Implicit Euler of dV/dt = (v_direct - V) / tau.
     since_start_ns_ += in.dt_ns;
-    v_ = observer_step(v_, out.v_direct, in.dt, time_constant(in.tau));
+    since_start_us_ += static_cast<int64_t>(in.dt_ns / 1000);
+    tau_now_ = std::min(in.tau, std::max(static_cast<double>(since_start_us_) * 1e-6 + params::kObserverStartPrior * in.tau, 1e-6));
+    v_ = observer_step(v_, out.v_direct, in.dt, tau_now_);
   }
   out.v = v_;
   out.updated = true;

@@ -92,12 +92,9 @@ class VelocityObserver {
   }
   SpeedQ16 v() const { return v_; }
   // The time constant of the last update (us, >= 1): tau_us, or less while
-  // the start is younger than tau (kObserverStartPrior). The fusion's lag
+  // the start was younger than tau (kObserverStartPrior). The fusion's lag
   // correction takes the same.
-  uint32_t time_constant_us(uint32_t tau_us) const {
-    const int64_t young_us = fx::div_trunc(since_start_ns_, 1000) + ((int64_t{tau_us} * kStartPriorQ16) >> 16);
-    return static_cast<uint32_t>(young_us < 1 ? 1 : young_us < tau_us ? young_us : tau_us);
-  }
+  uint32_t time_constant_us() const { return tau_now_us_; }
   // Not started, or started less than kConvergingTaus (3) time constants ago.
   bool converging_now() const {
     return !started_ || since_start_ns_ < ((kConvergingTausQ4 * tau_ns_) >> 4);
@@ -111,6 +108,8 @@ class VelocityObserver {
   SpeedQ16 v_ = 0;
   bool started_ = false;
   int64_t since_start_ns_ = 0;
+  int64_t since_start_us_ = 0;  // the same in the whole microseconds the steps take (no division)
+  uint32_t tau_now_us_ = 1;
   int64_t tau_ns_ = 0;
 };
 

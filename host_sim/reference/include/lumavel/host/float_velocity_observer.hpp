@@ -51,12 +51,10 @@ class FloatVelocityObserver {
     return o;
   }
   double v() const { return v_; }
-  // The time constant of the last update (s): tau, or less while the start is
-  // younger than tau (the core's time_constant_us(), its time in whole us).
-  double time_constant(double tau) const {
-    const double young = static_cast<double>(since_start_ns_ / 1000) * 1e-6 + params::kObserverStartPrior * tau;
-    return std::min(tau, std::max(young, 1e-6));
-  }
+  // The time constant of the last update (s): tau, or less while the start
+  // was younger than tau (the core's time_constant_us(), its time in the
+  // whole microseconds of each step).
+  double time_constant() const { return tau_now_; }
   // Not started, or started less than kConvergingTaus time constants ago.
   bool converging_now() const { return !started_ || since_start_ns_ < converging_ns_; }
 
@@ -64,6 +62,8 @@ class FloatVelocityObserver {
   double v_ = 0;
   bool started_ = false;
   uint64_t since_start_ns_ = 0;
+  int64_t since_start_us_ = 0;
+  double tau_now_ = 1e-6;
   uint64_t converging_ns_ = 0;
 };
 
