@@ -251,7 +251,7 @@ void PhotometricMatch::sample(int fixed, int fixed_cam, uint64_t t_other, int le
     }
     if (samples_ >= kMemorySamples) {
       for (int i2 = 0; i2 < kMatchParams; ++i2) {
-        for (int j = 0; j < kMatchParams; ++j) a_[i2][j] -= fx::shr_round(a_[i2][j], kMemoryLog2);
+        for (int j = 0; j <= i2; ++j) a_[i2][j] -= fx::shr_round(a_[i2][j], kMemoryLog2);
         b_[i2] -= fx::shr_round(b_[i2], kMemoryLog2);
       }
       ee_ -= fx::shr_round(ee_, kMemoryLog2);
@@ -270,7 +270,7 @@ void PhotometricMatch::sample(int fixed, int fixed_cam, uint64_t t_other, int le
       }
       zz_ += z[k] * z[k];
       for (int i2 = 0; i2 < kMatchParams; ++i2) {
-        for (int j = 0; j < kMatchParams; ++j) a_[i2][j] += jj[k][i2] * jj[k][j];
+        for (int j = 0; j <= i2; ++j) a_[i2][j] += jj[k][i2] * jj[k][j];  // (symmetric: the lower triangle)
         b_[i2] += jj[k][i2] * z[k];
       }
     }
@@ -289,7 +289,7 @@ bool PhotometricMatch::solve() {
   int64_t m[kMatchParams][kMatchParams];
   int64_t s[kMatchParams];  // sqrt of the diagonal, Q20
   for (int i = 0; i < kMatchParams; ++i) {
-    for (int j = 0; j < kMatchParams; ++j) m[i][j] = a_[i][j];
+    for (int j = 0; j <= i; ++j) m[i][j] = a_[i][j];
     m[i][i] += s2 * kInvPrior2[i];
     if (m[i][i] <= 0) return false;
     s[i] = fx::isqrt64(static_cast<uint64_t>(m[i][i]));

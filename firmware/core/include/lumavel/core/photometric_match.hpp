@@ -107,7 +107,7 @@ class PhotometricMatch {
   int32_t p_before_[kMatchParams] = {};  // before the last learn()
   Frame hist_[kMatchFrames > 0 ? kMatchFrames : 1];
   int n_hist_ = 0, head_ = 0;            // ring: head_ the oldest
-  int64_t a_[kMatchParams][kMatchParams] = {};  // sum J'^T J', Q40
+  int64_t a_[kMatchParams][kMatchParams] = {};  // sum J'^T J', Q40 (symmetric: the lower triangle kept)
   int64_t b_[kMatchParams] = {};         // sum J'^T z', Q40
   int64_t ee_ = 0;                       // sum of squared prediction residuals (after a solution), Q40
   int64_t zz_ = 0;                       // sum of squared samples, Q40
