@@ -93,7 +93,7 @@ void VelocityObserver::reset() { *this = VelocityObserver{}; }
 
 ObserverOutput VelocityObserver::update(const ObserverInput& in) {
   ObserverOutput out{};
-  tau_ns_ = int64_t{in.tau_us} * 1000;
+  tau_us_ = in.tau_us;
   bool sat = false;
   const uint8_t count = in.cur->count;
   int32_t s_bar[kMaxKernels], e[kMaxKernels];
@@ -149,13 +149,11 @@ ObserverOutput VelocityObserver::update(const ObserverInput& in) {
   if (!started_) {
     v_ = v_direct;
     started_ = true;
-    since_start_ns_ = 0;
     since_start_us_ = 0;
     const int64_t prior_us = (int64_t{in.tau_us} * kStartPriorQ16) >> 16;
     tau_now_us_ = static_cast<uint32_t>(prior_us < 1 ? 1 : prior_us);
   } else {
     const int64_t dt_us = fx::div_trunc(in.dt_ns, 1000);
-    since_start_ns_ += in.dt_ns;
     since_start_us_ += dt_us;
     const int64_t young_us = since_start_us_ + ((int64_t{in.tau_us} * kStartPriorQ16) >> 16);
     tau_now_us_ = static_cast<uint32_t>(young_us < 1 ? 1 : young_us < in.tau_us ? young_us : in.tau_us);

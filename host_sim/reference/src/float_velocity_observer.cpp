@@ -39,7 +39,7 @@ double solve_step_correction(const Eigen::VectorXd& e, const Eigen::VectorXd& a,
 }  // namespace
 
 FloatVelocityObserver::FloatVelocityObserver(uint32_t tau_us)
-    : converging_ns_(static_cast<uint64_t>(params::kConvergingTaus * static_cast<double>(uint64_t{tau_us} * 1000))) {}
+    : converging_us_(static_cast<int64_t>(params::kConvergingTaus * static_cast<double>(tau_us))) {}
 
 FloatObserverOutput FloatVelocityObserver::update(const FloatObserverInput& in) {
   FloatObserverOutput out;
@@ -73,12 +73,10 @@ FloatObserverOutput FloatVelocityObserver::update(const FloatObserverInput& in) 
   if (!started_) {
     v_ = out.v_direct;
     started_ = true;
-    since_start_ns_ = 0;
     since_start_us_ = 0;
     tau_now_ = std::max(params::kObserverStartPrior * in.tau, 1e-6);
   } else {
     // Implicit Euler of dV/dt = (v_direct - V) / tau.
-    since_start_ns_ += in.dt_ns;
     since_start_us_ += static_cast<int64_t>(in.dt_ns / 1000);
     tau_now_ = std::min(in.tau, std::max(static_cast<double>(since_start_us_) * 1e-6 + params::kObserverStartPrior * in.tau, 1e-6));
     v_ = observer_step(v_, out.v_direct, in.dt, tau_now_);

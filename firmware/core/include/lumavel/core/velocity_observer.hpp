@@ -80,7 +80,7 @@ class VelocityObserver {
   // Next measurement re-initialises V directly; V is held until then.
   void restart() {
     started_ = false;
-    since_start_ns_ = 0;
+    since_start_us_ = 0;
   }
   ObserverOutput update(const ObserverInput& in);
   // An interval that cannot be used (its rotation unknown): V held, no update.
@@ -97,7 +97,7 @@ class VelocityObserver {
   uint32_t time_constant_us() const { return tau_now_us_; }
   // Not started, or started less than kConvergingTaus (3) time constants ago.
   bool converging_now() const {
-    return !started_ || since_start_ns_ < ((kConvergingTausQ4 * tau_ns_) >> 4);
+    return !started_ || since_start_us_ < ((kConvergingTausQ4 * tau_us_) >> 4);
   }
 
  private:
@@ -107,10 +107,9 @@ class VelocityObserver {
   static constexpr int64_t kStartPriorQ16 = fx::q_of(params::kObserverStartPrior, 16);
   SpeedQ16 v_ = 0;
   bool started_ = false;
-  int64_t since_start_ns_ = 0;
-  int64_t since_start_us_ = 0;  // the same in the whole microseconds the steps take (no division)
+  int64_t since_start_us_ = 0;  // in the whole microseconds each step takes
   uint32_t tau_now_us_ = 1;
-  int64_t tau_ns_ = 0;
+  uint32_t tau_us_ = 0;  // as configured
 };
 
 }  // namespace lumavel

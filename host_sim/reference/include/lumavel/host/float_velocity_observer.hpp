@@ -41,7 +41,7 @@ class FloatVelocityObserver {
   // Next measurement re-initialises V directly; V is held until then.
   void restart() {
     started_ = false;
-    since_start_ns_ = 0;
+    since_start_us_ = 0;
   }
   FloatObserverOutput update(const FloatObserverInput& in);
   // An interval that cannot be used (its rotation unknown): V held, no update.
@@ -56,15 +56,14 @@ class FloatVelocityObserver {
   // whole microseconds of each step).
   double time_constant() const { return tau_now_; }
   // Not started, or started less than kConvergingTaus time constants ago.
-  bool converging_now() const { return !started_ || since_start_ns_ < converging_ns_; }
+  bool converging_now() const { return !started_ || since_start_us_ < converging_us_; }
 
  private:
   double v_ = 0;
   bool started_ = false;
-  uint64_t since_start_ns_ = 0;
-  int64_t since_start_us_ = 0;
+  int64_t since_start_us_ = 0;  // in the whole microseconds of each step, as the core counts
   double tau_now_ = 1e-6;
-  uint64_t converging_ns_ = 0;
+  int64_t converging_us_ = 0;
 };
 
 }  // namespace lumavel::host
