@@ -37,6 +37,20 @@ std::vector<uint8_t> ramp(int w, int h) {
   return px;
 }
 
+// The CRC-32 of a PNG chunk over its type and data, bytes [from, to) of
+// `bytes`, as the 4 big-endian bytes that follow them.
+std::string png_chunk_crc(const std::string& bytes, size_t from, size_t to) {
+  uint32_t crc = 0xffffffffu;
+  for (size_t i = from; i < to; ++i) {
+    crc ^= static_cast<uint8_t>(bytes[i]);
+    for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
+  }
+  crc = ~crc;
+  std::string out;
+  for (int k = 0; k < 4; ++k) out += static_cast<char>(crc >> (24 - 8 * k));
+  return out;
+}
+
 }  // namespace
 
 TEST_GROUP(ImageIo) {
@@ -159,13 +173,7 @@ TEST(ImageIo, PngWithMoreDataThanItsHeaderSaysIsRefused) {
   write_png_gray(path("m.png"), px.data(), 40, 31);
   std::string bytes = fixture::read_text(path("m.png"));
   bytes[23] = 30;  // IHDR height (big-endian, bytes 20..23): 31 -> 30
-  uint32_t crc = 0xffffffffu;  // the IHDR chunk's CRC-32, over its type and data (bytes 12..28)
-  for (size_t i = 12; i < 29; ++i) {
-    crc ^= static_cast<uint8_t>(bytes[i]);
-    for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
-  }
-  crc = ~crc;
-  for (int k = 0; k < 4; ++k) bytes[29 + static_cast<size_t>(k)] = static_cast<char>(crc >> (24 - 8 * k));
+  bytes.replace(29, 4, png_chunk_crc(bytes, 12, 29));  // the IHDR chunk's CRC-32, over its type and data
   fixture::write_text(path("m.png"), bytes);
   const std::string e = error_of([&] { read_gray_image(path("m.png")); });
   STRCMP_CONTAINS(path("m.png").c_str(), e.c_str());
@@ -181,13 +189,7 @@ TEST(ImageIo, APngWithABadAncillaryChunkIsRead) {
   std::string bytes = fixture::read_text(path("a.png"));
   // after the signature (8 bytes) and IHDR (4 + 4 + 13 + 4), twice: length 9, "pHYs", 1 x 1 per unit, its CRC-32
   std::string phys("\0\0\0\x09pHYs\0\0\0\1\0\0\0\1\0", 17);
-  uint32_t crc = 0xffffffffu;
-  for (size_t i = 4; i < phys.size(); ++i) {
-    crc ^= static_cast<uint8_t>(phys[i]);
-    for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
-  }
-  crc = ~crc;
-  for (int k = 0; k < 4; ++k) phys += static_cast<char>(crc >> (24 - 8 * k));
+  phys += png_chunk_crc(phys, 4, phys.size());
   bytes.insert(33, phys + phys);
   fixture::write_text(path("a.png"), bytes);
   const GrayImage img = read_gray_image(path("a.png"));

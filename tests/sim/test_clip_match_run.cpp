@@ -25,20 +25,26 @@ TEST_GROUP(ClipMatchRun) {
   fixture::TempDir dir;
   void setup() override { MemoryLeakWarningPlugin::saveAndDisableNewDeleteOverloads(); }
   void teardown() override { MemoryLeakWarningPlugin::restoreNewDeleteOverloads(); }
+  // The photo wall at 160x120 with both cameras from a photometric preset
+  // (duration_s < 0: the scenario's own).
+  Recording render_wall(const std::string& preset, double duration_s = -1) {
+    render::Scenario s = render::load_scenario(std::string(LUMAVEL_SCENARIO_DIR) + "/robustness_wall.yaml");
+    render::Overrides o;
+    o.width = 160;
+    o.height = 120;
+    o.duration_s = duration_s;
+    o.camera_mismatch = preset;
+    render::apply_overrides(s, o);
+    render::RenderOptions ro;
+    ro.threads = 2;
+    ro.progress = false;
+    render::render_recording(s, dir.path() + "/wall", ro);
+    return load_recording(dir.path() + "/wall");
+  }
 };
 
 TEST(ClipMatchRun, MismatchedWallIsMeasuredWithTheClampAndNotWithout) {
-  render::Scenario s = render::load_scenario(std::string(LUMAVEL_SCENARIO_DIR) + "/robustness_wall.yaml");
-  render::Overrides o;
-  o.width = 160;
-  o.height = 120;
-  o.camera_mismatch = "cheap_pair";
-  render::apply_overrides(s, o);
-  render::RenderOptions ro;
-  ro.threads = 2;
-  ro.progress = false;
-  render::render_recording(s, dir.path() + "/wall", ro);
-  const Recording rec = load_recording(dir.path() + "/wall");
+  const Recording rec = render_wall("cheap_pair");
   double e[2];
   for (int clamp = 0; clamp < 2; ++clamp) {
     RunOptions opt;
@@ -57,18 +63,7 @@ TEST(ClipMatchRun, MismatchedWallIsMeasuredWithTheClampAndNotWithout) {
 // residual is the cameras' whole difference (measured: mean |V error| from
 // 0.5 to 1 s 3.0 % when those counted, 0.6 % now; the matched wall's 0.6 %).
 TEST(ClipMatchRun, DifferingCamerasAreMatchedWithinHalfASecond) {
-  render::Scenario s = render::load_scenario(std::string(LUMAVEL_SCENARIO_DIR) + "/robustness_wall.yaml");
-  render::Overrides o;
-  o.width = 160;
-  o.height = 120;
-  o.duration_s = 1.2;
-  o.camera_mismatch = "differing_pair";
-  render::apply_overrides(s, o);
-  render::RenderOptions ro;
-  ro.threads = 2;
-  ro.progress = false;
-  render::render_recording(s, dir.path() + "/wall", ro);
-  const RunResult r = run_recording(load_recording(dir.path() + "/wall"), RunOptions{}, nullptr);
+  const RunResult r = run_recording(render_wall("differing_pair", 1.2), RunOptions{}, nullptr);
   double e = 0;
   int n = 0;
   const uint64_t t0 = r.track.front().t_ns;
