@@ -150,13 +150,11 @@ ObserverOutput VelocityObserver::update(const ObserverInput& in) {
     v_ = v_direct;
     started_ = true;
     since_start_us_ = 0;
-    const int64_t prior_us = (int64_t{in.tau_us} * kStartPriorQ16) >> 16;
-    tau_now_us_ = static_cast<uint32_t>(prior_us < 1 ? 1 : prior_us);
+    tau_now_us_ = young_time_constant_us(since_start_us_, in.tau_us);
   } else {
     const int64_t dt_us = fx::div_trunc(in.dt_ns, 1000);
     since_start_us_ += dt_us;
-    const int64_t young_us = since_start_us_ + ((int64_t{in.tau_us} * kStartPriorQ16) >> 16);
-    tau_now_us_ = static_cast<uint32_t>(young_us < 1 ? 1 : young_us < in.tau_us ? young_us : in.tau_us);
+    tau_now_us_ = young_time_constant_us(since_start_us_, in.tau_us);
     v_ = observer_step(v_, v_direct, dt_us, tau_now_us_, &sat);
   }
   out.v = v_;

@@ -74,11 +74,11 @@ FloatObserverOutput FloatVelocityObserver::update(const FloatObserverInput& in) 
     v_ = out.v_direct;
     started_ = true;
     since_start_us_ = 0;
-    tau_now_ = std::max(params::kObserverStartPrior * in.tau, 1e-6);
+    tau_now_ = young_time_constant(since_start_us_, in.tau);
   } else {
     // Implicit Euler of dV/dt = (v_direct - V) / tau.
     since_start_us_ += static_cast<int64_t>(in.dt_ns / 1000);
-    tau_now_ = std::min(in.tau, std::max(static_cast<double>(since_start_us_) * 1e-6 + params::kObserverStartPrior * in.tau, 1e-6));
+    tau_now_ = young_time_constant(since_start_us_, in.tau);
     v_ = observer_step(v_, out.v_direct, in.dt, tau_now_);
   }
   out.v = v_;

@@ -30,8 +30,8 @@
 // own residual variance: about the solution before them (out of sample), the
 // samples' whole variance for the first solution. (Counting the samples that
 // came before any solution, whose residual is the cameras' whole difference,
-// kept the prior strong for seconds: a 3.5 DN black level took 1.5 s.) The solution is applied in the measure that it
-// explains the samples (R^2 from kMatchExplainedNone to kMatchExplainedAll,
+// kept the prior strong for seconds: a 3.5 DN black level took 1.5 s.) The
+// solution is applied in the measure that it explains the samples (R^2 from kMatchExplainedNone to kMatchExplainedAll,
 // never less than it once was): twins' samples hold what the sampling itself
 // gets wrong, a few tenths of them at most, which a mapping must not chase.
 // New parameters change cam1's F: the estimator moves the previous frame's

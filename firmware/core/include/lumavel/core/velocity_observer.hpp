@@ -105,6 +105,11 @@ class VelocityObserver {
   static constexpr int64_t kConvergingTausQ4 = fx::q_of(params::kConvergingTaus, 4);
   static_assert(fx::q_of(params::kConvergingTaus, 30) == kConvergingTausQ4 << 26, "exact in Q4");
   static constexpr int64_t kStartPriorQ16 = fx::q_of(params::kObserverStartPrior, 16);
+  // The time since the start plus kObserverStartPrior tau, within [1, tau] us.
+  static uint32_t young_time_constant_us(int64_t since_start_us, uint32_t tau_us) {
+    const int64_t young_us = since_start_us + ((int64_t{tau_us} * kStartPriorQ16) >> 16);
+    return static_cast<uint32_t>(young_us < 1 ? 1 : young_us < tau_us ? young_us : tau_us);
+  }
   SpeedQ16 v_ = 0;
   bool started_ = false;
   int64_t since_start_us_ = 0;  // in the whole microseconds each step takes

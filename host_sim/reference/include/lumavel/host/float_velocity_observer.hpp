@@ -59,6 +59,10 @@ class FloatVelocityObserver {
   bool converging_now() const { return !started_ || since_start_us_ < converging_us_; }
 
  private:
+  // The time since the start plus kObserverStartPrior tau, within [1 us, tau] (s).
+  static double young_time_constant(int64_t since_start_us, double tau) {
+    return std::min(tau, std::max(static_cast<double>(since_start_us) * 1e-6 + params::kObserverStartPrior * tau, 1e-6));
+  }
   double v_ = 0;
   bool started_ = false;
   int64_t since_start_us_ = 0;  // in the whole microseconds of each step, as the core counts
