@@ -458,6 +458,24 @@ TEST(Cli, ThePlotRendersToAPng) {
   STRCMP_CONTAINS(">FRAME_GAP<", fixture::read_text(svg).c_str());
 }
 
+// '--plot -' is standard output, as '-o -' is (was: the SVG written to a file
+// named '-', exit 0); with the CSV there too it is refused before the run.
+TEST(Cli, PlotDashIsStandardOutput) {
+  rec();
+  Outcome r = sim("run rec --quiet -o est.csv --plot -");
+  LONGS_EQUAL(0, r.code);
+  CHECK(r.out.rfind("<svg", 0) == 0);
+  CHECK(!exists(dir.path() + "/-"));
+  CHECK(exists(dir.path() + "/est.csv"));
+  for (const char* args : {"run rec --quiet --plot -", "run rec --quiet -o - --plot -"}) {
+    r = sim(args);
+    LONGS_EQUAL_TEXT(2, r.code, args);
+    STRCMP_CONTAINS("- (--plot): standard output takes the CSV already (no -o, or -o -)", r.err.c_str());
+    STRCMP_EQUAL_TEXT("", r.out.c_str(), args);
+    CHECK_TEXT(!exists(dir.path() + "/-"), args);
+  }
+}
+
 // An output that cannot be written is refused before the work that fills it
 // (a 30 s calibration, a run), naming the option, the path and the reason.
 TEST(Cli, UnwritableOutputsAreRefusedBeforeTheWork) {

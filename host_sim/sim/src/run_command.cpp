@@ -244,6 +244,11 @@ int run(const RunArgs& a) {
       throw std::runtime_error(shown_path(path) + " (" + option + "): " + why);
   };
   if (a.output != "-" && !a.output.empty()) check_output(a.output, "CSV file", "-o");
+  // '--plot -' is standard output, as '-o -' is; it cannot take both.
+  const bool plot_to_stdout = a.plot == "-";
+  if (plot_to_stdout && (a.output == "-" || a.output.empty()))
+    throw cli::UsageError("- (--plot): standard output takes the CSV already (no -o, or -o -): give -o FILE for "
+                          "the CSV, or --plot FILE.svg");
   if (!a.hid_config.empty()) {
     check_output(a.hid_config, "configuration file", "--hid-config");
     // It is read back too: a FIFO or a device there would block or never end.
@@ -253,13 +258,13 @@ int run(const RunArgs& a) {
   }
   if (a.hid.rfind("file:", 0) == 0) check_output(a.hid.substr(5), "report file", "--hid file:");
   const Recording rec = load_recording(a.rec);
-  if (!rec.groundtruth.empty() || !a.plot.empty())
+  if ((!rec.groundtruth.empty() || !a.plot.empty()) && !plot_to_stdout)
     check_output(a.plot.empty() ? default_plot_path(a) : a.plot, "plot file", a.plot.empty() ? "the plot" : "--plot");
   // No output may land on what the run reads, nor two outputs on one file.
   {
     std::vector<std::pair<std::string, const char*>> outs;
     if (a.output != "-" && !a.output.empty()) outs.emplace_back(a.output, "-o");
-    if (!rec.groundtruth.empty() || !a.plot.empty())
+    if ((!rec.groundtruth.empty() || !a.plot.empty()) && !plot_to_stdout)
       outs.emplace_back(a.plot.empty() ? default_plot_path(a) : a.plot, a.plot.empty() ? "the plot" : "--plot");
     if (a.hid.rfind("file:", 0) == 0) outs.emplace_back(a.hid.substr(5), "--hid file:");
     if (!a.hid_config.empty()) outs.emplace_back(a.hid_config, "--hid-config");
@@ -349,7 +354,7 @@ int run(const RunArgs& a) {
   const std::string plot = a.plot.empty() ? default_plot_path(a) : a.plot;
   const bool want_plot = !rec.groundtruth.empty() || !a.plot.empty();
   std::unique_ptr<OutputFile> plot_out;
-  if (want_plot) plot_out = std::make_unique<OutputFile>(plot);
+  if (want_plot) plot_out = std::make_unique<OutputFile>(plot_to_stdout ? std::string() : plot);
 
   std::unique_ptr<cli::Progress> bar;
   if (!a.quiet) bar = std::make_unique<cli::Progress>(static_cast<long>(rec.frames.size()), "run");
@@ -367,7 +372,7 @@ int run(const RunArgs& a) {
                                                         " engine, " + std::to_string(result.width) + "x" +
                                                         std::to_string(result.height));
     if (std::fwrite(svg.data(), 1, svg.size(), plot_out->get()) != svg.size())
-      throw std::runtime_error(plot + ": cannot write the plot");
+      throw std::runtime_error((plot_to_stdout ? std::string("standard output") : plot) + ": cannot write the plot");
     plot_out->commit();
   }
   out.commit();
@@ -401,7 +406,7 @@ int run(const RunArgs& a) {
     std::fprintf(stderr, "%s\n", gyro_offset_line(options.engine, !a.no_gyro_offset_learning, result.track, last.gyro_offset).c_str());
     std::fprintf(stderr, "%s\n", photometric_line(options.engine, !a.no_photometric_match, last.photometric).c_str());
     std::fprintf(stderr, "%s\n", clip_line(options, result).c_str());
-    if (want_plot) std::fprintf(stderr, "plot: %s\n", plot.c_str());
+    if (want_plot) std::fprintf(stderr, "plot: %s\n", plot_to_stdout ? "standard output" : plot.c_str());
     if (hid) std::fprintf(stderr, "hid: %u reports sent through %s, %u overruns\n", hid->sent(), a.hid.c_str(), hid->overruns());
     if (hid && a.hid_linger_s != 0) {
       if (a.hid_linger_s < 0) std::fprintf(stderr, "hid: answering feature reports until interrupted\n");
@@ -488,8 +493,8 @@ void add_run_command(cli::Tool& tool) {
   c->add_option("--plot", a->plot,
                 "plot file (default: REC_estimates.svg next to the -o file,\n"
                 "or in the current folder when the output is standard output\n"
-                "or a device such as /dev/null); written when the recording has\n"
-                "ground truth or when --plot is given")
+                "or a device such as /dev/null; '-': standard output, with -o FILE);\n"
+                "written when the recording has ground truth or when --plot is given")
       ->type_name("FILE.svg")
       ->check(cli::path_name());
   c->add_option("--hid", a->hid,
