@@ -209,6 +209,8 @@ TEST(Cli, AFifoNobodyReadsIsRefusedNotWaitedOn) {
     LONGS_EQUAL_TEXT(1, r.code, args);
     STRCMP_CONTAINS("fifo: cannot create", r.err.c_str());
     STRCMP_CONTAINS("is a FIFO (named pipe) that no process reads (none came within 2 s)", r.err.c_str());
+    // Nothing more: '(check the directory exists and is writable)' followed it for --hid file:.
+    STRCMP_CONTAINS("start its reader first, or write to a file\n", r.err.c_str());
     CHECK_TEXT(!exists(dir.path() + "/est.csv"), args);
   }
 }

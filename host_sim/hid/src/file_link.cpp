@@ -64,7 +64,9 @@ std::unique_ptr<hal::ReportLink> make_file_link(const std::string& path) {
   try {
     return std::make_unique<FileLink>(path);
   } catch (const std::runtime_error& e) {
-    throw HidLinkError(std::string(e.what()) + " (check the directory exists and is writable)");
+    // Its reason says why already (a FIFO nobody reads, the system's error);
+    // run refuses a folder that does not exist before it gets here.
+    throw HidLinkError(e.what());
   }
 }
 
