@@ -442,6 +442,19 @@ TEST(Cli, QuickReproduceNeverWritesTheCommittedPage) {
   STRCMP_CONTAINS("--quick", r.out.c_str());
 }
 
+// reproduce's page to a FIFO nobody reads is refused after 2 s, as run's
+// outputs are (was: waited on in open() for ever, the studies done). The
+// real-recording section is the shortest: a few seconds, or skipped where
+// the slider_depth data is not there.
+TEST(Cli, ReproducePageToAFifoNobodyReadsIsRefused) {
+  CHECK(::mkfifo((dir.path() + "/page.md").c_str(), 0600) == 0);
+  const Outcome r = sim("reproduce --only 'Real recording' --out out_r --doc page.md", 120);
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("lumavel-sim reproduce: error: page.md (--doc): cannot write the page: is a FIFO (named pipe) that "
+                  "no process reads (none came within 2 s)",
+                  r.err.c_str());
+}
+
 // The plot a run writes is an SVG that a real renderer draws (rsvg-convert,
 // Debian librsvg2-bin): what a user converts to look at it.
 TEST(Cli, ThePlotRendersToAPng) {

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <memory>
 #include <set>
 #include <sstream>
@@ -283,11 +282,14 @@ int run(const Options& o) {
   info.render_seconds = tally.seconds;
   info.renders_reused = tally.reused_from_earlier_run;
   info.machine = machine;
-  std::ofstream out(o.doc);
-  if (!out) throw std::runtime_error(o.doc + ": cannot write");
-  out << results_markdown(results, sections, info);
-  out.close();
-  if (!out) throw std::runtime_error(o.doc + ": write error");
+  // A FIFO nobody reads is refused after a short wait, as run's outputs are
+  // (an ofstream waited in open() for ever, the studies done).
+  std::string cannot;
+  std::FILE* out = open_for_writing(o.doc, "w", cannot);
+  if (out == nullptr) throw std::runtime_error(shown_path(o.doc) + " (--doc): cannot write the page: " + cannot);
+  const std::string page = results_markdown(results, sections, info);
+  const bool written = std::fwrite(page.data(), 1, page.size(), out) == page.size();
+  if (std::fclose(out) != 0 || !written) throw std::runtime_error(shown_path(o.doc) + " (--doc): write error");
   std::fprintf(stderr, "wrote %s (%s)\n", o.doc.c_str(), duration_text(info.seconds).c_str());
   return 0;
 }
