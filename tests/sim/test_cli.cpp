@@ -159,6 +159,23 @@ TEST(Cli, MissingRecordingExitsOne) {
   STRCMP_CONTAINS("lumavel-sim render: error: afile: is a file, not a folder to write the recording in", r.err.c_str());
 }
 
+// render's summary goes to standard output, progress to standard error; -q
+// silences both, as its help says (it said 'no summary on standard error',
+// where there was none).
+TEST(Cli, RenderSummaryIsOnStandardOutputAndQuietSilencesIt) {
+  const std::string scenario = "'" LUMAVEL_SOURCE_DIR "/host_sim/scenarios/paper_sim_aligned.yaml' --resolution 40x30 --duration 0.1";
+  Outcome r = sim("render " + scenario + " out");
+  LONGS_EQUAL(0, r.code);
+  STRCMP_CONTAINS("out/mav0: 6 frame pairs (0 dropped) 40x30", r.out.c_str());
+  CHECK(r.err.find("frame pairs") == std::string::npos);
+  r = sim("render " + scenario + " out --force -q");
+  LONGS_EQUAL(0, r.code);
+  STRCMP_EQUAL("", r.out.c_str());
+  STRCMP_EQUAL("", r.err.c_str());
+  STRCMP_CONTAINS("-q,--quiet                  no progress on standard error, no summary on standard output",
+                  sim("render --help").out.c_str());
+}
+
 TEST(Cli, BadGyroNamesFileAndLineAndLeavesNoOutput) {
   const std::string m = rec() + "/mav0/";  // messages show the path as given: rec/...
   fixture::set_line(m + "imu0/data.csv", 12, "1010000000,0.001,-0.002,nan,0.1,0,9.81");

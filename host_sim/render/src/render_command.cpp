@@ -27,7 +27,8 @@ const char* const kDescription =
     "OUT/mav0/ in the EuRoC layout (cam0/, cam1/, imu0/, state_groundtruth_estimate0/)\n"
     "of the recording format (docs/recording-format.md). Scenario keys are\n"
     "documented in host_sim/scenarios/README.md. Progress goes to standard error:\n"
-    "a bar on a terminal, otherwise a line every few seconds.";
+    "a bar on a terminal, otherwise a line every few seconds; at the end a summary\n"
+    "(frames, drops, samples, background seen) goes to standard output.";
 
 struct RenderArgs {
   std::string scenario, out;
@@ -137,7 +138,7 @@ void add_render_command(cli::Tool& tool) {
       ->type_name("N")
       ->check(cli::whole_number_in(1, 256));
   c->add_flag("--force", a->force, "replace an existing OUT/mav0");
-  c->add_flag("-q,--quiet", a->quiet, "no progress and no summary on standard error");
+  c->add_flag("-q,--quiet", a->quiet, "no progress on standard error, no summary on standard output");
 }
 
 int render_main(int argc, char** argv) { return cli::run_command_alone("lumavel-sim", add_render_command, argc, argv); }
