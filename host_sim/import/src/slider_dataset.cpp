@@ -69,8 +69,12 @@ void check_increasing(double prev, double t, bool any, const std::string& path, 
 }  // namespace
 
 SliderDataset read_slider_dataset(const std::string& dir) {
+  // (was: '/nonexistent/images.txt: does not exist', as if only the file were missing)
+  if (const std::string why = why_not_a_folder(dir, kSliderDatasetFolder); !why.empty())
+    throw recording_error_in(shown_path(dir), why);
   SliderDataset d;
   const std::string images = dir + "/images.txt";
+  FrameNames named;
   for_each_row(images, [&](std::istringstream& s, long line) {
     SliderFrame f;
     f.t = time_s(s, images, line);

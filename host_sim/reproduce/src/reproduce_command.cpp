@@ -19,6 +19,7 @@
 #include "lumavel/host/render/scenario_loader.hpp"
 #include "lumavel/host/render/scene.hpp"
 #include "lumavel/host/run_recording.hpp"
+#include "lumavel/host/slider_dataset.hpp"
 #include "lumavel/host/track_plot.hpp"
 #include "render_cache.hpp"
 #include "results_markdown.hpp"
@@ -349,7 +350,7 @@ void add_reproduce_command(cli::Tool& tool) {
     // Only the default dataset may be missing: a --slider-data that is no
     // folder (a typo) skipped its section as "not there", exit 0.
     if (!o->slider_data.empty())
-      if (const std::string why = why_not_a_folder(o->slider_data, "dataset folder (images.txt, groundtruth.txt, calib.txt)");
+      if (const std::string why = why_not_a_folder(o->slider_data, kSliderDatasetFolder);
           !why.empty())
         throw std::runtime_error(shown_path(o->slider_data) + " (--slider-data): " + why);
     resolve_paths(*o);

@@ -32,9 +32,14 @@ struct SliderDataset {
   SliderCalib calib;
 };
 
+// What DIR is, in the reasons a path is refused ("does not exist", "is a
+// file, not a dataset folder (...)").
+constexpr const char* kSliderDatasetFolder = "dataset folder (images.txt, groundtruth.txt, calib.txt)";
+
 // Reads DIR/images.txt, DIR/groundtruth.txt, DIR/calib.txt (images are not
 // decoded here). Throws RecordingError naming the file and line; a position
-// beyond the ground truth's physical bound (groundtruth.hpp) is refused.
+// beyond the ground truth's physical bound (groundtruth.hpp) is refused; a
+// DIR that is no folder is refused by its own name.
 SliderDataset read_slider_dataset(const std::string& dir);
 
 }  // namespace lumavel::host
