@@ -545,6 +545,9 @@ std::vector<Case> slider_cases() {
   refused("image truncated", [=](const std::string& d) { truncate_file(d + "/images/frame_00000004.png", 70); }, "images.txt", ":5:");
   refused("image of another size", [=](const std::string& d) { write_png(d + "/images/frame_00000004.png", 40, 36, 8, PNG_COLOR_TYPE_GRAY); }, "images.txt", ":5:");
   refused("image RGB", [=](const std::string& d) { write_png(d + "/images/frame_00000004.png", 48, 36, 8, PNG_COLOR_TYPE_RGB); }, "images.txt", ":5:");
+  // As a recording's frame named by two rows (was: exit 0, the repeated frame read as a standstill).
+  refused("image named twice", [=](const std::string& d) { line5(d + "/images.txt", [](const std::string& l) { return l.substr(0, l.find(' ')) + " images/frame_00000003.png"; }); },
+          "images.txt", ":5: filename 'images/frame_00000003.png' is also the frame of line 4");
   // The folder itself (was: '.../nowhere/images.txt: does not exist', as if only the file were missing).
   c.push_back({"import: dataset folder missing", "import", nullptr, Expect::kRefused, "/nowhere: does not exist", "", [](const std::string& d) { return d + "/nowhere"; }});
   c.push_back({"import: dataset folder a file", "import", nullptr, Expect::kRefused, "calib.txt: is a file, not a dataset folder", "", [](const std::string& d) { return d + "/calib.txt"; }});

@@ -49,7 +49,7 @@ CamRows read_cam_rows(const std::string& root, int cam) {
   const std::string dir = root + "/" + layout::kCamDir[cam];
   c.csv = dir + "/data.csv";
   c.rows = read_csv_table(c.csv, layout::cam_columns());
-  std::map<std::string, long> named;  // a frame file is one frame: a second row naming it is a damaged table
+  FrameNames named;  // a frame file is one frame: a second row naming it is a damaged table
   for (CsvRow& r : c.rows) {
     std::string& name = r.fields[0];
     if (name.empty()) throw recording_error_at(c.csv, r.line, "empty filename");
@@ -59,11 +59,8 @@ CamRows read_cam_rows(const std::string& root, int cam) {
       throw recording_error_at(c.csv, r.line,
                                "filename '" + name + "' leaves " + layout::kCamDir[cam] +
                                    "/data/ (names are relative to it, with no '..' and no leading '/')");
-    const auto [first, fresh] = named.emplace(std::filesystem::path(name).lexically_normal().string(), r.line);
-    if (!fresh)
-      throw recording_error_at(c.csv, r.line,
-                               "filename '" + name + "' is also the frame of line " + std::to_string(first->second) +
-                                   ": each row names its own image (a repeated frame would read as a standstill)");
+    if (const std::string why = named.why_repeated(name, r.line); !why.empty())
+      throw recording_error_at(c.csv, r.line, why);
     name = dir + "/data/" + name;
     if (const std::string why = why_not_a_file(name); !why.empty())
       throw recording_error_at(c.csv, r.line, "image file " + shown_path(name) + " " + why);

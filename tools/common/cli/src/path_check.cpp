@@ -47,6 +47,13 @@ std::string why_nul_in_name(const std::string& name) {
          std::to_string(nul + 1) + "): a damaged row";
 }
 
+std::string FrameNames::why_repeated(const std::string& name, long line) {
+  const auto [first, fresh] = line_of_.emplace(std::filesystem::path(name).lexically_normal().string(), line);
+  if (fresh) return "";
+  return "filename '" + name + "' is also the frame of line " + std::to_string(first->second) +
+         ": each row names its own image (a repeated frame would read as a standstill)";
+}
+
 std::string why_too_big_for_text(const std::string& path, const std::string& holds) {
   std::error_code e;
   const std::uintmax_t bytes = std::filesystem::file_size(path, e);

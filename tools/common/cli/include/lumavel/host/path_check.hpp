@@ -5,6 +5,7 @@
 // are checked before the work that fills them, not after it.
 #pragma once
 #include <cstdio>
+#include <map>
 #include <string>
 
 namespace lumavel::host {
@@ -55,6 +56,19 @@ bool lies_inside(const std::string& path, const std::string& folder);
 // "'a.png' is followed by a NUL byte inside the name (character 6): a damaged
 // row" - the system would read the name up to the NUL and open a.png.
 std::string why_nul_in_name(const std::string& name);
+// The frame files named by the rows of a table (a cam*/data.csv, a slider
+// dataset's images.txt): each row names its own image, a repeated one would
+// read as a standstill.
+class FrameNames {
+ public:
+  // "" the first time `name` is seen (names compared lexically normalised:
+  // './x.png' is 'x.png'); else "filename 'x.png' is also the frame of line
+  // 7: each row names its own image (...)".
+  std::string why_repeated(const std::string& name, long line);
+
+ private:
+  std::map<std::string, long> line_of_;
+};
 // `path` as a message shows it: in full up to 200 characters, else its start
 // and end with the length ("aaa...zzz (5000 characters)").
 std::string shown_path(const std::string& path);
