@@ -16,6 +16,7 @@
 #include "lumavel/host/path_check.hpp"
 #include "lumavel/host/recording_writer.hpp"
 #include "lumavel/host/rig.hpp"
+#include "lumavel/host/rig_settings_check.hpp"
 #include "lumavel/host/sensor_yaml.hpp"
 #include "lumavel/host/slider_dataset.hpp"
 #include "lumavel/host/time_shift_pairing.hpp"
@@ -208,6 +209,9 @@ ImportSliderSummary import_slider(const std::string& data_dir, const std::string
     if (made_here) std::filesystem::remove_all(mav0, ignored);
     throw;
   }
+  // As render's: a focal length of 1e300 px in calib.txt (of which only the
+  // ratios are checked above) was written, exit 0, and run refused it.
+  check_runnable(out_rec);
   return sum;
 }
 

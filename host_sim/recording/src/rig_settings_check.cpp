@@ -2,8 +2,10 @@
 
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 #include "lumavel/host/recording_layout.hpp"
+#include "lumavel/host/rig.hpp"
 
 namespace lumavel::host {
 
@@ -76,6 +78,15 @@ void check_rig_settings(const Recording& rec, const EstimatorSettings& s) {
   } catch (const SettingsError& e) {
     const std::string where = e.setting() == "kernels" ? kernels_source(rec, s) : setting_source(rec, e.setting());
     throw RecordingError(where + ": " + e.what());
+  }
+}
+
+void check_runnable(const std::string& out) {
+  try {
+    const Recording rec = load_recording(out);
+    check_rig_settings(rec, derive_settings(rec, default_working_size(rec)));
+  } catch (const std::exception& e) {
+    throw std::runtime_error(out + "/mav0 was written, but lumavel-sim run refuses it: " + e.what());
   }
 }
 

@@ -38,18 +38,6 @@ struct RenderArgs {
   bool force = false, quiet = false;
 };
 
-// A scenario can be valid and still give a recording that `run` refuses
-// (no baseline, one row of 40 at the scenario's field of view, every frame
-// dropped, no gyro sample in a nanosecond): said here, with run's reason.
-void check_runnable(const std::string& out) {
-  try {
-    const Recording rec = load_recording(out);
-    check_rig_settings(rec, derive_settings(rec, default_working_size(rec)));
-  } catch (const std::exception& e) {
-    throw std::runtime_error(out + "/mav0 was written, but lumavel-sim run refuses it: " + e.what());
-  }
-}
-
 int render_to_folder(RenderArgs& a) {
   if (!a.resolution.empty()) cli::parse_size(a.resolution, a.ov.width, a.ov.height);
   a.opt.progress = !a.quiet;

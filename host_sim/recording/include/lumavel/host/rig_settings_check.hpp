@@ -17,4 +17,11 @@ std::string setting_source(const Recording& rec, const std::string& setting);
 // "FILE: key: value: rule" for the first setting it cannot take.
 void check_rig_settings(const Recording& rec, const EstimatorSettings& s);
 
+// For the commands that write a recording (render, import-slider): a valid
+// input can still give a recording that `run` refuses (no baseline, a focal
+// length beyond the core's range at its working size, every frame dropped):
+// throws "OUT/mav0 was written, but lumavel-sim run refuses it: " + run's
+// reason, when `run` at its default working size would.
+void check_runnable(const std::string& out);
+
 }  // namespace lumavel::host
