@@ -48,6 +48,14 @@ grep -q "adir: is a folder, not a report file" dir.err || fail "folder as report
 "$READ" replay est.csv -o refused.csv > /dev/null 2> notrep.err && fail "CSV accepted as a report file"
 grep -q "not a lumavel report file" notrep.err || fail "wrong message: $(cat notrep.err)"
 [ -e refused.csv ] && fail "a refused replay left refused.csv behind"
+# stream -o FIFO that no process reads: refused after 2 s, before any device
+# is looked for (was: waited in open() for ever).
+mkfifo nobody.fifo || fail "mkfifo"
+timeout 30 "$READ" stream -o nobody.fifo > /dev/null 2> fifo.err
+rc=$?
+[ $rc -eq 1 ] || fail "stream -o FIFO nobody reads: exit $rc, expected 1: $(cat fifo.err)"
+grep -q "nobody.fifo: cannot create the CSV: is a FIFO (named pipe) that no process reads" fifo.err \
+  || fail "stream -o FIFO: wrong message: $(cat fifo.err)"
 # `config set --file` checks the file before looking for a device: errors
 # name the file, the line and the key, exit 1, nothing sent.
 printf 'width=40\n# a comment\ntau_us=fast\n' > bad.cfg

@@ -44,8 +44,10 @@ void open_outputs(const StreamOptions& o, bool is_stream, Outputs& out) {
   const int forced = o.live ? 1 : o.no_live ? 0 : -1;
   if (!o.output.empty() && o.output != "-") {
     if (is_stream) {
-      out.growing.reset(std::fopen(o.output.c_str(), "w"));
-      if (!out.growing) throw std::runtime_error(o.output + ": cannot create the CSV: " + std::strerror(errno));
+      // A FIFO nobody reads is refused after a short wait (fopen waited for ever).
+      std::string why;
+      out.growing.reset(host::open_for_writing(o.output, "w", why));
+      if (!out.growing) throw std::runtime_error(o.output + ": cannot create the CSV: " + why);
       out.csv = out.growing.get();
     } else {
       out.file = std::make_unique<host::OutputFile>(o.output);
