@@ -539,6 +539,16 @@ TEST(Cli, UnwritableOutputsAreRefusedBeforeTheWork) {
   LONGS_EQUAL(1, r.code);
   STRCMP_CONTAINS("lumavel-sim calibrate: error: adir (--write): is a folder, not a configuration file", r.err.c_str());
   CHECK(r.err.find("registering") == std::string::npos);
+  // '-' is standard output only where an output can go there (-o, --plot):
+  // elsewhere a file named '-' was made, exit 0, unsaid.
+  r = sim("run rec -o est.csv --hid file:-");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("- (--hid file:): '-' stands for standard output, where no report file is written: give a file name",
+                  r.err.c_str());
+  r = sim("calibrate rec --write -");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("- (--write): '-' stands for standard output, where no configuration file is written", r.err.c_str());
+  CHECK(!exists(dir.path() + "/-") && !exists(dir.path() + "/est.csv"));
   // reproduce's page and folders, before its studies (was: every study run, then 'cannot write');
   // --scenarios nowhere: without the check the run stops at its first scenario instead.
   fixture::write_text(dir.path() + "/afile", "x");

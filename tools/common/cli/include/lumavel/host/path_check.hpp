@@ -25,7 +25,9 @@ std::string why_not_a_folder(const std::string& path, const std::string& what = 
 // "" when a `what` can be written at `path`: an existing file or special file
 // (written in place), or a new name in a folder that can be written to;
 // otherwise the reason, e.g. "is a folder, not a plot file", "cannot be
-// created: its folder out does not exist".
+// created: its folder out does not exist", or for "-" (standard output,
+// which the callers that can write there take before asking) "'-' stands for
+// standard output, where no plot file is written: ...".
 std::string why_not_writable(const std::string& path, const std::string& what = "file");
 // How long an output that is a FIFO (named pipe) waits for a process to read
 // it (`run -o FIFO & reader FIFO` may start the reader a moment later).
