@@ -590,6 +590,9 @@ std::vector<Case> read_cases(const std::string& report) {
   // As a recording table's (was: "width = 40height=30: not a whole number").
   config("CR-only line ends", "width=40\rheight=30\r", ":1: a carriage return (CR) inside the line, at character 9");
   config("lens table short", "width=40\nlens_cam0=0,0,0\n", ":2:");
+  // A binary file's bytes as \xNN (was: sent to the terminal as they were, escape sequences and all).
+  config("binary garbage", "width=40\n\x1b[2J\x07\x01garbage\n\x1b]0;title\x07=1\n", ":2: \"\\x1B[2J\\x07\\x01garbage\" is not KEY=VALUE");
+  config("binary garbage as a key", "\x1b]0;title\x07=1\n", ":1: unknown configuration key \"\\x1B]0;title\\x07\"");
   // --file takes several names (was: "width=80: does not exist", no more said).
   c.push_back({"config: a setting after --file FILE", "config", [](const std::string& d) { write_text(d + "/rig.cfg", "width=40\n"); },
                Expect::kRefused, "width=80", "give the settings before --file", {}, {"width=80"}});

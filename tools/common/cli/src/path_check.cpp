@@ -154,11 +154,30 @@ bool lies_inside(const std::string& path, const std::string& folder) {
   return std::mismatch(f.begin(), f.end(), p.begin(), p.end()).first == f.end();
 }
 
+namespace {
+
+std::string without_controls(const std::string& s) {
+  std::string out;
+  for (const char ch : s) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c >= 0x20 && c != 0x7F) {
+      out += ch;
+      continue;
+    }
+    char hex[8];
+    std::snprintf(hex, sizeof hex, "\\x%02X", c);
+    out += hex;
+  }
+  return out;
+}
+
+}  // namespace
+
 std::string shown_path(const std::string& path) {
   constexpr size_t kShown = 200, kEnds = 60;
-  if (path.size() <= kShown) return path;
-  return path.substr(0, kEnds) + "..." + path.substr(path.size() - kEnds) + " (" + std::to_string(path.size()) +
-         " characters)";
+  if (path.size() <= kShown) return without_controls(path);
+  return without_controls(path.substr(0, kEnds)) + "..." + without_controls(path.substr(path.size() - kEnds)) + " (" +
+         std::to_string(path.size()) + " characters)";
 }
 
 }  // namespace lumavel::host

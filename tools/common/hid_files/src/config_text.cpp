@@ -215,7 +215,8 @@ std::string trimmed(const std::string& s) {
 std::pair<std::string, std::string> split_setting(const std::string& kv) {
   const size_t eq = kv.find('=');
   const std::string k = eq == std::string::npos ? std::string() : trimmed(kv.substr(0, eq));
-  if (k.empty()) throw std::runtime_error("\"" + kv + "\" is not KEY=VALUE (keys: `lumavel-read config --help`)");
+  if (k.empty())
+    throw std::runtime_error("\"" + shown_path(kv) + "\" is not KEY=VALUE (keys: `lumavel-read config --help`)");
   return {k, trimmed(kv.substr(eq + 1))};
 }
 
@@ -302,7 +303,7 @@ void apply_value(DeviceSetup& d, const std::string& k, const std::string& v) {
   else if (k == "still_min_us") c.still_min_us = static_cast<uint32_t>(parse_int(v, 0, u32));
   else if (k == "lens_cam0") d.lens[0] = parse_lens(k, v);
   else if (k == "lens_cam1") d.lens[1] = parse_lens(k, v);
-  else throw std::runtime_error("unknown configuration key \"" + k + "\"; keys:\n" + config_keys_help());
+  else throw std::runtime_error("unknown configuration key \"" + shown_path(k) + "\"; keys:\n" + config_keys_help());
 }
 
 }  // namespace
@@ -322,6 +323,7 @@ void apply_setting(DeviceSetup& d, const std::string& kv) {
     // "width = -3: width must be 16..160 columns" (as for 0, which parses).
     std::string value = v;
     if (value.size() > 40) value = value.substr(0, 37) + "...";
+    value = shown_path(value);  // a control character as \xNN
     const std::string rule = rule_of_key(k);
     throw std::runtime_error(k + " = " + value + ": " +
                              (e.beyond_field ? rule : std::string(e.what()) + (rule.empty() ? "" : "; " + rule)));
@@ -492,6 +494,7 @@ std::string check_settings(const DeviceSetup& base, const GivenSettings& given) 
   if (blamed) {
     std::string value = blamed->value;
     if (value.size() > 40) value = value.substr(0, 37) + "...";
+    value = shown_path(value);  // a control character as \xNN
     return blamed->where + ": " + blamed->key + " = " + value + ": " + rule;
   }
   std::string names;

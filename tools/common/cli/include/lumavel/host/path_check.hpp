@@ -71,8 +71,10 @@ class FrameNames {
  private:
   std::map<std::string, long> line_of_;
 };
-// `path` as a message shows it: in full up to 200 characters, else its start
-// and end with the length ("aaa...zzz (5000 characters)").
+// `path` (or a field, a line read from a file) as a message shows it: in full
+// up to 200 characters, else its start and end with the length ("aaa...zzz
+// (5000 characters)"); ASCII control characters are shown as \xNN, never
+// sent to the terminal as they are (a binary file's escape sequences).
 std::string shown_path(const std::string& path);
 
 }  // namespace lumavel::host
