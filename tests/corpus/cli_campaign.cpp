@@ -606,6 +606,12 @@ std::vector<Case> read_cases(const std::string& report) {
   replay("truncated", [](const std::string& b) { return b.substr(0, b.size() / 2 + 3); }, "record");
   replay("bit flipped", [](std::string b) { b[b.size() / 2] = static_cast<char>(b[b.size() / 2] ^ 0x20); return b; }, "record");
   replay("zero-length record", [](const std::string& b) { return b + std::string(1, '\0'); }, "record");
+  // Records 43 bytes long (1 + 42): one missing, two swapped (was: 'lost 1 report(s) ... (host too slow, or
+  // reconnect)', exit 0, a row missing from the CSV).
+  replay("a record missing", [](const std::string& b) { return b.substr(0, 8 + 5 * 43) + b.substr(8 + 6 * 43); },
+         "record 6 at byte 223 (records missing: a damaged report file");
+  replay("two records swapped", [](const std::string& b) { return b.substr(0, 8 + 5 * 43) + b.substr(8 + 6 * 43, 43) + b.substr(8 + 5 * 43, 43) + b.substr(8 + 7 * 43); },
+         "record 7 at byte 266 (records out of order: a damaged report file)");
   replay("no magic", [](const std::string& b) { return b.substr(8); }, "not a lumavel report file");
   replay("empty", [](const std::string&) { return std::string(); }, "not a lumavel report file");
   // 4 GB (sparse) of NUL bytes, the tool limited to 1 GB (was: read whole:

@@ -144,7 +144,7 @@ int cmd_replay(const std::string& file, const StreamOptions& o) {
   }
   Outputs out;
   open_outputs(o, false, out);
-  Sink sink(out.csv, false);
+  Sink sink(out.csv, false, true);
   std::vector<uint8_t> rec;
   int status = kExitOk;
   try {

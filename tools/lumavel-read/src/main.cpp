@@ -152,7 +152,9 @@ int main(int argc, char** argv) {
       "decode a report file (lumavel-sim run --hid file:FILE)\n\n"
       "Decodes a report file (as written by `lumavel-sim run --hid file:FILE`) into the\n"
       "same CSV as `stream`. Malformed reports are named (record, byte offset) on\n"
-      "stderr and make the exit status 1; the others are still written.",
+      "stderr and make the exit status 1, as do records missing or out of order (a\n"
+      "sequence gap: the file holds every report its run sent); the others are still\n"
+      "written. A duplicated record is named and skipped.",
       [replay, replay_file] { return cmd_replay(*replay_file, *replay); });
   r->add_option("FILE", *replay_file, "the report file")->required()->type_name("")->check(cli::path_name());
   add_stream_options(r, *replay, false);

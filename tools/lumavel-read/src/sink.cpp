@@ -7,7 +7,7 @@ namespace lumavel::read {
 namespace proto = lumavel::protocol;
 using Clock = std::chrono::steady_clock;
 
-Sink::Sink(std::FILE* csv, bool live) : csv_(csv), live_(live) {
+Sink::Sink(std::FILE* csv, bool live, bool from_file) : csv_(csv), live_(live), from_file_(from_file) {
   if (csv_ != nullptr) std::fprintf(csv_, "%s\n", csv_header().c_str());
 }
 
@@ -43,12 +43,17 @@ bool Sink::take(const uint8_t* buf, size_t len, const std::string& where) {
       return false;
     }
     if (gap >= 0x8000u) {  // behind the expected one: not a loss
-      std::fprintf(stderr, "%sseq went back from %u to %u %s (the device restarted, or reports out of order)\n",
-                   live_ ? "\n" : "", unsigned{static_cast<uint16_t>(next_seq_ - 1)}, unsigned{m.seq}, where.c_str());
+      if (from_file_) ++malformed_;
+      std::fprintf(stderr, "%sseq went back from %u to %u %s (%s)\n", live_ ? "\n" : "",
+                   unsigned{static_cast<uint16_t>(next_seq_ - 1)}, unsigned{m.seq}, where.c_str(),
+                   from_file_ ? "records out of order: a damaged report file" : "the device restarted, or reports out of order");
     } else {
       lost_ += gap;
-      std::fprintf(stderr, "%slost %u report(s) before seq %u %s (host too slow, or reconnect)\n",
-                   live_ ? "\n" : "", gap, unsigned{m.seq}, where.c_str());
+      if (from_file_) ++malformed_;
+      std::fprintf(stderr, "%slost %u report(s) before seq %u %s (%s)\n", live_ ? "\n" : "", gap, unsigned{m.seq},
+                   where.c_str(),
+                   from_file_ ? "records missing: a damaged report file, which holds every report its run sent"
+                              : "host too slow, or reconnect");
     }
   }
   have_seq_ = true;

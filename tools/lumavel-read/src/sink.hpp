@@ -15,7 +15,10 @@ namespace lumavel::read {
 class Sink {
  public:
   // csv may be null (live view only); live draws on stderr... on the terminal.
-  Sink(std::FILE* csv, bool live);
+  // from_file: the reports of a report file, which holds every report its run
+  // sent: a sequence gap or a step back there is a damaged file, counted as
+  // malformed, not a loss on a live link.
+  Sink(std::FILE* csv, bool live, bool from_file = false);
   ~Sink();
   // Decodes one input report; `where` names it in messages. True if it was a measurement.
   bool take(const uint8_t* buf, size_t len, const std::string& where);
@@ -30,7 +33,7 @@ class Sink {
   void draw(const protocol::Measurement& m);
 
   std::FILE* csv_;
-  bool live_;
+  bool live_, from_file_;
   bool have_seq_ = false;
   uint16_t next_seq_ = 0;
   uint64_t count_ = 0, malformed_ = 0, lost_ = 0, duplicated_ = 0;
