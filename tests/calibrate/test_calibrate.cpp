@@ -74,6 +74,8 @@ TEST(Calibrate, ASearchNarrowerThanOneStepIsRefused) {
     error = e.what();
   }
   std::filesystem::remove_all(misaligned);
+  // Naming the recording (was: 'no frame pair registered: ...', no file named).
+  STRCMP_CONTAINS((misaligned + "/mav0: no frame pair registered: ").c_str(), error.c_str());
   STRCMP_CONTAINS("frames matched well only at the end of the +-0.05 deg searched (--max-shift): is the misalignment larger?",
                   error.c_str());
 }

@@ -395,11 +395,11 @@ Calibration calibrate_misalignment(const Recording& rec, const CalibrationOption
   // search, where it does not count: that was said as "does the rig move past
   // a textured scene?", blaming the scene for a search too narrow.
   if (samples.empty() && at_edge > 0)
-    throw std::runtime_error("no frame pair registered: " + std::to_string(at_edge) + " of " +
+    throw std::runtime_error(rec.root + ": no frame pair registered: " + std::to_string(at_edge) + " of " +
                              std::to_string(out.candidates) + " frames matched well only at the end of the +-" +
                              deg(opt.max_shift_deg * M_PI / 180) + " deg searched (--max-shift): is the misalignment larger?");
   if (samples.empty())
-    throw std::runtime_error("no frame pair registered (does the rig move past a textured scene?)");
+    throw std::runtime_error(rec.root + ": no frame pair registered (does the rig move past a textured scene?)");
   out.misalignment = median(samples);
   // The search covers +-max_shift_deg: a median outside it (the gyro's
   // heading change dominating the registrations) is no answer.
