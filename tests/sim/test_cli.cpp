@@ -159,6 +159,16 @@ TEST(Cli, MissingRecordingExitsOne) {
   STRCMP_CONTAINS("lumavel-sim render: error: afile: is a file, not a folder to write the recording in", r.err.c_str());
 }
 
+// 'render SCENARIO -' rendered into a new folder named '-' (exit 0): a
+// recording is a folder, it cannot go to standard output.
+TEST(Cli, RenderToDashIsRefused) {
+  const Outcome r = sim("render '" LUMAVEL_SOURCE_DIR "/host_sim/scenarios/paper_sim_aligned.yaml' - --duration 0.1 -q");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("lumavel-sim render: error: - (OUT): '-' stands for standard output, where no recording is written: "
+                  "give a folder name (./- for a folder of that name)", r.err.c_str());
+  CHECK(!exists(dir.path() + "/-"));
+}
+
 // render's summary goes to standard output, progress to standard error; -q
 // silences both, as its help says (it said 'no summary on standard error',
 // where there was none).

@@ -89,12 +89,17 @@ std::string why_not_a_folder(const std::string& path, const std::string& what) {
   return std::string("is ") + special_kind(st.st_mode) + ", not a " + what;
 }
 
+std::string why_dash_is_not_an_output(const std::string& what, const std::string& kind) {
+  return "'-' stands for standard output, where no " + what + " is written: give a " + kind + " name (./- for a " +
+         kind + " of that name)";
+}
+
 std::string why_not_writable(const std::string& path, const std::string& what) {
   struct stat st {};
   if (path.empty()) return "an empty path, not a " + what;
   // '-' is standard output where an output can go there (run -o -, --plot -);
   // elsewhere a file named '-' was made, unsaid.
-  if (path == "-") return "'-' stands for standard output, where no " + what + " is written: give a file name (./- for a file of that name)";
+  if (path == "-") return why_dash_is_not_an_output(what);
   if (::stat(path.c_str(), &st) == 0) return S_ISDIR(st.st_mode) ? "is a folder, not a " + what : std::string();
   if (errno != ENOENT) return stat_failure(errno);
   const size_t slash = path.find_last_of('/');

@@ -29,6 +29,11 @@ std::string why_not_a_folder(const std::string& path, const std::string& what = 
 // which the callers that can write there take before asking) "'-' stands for
 // standard output, where no plot file is written: ...".
 std::string why_not_writable(const std::string& path, const std::string& what = "file");
+// The reason "-" is refused where an output cannot go to standard output:
+// "'-' stands for standard output, where no `what` is written: give a `kind`
+// name (./- for a `kind` of that name)" (kind: "file", or "folder" for an
+// output folder such as render's OUT).
+std::string why_dash_is_not_an_output(const std::string& what, const std::string& kind = "file");
 // How long an output that is a FIFO (named pipe) waits for a process to read
 // it (`run -o FIFO & reader FIFO` may start the reader a moment later).
 constexpr int kFifoReaderWaitMs = 2000;
