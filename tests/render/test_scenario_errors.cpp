@@ -251,3 +251,21 @@ TEST(ScenarioErrors, AListWhereTextOrAKeyBelongsIsNamed) {
   STRCMP_CONTAINS("bad.yaml:4: a key in 'camera' must be a word, not a list or a map", e.c_str());
   STRCMP_EQUAL("(accepted)", error_of(std::string("description:\n") + kGood).c_str());
 }
+
+// drops.frames: a frame past the recording's end was ignored and a frame
+// listed twice counted once, silently (the list said more than was dropped).
+TEST(ScenarioErrors, DroppedFramesBeyondTheRecordingOrRepeatedAreRefused) {
+  // kGood: 2 s at 60 Hz, frames 0..119.
+  std::string e = error_of(std::string(kGood) + "drops: {frames: [3, 120]}\n");
+  STRCMP_CONTAINS("bad.yaml:14: 'frames' = 120 is not a frame of the recording: frame numbers must be below its frame "
+                  "count, 120 (duration_s 2 s x rate_hz 60 Hz)", e.c_str());
+  e = error_of(std::string(kGood) + "drops:\n  frames:\n    - 5\n    - 119\n    - 5\n");
+  STRCMP_CONTAINS("bad.yaml:18: 'frames' lists frame 5 again (first at line 16): each frame once", e.c_str());
+  // A later first frame leaves fewer frames: 0.5 s + i / 60 < 2 s for i < 90.
+  e = error_of(replace(kGood, "  rate_hz: 60\n", "  rate_hz: 60\n  first_frame_s: 0.5\n") + "drops: {frames: [90]}\n");
+  STRCMP_CONTAINS("bad.yaml:15: 'frames' = 90 is not a frame of the recording: frame numbers must be below its frame "
+                  "count, 90 (duration_s 2 s x rate_hz 60 Hz, from first_frame_s)", e.c_str());
+  STRCMP_EQUAL("(accepted)", error_of(std::string(kGood) + "drops: {frames: [0, 60, 119]}\n").c_str());
+  STRCMP_EQUAL("(accepted)",
+               error_of(replace(kGood, "  rate_hz: 60\n", "  rate_hz: 60\n  first_frame_s: 0.5\n") + "drops: {frames: [89]}\n").c_str());
+}

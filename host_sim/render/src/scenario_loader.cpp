@@ -453,9 +453,35 @@ void read_imu(const Reader& r, const YAML::Node& n, Scenario& s) {
 void read_drops(const Reader& r, const YAML::Node& n, Scenario& s) {
   r.check_keys(n, "drops", {"frames", "rate"});
   if (const YAML::Node f = n["frames"]) {
-    for (double v : r.list(f, "frames", 0, 0, 1e9)) {
+    // A frame beyond the recording was ignored and one listed twice counted
+    // once, silently: refused, so the list says what the recording lacks.
+    // The recording's frames are those the renderer makes (FrameRenderer::
+    // frame_count: mid-exposure first_frame_s + i / rate_hz, period rounded
+    // to nanoseconds, before duration_s), of the scenario as written (a
+    // --duration override may shorten it: drops past its end then just fall away).
+    const double period_ns = static_cast<double>(std::llround(1e9 / s.camera.rate_hz));
+    const double first_ns = static_cast<double>(std::llround(s.camera.first_frame_s * 1e9));
+    const double frames = std::max(0.0, std::ceil((s.duration_s * 1e9 - first_ns) / period_ns));
+    std::map<int, int> line_of;
+    const std::vector<double> list = r.list(f, "frames", 0, 0, 1e9);
+    for (size_t k = 0; k < list.size(); ++k) {
+      const double v = list[k];
+      const YAML::Node e = f[k];
       if (v != std::floor(v)) r.fail(f, "'frames' must be whole frame indices");
-      s.dropped_frames.push_back(static_cast<int>(v));
+      if ((first_ns + v * period_ns) * 1e-9 >= s.duration_s) {
+        std::ostringstream os;
+        os << "'frames' = " << v << " is not a frame of the recording: frame numbers must be below its frame count, "
+           << frames << " (duration_s " << s.duration_s << " s x rate_hz " << s.camera.rate_hz << " Hz"
+           << (s.camera.first_frame_s != 0 ? ", from first_frame_s" : "") << ")";
+        r.fail(e, os.str());
+      }
+      const int i = static_cast<int>(v);
+      const int line = e.Mark().line + 1;
+      if (const auto at = line_of.find(i); at != line_of.end())
+        r.fail(e, "'frames' lists frame " + std::to_string(i) + " again (first at line " + std::to_string(at->second) +
+                      "): each frame once");
+      line_of.emplace(i, line);
+      s.dropped_frames.push_back(i);
     }
   }
   s.drop_rate = r.num(n, "rate", 0, 0, 1);
