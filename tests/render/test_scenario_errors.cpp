@@ -269,3 +269,20 @@ TEST(ScenarioErrors, DroppedFramesBeyondTheRecordingOrRepeatedAreRefused) {
   STRCMP_EQUAL("(accepted)",
                error_of(replace(kGood, "  rate_hz: 60\n", "  rate_hz: 60\n  first_frame_s: 0.5\n") + "drops: {frames: [89]}\n").c_str());
 }
+
+// A sinusoid pattern spans mean +- amplitude: an amplitude above the mean went
+// below 0 and was clipped to black, silently. A brightness cannot be negative.
+// (The lighting flicker, 1 + a sin, already holds a to [0, 1]; a speed may be
+// negative: a rig that reverses.)
+TEST(ScenarioErrors, ASinusoidGoingBelowBlackIsRefused) {
+  const std::string wall = "{type: uniform, value: 90}";
+  std::string e = error_of(replace(kGood, wall, "{type: sinusoid, mean: 100, amplitude: 150}"));
+  STRCMP_CONTAINS("bad.yaml:13: sinusoid 'amplitude' = 150 is larger than its 'mean' = 100: the brightness, mean - "
+                  "amplitude at the troughs, would go below 0 and be clipped to black; a brightness cannot be negative, "
+                  "so amplitude must be at most the mean", e.c_str());
+  // The default amplitude (127) with a darker mean.
+  e = error_of(replace(kGood, wall, "{type: sinusoid, mean: 60, combine: product}"));
+  STRCMP_CONTAINS("bad.yaml:13: sinusoid 'amplitude' = 127 is larger than its 'mean' = 60", e.c_str());
+  STRCMP_EQUAL("(accepted)", error_of(replace(kGood, wall, "{type: sinusoid, mean: 127.5, amplitude: 127.5}")).c_str());
+  STRCMP_EQUAL("(accepted)", error_of(replace(kGood, "speed: 0.5", "speed: [0.5, -0.5], profile: smooth")).c_str());
+}

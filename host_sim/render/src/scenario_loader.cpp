@@ -347,6 +347,16 @@ void read_pattern(const Reader& r, const YAML::Node& n, PatternSpec& p,
     p.kind = PatternKind::Sinusoid;
     p.mean = r.num(n, "mean", p.mean, 0, 255);
     p.amplitude = r.num(n, "amplitude", p.amplitude, 0, 255);
+    // The pattern spans mean - amplitude .. mean + amplitude (sum or product):
+    // below 0 it was clipped to black, silently (flattened troughs, another
+    // mean). A brightness cannot be negative: refused.
+    if (p.amplitude > p.mean) {
+      std::ostringstream os;
+      os << "sinusoid 'amplitude' = " << p.amplitude << " is larger than its 'mean' = " << p.mean
+         << ": the brightness, mean - amplitude at the troughs, would go below 0 and be clipped to black; a "
+            "brightness cannot be negative, so amplitude must be at most the mean";
+      r.fail(n["amplitude"] ? n["amplitude"] : n["mean"] ? n["mean"] : n, os.str());
+    }
     if (n["period_m"]) {
       const auto v = r.list(n["period_m"], "period_m", 2, 1e-4, 1e6);
       p.period_h_m = v[0];
