@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <map>
 
 #include "lumavel/host/csv_table.hpp"
 #include "lumavel/host/groundtruth.hpp"

@@ -14,6 +14,7 @@
 #include "lumavel/host/csv_table.hpp"
 #include "lumavel/host/path_check.hpp"
 #include "lumavel/host/recording_error.hpp"
+#include "lumavel/host/yaml_text.hpp"
 
 namespace lumavel::host {
 namespace {
@@ -60,22 +61,15 @@ YAML::Node load_yaml(const std::string& path) {
     // A second document (a '---' line after some content) would be ignored,
     // silently: refused like a repeated key. (Scanned in the text: yaml-cpp's
     // LoadAll can loop on malformed input.)
-    {
-      bool content = false;
-      long n = 0;
-      for (size_t at = 0; at < text.size();) {
-        const size_t end = std::min(text.find('\n', at), text.size());
-        const std::string l = text.substr(at, end - at);
-        ++n;
-        if (l.rfind("---", 0) == 0 && (l.size() == 3 || l[3] == ' ' || l[3] == '\r' || l[3] == '\t')) {
-          if (content)
-            throw recording_error_at(path, n, "a second YAML document (after '---'): a sensor.yaml is one mapping of keys");
-        } else if (l.find_first_not_of(" \t\r") != std::string::npos && l[l.find_first_not_of(" \t\r")] != '#') {
-          content = true;
-        }
-        at = end + 1;
+    bool content = false;
+    yaml_text::for_each_line(text, [&](long n, const std::string& l) {
+      if (yaml_text::is_marker(l, "---")) {
+        if (content)
+          throw recording_error_at(path, n, "a second YAML document (after '---'): a sensor.yaml is one mapping of keys");
+      } else if (yaml_text::has_content(l)) {
+        content = true;
       }
-    }
+    });
     YAML::Node root = YAML::Load(text);
     if (root.IsNull())
       throw recording_error_in(path, "empty file: a sensor.yaml holds the sensor's keys (docs/recording-format.md)");

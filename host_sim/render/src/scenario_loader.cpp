@@ -6,6 +6,7 @@
 #include "lumavel/host/render/photometric_presets.hpp"
 #include "lumavel/host/render/view_renderer.hpp"
 #include "lumavel/host/path_check.hpp"
+#include "lumavel/host/yaml_text.hpp"
 
 #include <yaml-cpp/yaml.h>
 
@@ -506,32 +507,22 @@ Scenario parse_scenario(const std::string& text, const std::string& name,
   // '...' end marker) after some content was ignored, silently, and the
   // render made from the first part. Refused, as in a sensor.yaml (scanned
   // in the text: yaml-cpp's LoadAll can loop on malformed input).
-  {
-    bool content = false;
-    long ended_at = 0;  // the line of a '...' after content
-    long line = 0;
-    for (size_t at = 0; at < text.size();) {
-      const size_t end = std::min(text.find('\n', at), text.size());
-      const std::string l = text.substr(at, end - at);
-      ++line;
-      const auto marker = [&l](const char* m) {
-        return l.rfind(m, 0) == 0 && (l.size() == 3 || l[3] == ' ' || l[3] == '\r' || l[3] == '\t');
-      };
-      const size_t first = l.find_first_not_of(" \t\r");
-      if (marker("---") && content) {
+  bool content = false;
+  long ended_at = 0;  // the line of a '...' after content
+  yaml_text::for_each_line(text, [&](long line, const std::string& l) {
+    if (yaml_text::is_marker(l, "---")) {
+      if (content)
         throw ScenarioError(name + ":" + std::to_string(line) +
                             ": a second YAML document (after '---'): a scenario is one map of KEY: VALUE lines");
-      } else if (marker("...")) {
-        if (content && ended_at == 0) ended_at = line;
-      } else if (first != std::string::npos && l[first] != '#' && !marker("---")) {
-        if (ended_at != 0)
-          throw ScenarioError(name + ":" + std::to_string(line) + ": text after the end of the document ('...' at line " +
-                              std::to_string(ended_at) + "): a scenario is one map of KEY: VALUE lines");
-        content = true;
-      }
-      at = end + 1;
+    } else if (yaml_text::is_marker(l, "...")) {
+      if (content && ended_at == 0) ended_at = line;
+    } else if (yaml_text::has_content(l)) {
+      if (ended_at != 0)
+        throw ScenarioError(name + ":" + std::to_string(line) + ": text after the end of the document ('...' at line " +
+                            std::to_string(ended_at) + "): a scenario is one map of KEY: VALUE lines");
+      content = true;
     }
-  }
+  });
   YAML::Node root;
   try {
     root = YAML::Load(text);

@@ -38,6 +38,22 @@ const char* special_kind(mode_t mode) {
   return "a special file";
 }
 
+// A message's text with ASCII control characters as \xNN (shown_path).
+std::string without_controls(const std::string& s) {
+  std::string out;
+  for (const char ch : s) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c >= 0x20 && c != 0x7F) {
+      out += ch;
+      continue;
+    }
+    char hex[8];
+    std::snprintf(hex, sizeof hex, "\\x%02X", c);
+    out += hex;
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string why_nul_in_name(const std::string& name) {
@@ -158,25 +174,6 @@ bool lies_inside(const std::string& path, const std::string& folder) {
                               p = std::filesystem::weakly_canonical(path, ec);
   return std::mismatch(f.begin(), f.end(), p.begin(), p.end()).first == f.end();
 }
-
-namespace {
-
-std::string without_controls(const std::string& s) {
-  std::string out;
-  for (const char ch : s) {
-    const auto c = static_cast<unsigned char>(ch);
-    if (c >= 0x20 && c != 0x7F) {
-      out += ch;
-      continue;
-    }
-    char hex[8];
-    std::snprintf(hex, sizeof hex, "\\x%02X", c);
-    out += hex;
-  }
-  return out;
-}
-
-}  // namespace
 
 std::string shown_path(const std::string& path) {
   constexpr size_t kShown = 200, kEnds = 60;

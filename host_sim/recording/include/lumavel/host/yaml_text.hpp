@@ -1,0 +1,34 @@
+// The text of a YAML file line by line, for what yaml-cpp's single-document
+// Load does not say (a second document after '---', text after a '...' end
+// marker): the sensor.yaml reader and the scenario loader scan for those in
+// the text (yaml-cpp's LoadAll can loop on malformed input).
+#pragma once
+#include <algorithm>
+#include <string>
+
+namespace lumavel::host::yaml_text {
+
+// `line` is the document marker `marker` ("---" or "..."), alone or followed
+// by a blank.
+inline bool is_marker(const std::string& line, const char* marker) {
+  return line.rfind(marker, 0) == 0 && (line.size() == 3 || line[3] == ' ' || line[3] == '\r' || line[3] == '\t');
+}
+
+// `line` holds something other than blanks and a '#' comment.
+inline bool has_content(const std::string& line) {
+  const size_t first = line.find_first_not_of(" \t\r");
+  return first != std::string::npos && line[first] != '#';
+}
+
+// f(number, line) for each line of `text`, numbered from 1.
+template <class F>
+void for_each_line(const std::string& text, F f) {
+  long number = 0;
+  for (size_t at = 0; at < text.size();) {
+    const size_t end = std::min(text.find('\n', at), text.size());
+    f(++number, text.substr(at, end - at));
+    at = end + 1;
+  }
+}
+
+}  // namespace lumavel::host::yaml_text
