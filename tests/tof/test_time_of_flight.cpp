@@ -498,6 +498,52 @@ TEST(VelocityFusion, AFailedDifferentialStaysOutvotedWhileTheTrackIsLost) {
   CHECK(r.worst_double < 0.05);
 }
 
+// A reversal (-0.4 -> +0.3 m/s at 0.7 m/s^2, a clean differential) whose
+// track is lost as V turns: the time of flight's window holds the old
+// direction (its mean over tau), and moved to the present by the lagging
+// fused rate it is still a little below 0 on its last frame. The
+// differential, already past 0, must not be failed against it: failed, V was
+// held at -0.01 m/s for kFusionFailedHold while the rig moved on (0.31 m/s
+// off; the back-and-forth scenes lost 0.5 s so). Against counts only a clear
+// direction of the present: zc beyond kFusionAgainstSigmas of its sigma,
+// which carries the move's own uncertainty (kFusionTofMoveShare).
+TEST(VelocityFusion, AWindowSpanningAReversalDoesNotOutvoteTheTurnedDifferential) {
+  constexpr double kH = 0.08, kDt = 1.0 / 60, kA = 0.7, kT0 = 1.0;
+  const auto v_at = [&](double t) { return std::clamp(-0.4 + kA * (t - kT0), -0.4, 0.3); };
+  // x(t) by the trapezoid on a fine grid: the time of flight solves x(t) - x(t - tau) = -h (cam1 trails).
+  std::vector<double> x(1);
+  const int kSub = 20;
+  for (int i = 1; i <= 3.0 / kDt * kSub; ++i) {
+    const double t = i * kDt / kSub;
+    x.push_back(x.back() + (v_at(t - kDt / kSub) + v_at(t)) / 2 * kDt / kSub);
+  }
+  VelocityFusion fixed;
+  host::FloatVelocityFusion dbl;
+  double y = 0, worst[2] = {0, 0};
+  for (int i = 1; i < 3.0 / kDt; ++i) {
+    const double t = i * kDt, vd = v_at(t - kDt / 2);
+    y += vd * kDt;
+    double tau = 0;
+    for (int j = i * kSub - 1; j >= 0; --j)
+      if (x[static_cast<size_t>(i * kSub)] - x[static_cast<size_t>(j)] <= -kH) {
+        tau = (i * kSub - j) * kDt / kSub;
+        break;
+      }
+    TofStep st{vd, y, tau > 0 ? -kH / tau : 0, tau, y + kH};
+    st.ok = tau > 0 && tau < 0.6 && t < kT0 + 0.4 / kA + 2 * kDt;  // lost as V turns
+    const BothV v = step_with_tof(fixed, dbl, st);
+    if (t > kT0 + 0.4 / kA + 0.1) {  // from 0.1 s after V turned
+      worst[0] = std::max(worst[0], std::fabs(v.fixed - v_at(t)));
+      worst[1] = std::max(worst[1], std::fabs(v.dbl - v_at(t)));
+    }
+  }
+  std::printf("\n  reversal -0.4 -> +0.3 m/s at 0.7 m/s^2, track lost as V turns: worst |V - V_true| after it %.4f m/s "
+              "fixed, %.4f double",
+              worst[0], worst[1]);
+  CHECK(worst[0] < 0.1);
+  CHECK(worst[1] < 0.1);
+}
+
 // Near texture can throw the differential off for a frame or two while the
 // time of flight's track is kept through the miss: 2 s at 0.7 m/s with a
 // doubtful differential (residual ratio 0.3), then two frames without a
@@ -624,7 +670,7 @@ struct LagRun {
 };
 
 template <class Truth, class Noise>
-LagRun run_without_tof(Truth v_true, Noise noise, double secs, double from) {
+LagRun run_without_tof(Truth v_true, Noise noise, double secs, double from, double residual = 0) {
   constexpr double kDt = 1.0 / 60, kTauObs = 0.1;
   VelocityFusion fixed;
   host::FloatVelocityFusion dbl;
@@ -635,7 +681,7 @@ LagRun run_without_tof(Truth v_true, Noise noise, double secs, double from) {
     const double t = i * kDt, direct = v_true(t - kDt / 2) + noise(i);
     v_obs += (direct - v_obs) * kDt / (kTauObs + kDt);
     y += direct * kDt;
-    const FusedPair out = update_both(fixed, dbl, v_obs, direct, 0, y);
+    const FusedPair out = update_both(fixed, dbl, v_obs, direct, residual, y);
     const double vf = out.fixed, vdbl = out.dbl;
     if (t < from) continue;
     const double truth = v_true(t);
@@ -685,6 +731,19 @@ TEST(VelocityFusion, TheObserversLagIsAddedBackOnARamp) {
   DOUBLES_EQUAL(-(0.1 + 0.5 / 60) * kA, r.diff_mean, 0.003);  // the observer's lag
   DOUBLES_EQUAL(0, r.fused_mean[0], 0.002);
   DOUBLES_EQUAL(0, r.fused_mean[1], 0.002);
+}
+
+// A doubtful differential (residual 0.3) slows the output's smoothing to
+// kFusionTau (1 + 0.3 / kFusionSlowResidual) = 0.14 s: the ramp lags that
+// much more, and the lag term adds back what the smoothing has this frame
+// (with kFusionTau alone, 0.12 s x 0.5 m/s^2 = 0.06 m/s were left).
+TEST(VelocityFusion, ASlowedSmoothingsLagIsAddedBackToo) {
+  constexpr double kA = 0.5;
+  const auto ramp = [](double t) { return 0.2 + kA * t; };
+  const LagRun r = run_without_tof(ramp, [](int) { return 0.0; }, 3, 1.5, 0.3);
+  std::printf("\n  ramp 0.5 m/s^2, residual 0.3: mean error %.4f m/s fixed, %.4f double", r.fused_mean[0], r.fused_mean[1]);
+  DOUBLES_EQUAL(0, r.fused_mean[0], 0.004);
+  DOUBLES_EQUAL(0, r.fused_mean[1], 0.004);
 }
 
 // At a steady speed the fused rate is noise: the lag term must not add it.

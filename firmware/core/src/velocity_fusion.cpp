@@ -34,6 +34,8 @@ constexpr int64_t kInflationGainQ16 = fx::q_of(kFusionTofInflationGain, 16);
 constexpr int64_t kInflationMaxQ16 = fx::q_of(kFusionTofInflationMax, 16);
 constexpr int64_t kOneQ16 = int64_t{1} << 16;
 constexpr int64_t kAgainstSigmasQ16 = fx::q_of(kFusionAgainstSigmas, 16);
+constexpr int64_t kAgainstSigmas2Q8 = fx::q_of(kFusionAgainstSigmas * kFusionAgainstSigmas, 8);
+constexpr int64_t kMoveShareQ16 = fx::q_of(kFusionTofMoveShare, 16);
 constexpr int64_t kScaleTermMaxSpeedQ16 = fx::q_of(kFusionScaleTermMaxSpeed, fx::kSpeedFrac);
 static_assert(kFusionScaleTermMaxSpeed <= 64, "held speed^2 in Q16 below 2^28");
 constexpr int kGainFrac = 24;  // the scale filter's gain, Q24
@@ -44,6 +46,7 @@ constexpr int64_t kShortFramesQ16 = fx::q_of(kFusionScaleShortFrames, 16);
 constexpr int64_t kFailedHoldUs = fx::q_of(kFusionFailedHold * 1e6, 0);
 constexpr int64_t kCoastGrowth = fx::q_of(kFusionCoastSigmaGrowth, 0);
 static_assert(kCoastGrowth * 4 == fx::q_of(kFusionCoastSigmaGrowth, 2), "a whole factor: the variance stays exact");
+static_assert(kFusionAccelMax * kTofMaxTau / 2 < 4, "the time of flight's move to the present below 2^18 in Q16: its square fits");
 
 int64_t abs64(int64_t v) { return v < 0 ? -v : v; }
 int64_t clamp64(int64_t v, int64_t lo, int64_t hi) { return v < lo ? lo : (v > hi ? hi : v); }
@@ -89,7 +92,14 @@ FusionOutput VelocityFusion::update(const FusionInput& in) {
       learn_scale(in, dt_us, q_res, q_change, q_short, q_turn);
   }
 
-  const int64_t vd = fx::shr_round(int64_t{in.v_differential} * inv_scale_, fx::kScaleFrac) + lag_compensation(in, dt_us);  // Q16
+  // The output's smoothing time constant: slower where the differential is
+  // doubtful (residual), unless a time of flight joins it this frame (below).
+  // The differential's lag is added back as that of the output it makes alone,
+  // whether or not a time of flight joins it: one that comes and goes would
+  // otherwise switch the differential's own value frame by frame.
+  const int64_t slowed_tau_us = kTauUs + ((kSlowUsPerResidual * residual_) >> 16);
+  const int64_t vd = fx::shr_round(int64_t{in.v_differential} * inv_scale_, fx::kScaleFrac) +
+                     lag_compensation(in, dt_us, slowed_tau_us);  // Q16
   if (!in.direct) {  // nothing measured: V held
     out.v = v_;
     out.saturated = sat;
@@ -114,12 +124,20 @@ FusionOutput VelocityFusion::update(const FusionInput& in) {
   int64_t target = vd;
   if (use_tof) {
     // z + A tau / 2: A tau_us < 2^40, times 2^40 / 2e6 (< 2^20) < 2^60
-    const int64_t zc = int64_t{tof.v} + fx::shr_round(int64_t{accel_} * tau_us * kHalfPerMillionQ40, 40);
+    const int64_t moved = fx::shr_round(int64_t{accel_} * tau_us * kHalfPerMillionQ40, 40);
+    const int64_t zc = int64_t{tof.v} + moved;
     const int64_t inflated = (int64_t{tof.sig} * fx::isqrt32(static_cast<uint32_t>(tof_inflation_))) >> 8;  // sig sqrt(n), Q16
     const int64_t rel = inflated > kTofFloorQ16 ? inflated : kTofFloorQ16;
     const int64_t st = ((rel * abs64(tof.v)) >> 16) + kSpeedFloorQ16;
-    const int64_t st2 = st * st;  // Q32
-    const bool against = (vd > 0) != (tof.v > 0) && abs64(vd) > ((kAgainstSigmasQ16 * sd) >> 16);
+    // The move to the present is as uncertain as kFusionTofMoveShare of itself
+    // (|moved| <= kFusionAccelMax kTofMaxTau / 2 = 3 m/s < 2^18 in Q16: its square < 2^36).
+    const int64_t move_sd = (kMoveShareQ16 * abs64(moved)) >> 16;
+    const int64_t st2 = st * st + move_sd * move_sd;  // Q32
+    // Against its direction as moved to the present (zc: a window that spans a
+    // reversal keeps the direction of its mean, not of the present), and only
+    // where that direction is clear (|zc| beyond kFusionAgainstSigmas of its sigma).
+    const bool against = (vd > 0) != (zc > 0) && abs64(vd) > ((kAgainstSigmasQ16 * sd) >> 16) &&
+                         zc * zc > ((kAgainstSigmas2Q8 * st2) >> 8);
     failed_ = against;
     failed_us_ = 0;
     const int64_t w = against ? kOneQ16 : fx::fraction_q16(sd2, sd2 + st2);
@@ -168,8 +186,7 @@ FusionOutput VelocityFusion::update(const FusionInput& in) {
   // but never longer than the output has measured since it (re)started: until
   // then it is the mean of what came since (gain 1/n), not the first value held.
   since_start_us_ = std::min<int64_t>(since_start_us_ + dt_us, kInt31);
-  const int64_t teff_us = std::min<int64_t>(
-      use_tof ? kTauUs : kTauUs + ((kSlowUsPerResidual * residual_) >> 16), since_start_us_);
+  const int64_t teff_us = std::min<int64_t>(use_tof ? kTauUs : slowed_tau_us, since_start_us_);
   const int64_t nv = v_ + fx::div_q((target - v_) * dt_us, teff_us + dt_us, 0, &sat);
   if (dt_us > 0) {
     // accel += (rate - accel) dt / (tau_a + dt), with rate = (nv - v) / dt: one division.
@@ -184,7 +201,7 @@ FusionOutput VelocityFusion::update(const FusionInput& in) {
   return out;
 }
 
-int64_t VelocityFusion::lag_compensation(const FusionInput& in, int64_t dt_us) {
+int64_t VelocityFusion::lag_compensation(const FusionInput& in, int64_t dt_us, int64_t out_tau_us) {
   if (!in.direct || dt_us <= 0) return 0;
   if (!have_direct_) {  // (re)start: from the observer's V, no lag known
     half_ = in.v_differential;
@@ -218,9 +235,9 @@ int64_t VelocityFusion::lag_compensation(const FusionInput& in, int64_t dt_us) {
   if ((weighed > 0) != (shown > 0) || weighed == 0 || shown == 0) return 0;
   const int64_t lag = abs64(weighed) < abs64(shown) ? weighed : shown;
   // The same ramp lags twice more downstream: the direct values stand for the
-  // middle of their interval (dt / 2), and the output's own smoothing (kFusionTau).
+  // middle of their interval (dt / 2), and the output's own smoothing (out_tau_us).
   // |lag| <= 2^23 times < 2^32 us: < 2^55
-  return fx::div_q(lag * (tau_us + dt_us / 2 + kTauUs), tau_us, 0);
+  return fx::div_q(lag * (tau_us + dt_us / 2 + out_tau_us), tau_us, 0);
 }
 
 void VelocityFusion::learn_scale(const FusionInput& in, int64_t dt_us, int64_t q_res, int64_t q_change,

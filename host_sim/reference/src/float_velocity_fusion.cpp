@@ -49,7 +49,9 @@ FloatFusionOutput FloatVelocityFusion::update(const FloatFusionInput& in) {
       scale_var_ *= 1 - k;
     }
   }
-  const double vd = in.v_differential / scale_ + lag_compensation(in, dt);
+  // The output's smoothing, slowed by the residual; the differential's lag as that of the output it makes alone (the core's comment).
+  const double slowed_tau = kFusionTau * (1 + residual_ / kFusionSlowResidual);
+  const double vd = in.v_differential / scale_ + lag_compensation(in, dt, slowed_tau);
   if (!in.direct) {  // nothing measured: V held
     out.v = v_;
     return out;
@@ -68,20 +70,24 @@ FloatFusionOutput FloatVelocityFusion::update(const FloatFusionInput& in) {
   const double sd2 = sd * sd + scale_var_ * held * held;
   double target = vd;
   if (use_tof) {
-    const double zc = tof.v + accel_ * tof.tau_ns * 1e-9 / 2;
+    const double moved = accel_ * tof.tau_ns * 1e-9 / 2;
+    const double zc = tof.v + moved;
     const double rel = std::max(tof.sig * std::sqrt(tof_inflation_), kFusionTofFloor);
     const double st = rel * std::fabs(tof.v) + kFusionSpeedFloor;
-    const bool against = (vd > 0) != (tof.v > 0) && std::fabs(vd) > kFusionAgainstSigmas * sd;
+    const double st2 = st * st + std::pow(kFusionTofMoveShare * moved, 2);  // the move's own uncertainty
+    // Against its direction now, where that is clear (the core's comment).
+    const bool against = (vd > 0) != (zc > 0) && std::fabs(vd) > kFusionAgainstSigmas * sd &&
+                         zc * zc > kFusionAgainstSigmas * kFusionAgainstSigmas * st2;
     failed_ = against;
     failed_us_ = 0;
-    const double w = against ? 1.0 : sd2 / (sd2 + st * st);
+    const double w = against ? 1.0 : sd2 / (sd2 + st2);
     target = vd + w * (zc - vd);
     coast_z_ = zc;
-    coast_st2_ = st * st;
+    coast_st2_ = st2;
     coast_us_ = 0;
     coast_frames_ = 0;
     if (residual_ < kFusionScaleMaxResidual && !against) {
-      const double g = (tof.v - vd) * (tof.v - vd) / (st * st + sd2);
+      const double g = (tof.v - vd) * (tof.v - vd) / (st2 + sd2);
       tof_inflation_ = std::clamp(tof_inflation_ + kFusionTofInflationGain * (g - tof_inflation_), 1.0,
                                   kFusionTofInflationMax);
     }
@@ -109,8 +115,7 @@ FloatFusionOutput FloatVelocityFusion::update(const FloatFusionInput& in) {
     }
   }
   since_start_us_ = std::min<int64_t>(since_start_us_ + dt_us, int64_t{1} << 31);
-  const double teff = std::min(use_tof ? kFusionTau : kFusionTau * (1 + residual_ / kFusionSlowResidual),
-                               static_cast<double>(since_start_us_) * 1e-6);
+  const double teff = std::min(use_tof ? kFusionTau : slowed_tau, static_cast<double>(since_start_us_) * 1e-6);
   const double nv = v_ + (target - v_) * dt / (teff + dt);
   if (dt > 0) {
     accel_ = std::clamp(accel_ + ((nv - v_) / dt - accel_) * dt / (kFusionAccelTau + dt), -kFusionAccelMax,
@@ -124,7 +129,7 @@ FloatFusionOutput FloatVelocityFusion::update(const FloatFusionInput& in) {
 
 // The observer's lag on a ramp, added back where it stands out of its noise
 // and no further than the observer shows it (the core's comments).
-double FloatVelocityFusion::lag_compensation(const FloatFusionInput& in, double dt) {
+double FloatVelocityFusion::lag_compensation(const FloatFusionInput& in, double dt, double out_tau) {
   if (!in.direct || dt <= 0) return 0;
   if (!have_direct_) {
     half_ = in.v_differential;
@@ -145,7 +150,7 @@ double FloatVelocityFusion::lag_compensation(const FloatFusionInput& in, double 
   if ((weighed > 0) != (shown > 0) || weighed == 0 || shown == 0) return 0;
   const double lag = std::fabs(weighed) < std::fabs(shown) ? weighed : shown;
   // The same ramp lags twice more downstream: the half interval and the output's smoothing.
-  return lag * (in.observer_tau + dt / 2 + kFusionTau) / in.observer_tau;
+  return lag * (in.observer_tau + dt / 2 + out_tau) / in.observer_tau;
 }
 
 }  // namespace lumavel::host

@@ -94,7 +94,7 @@ class VelocityFusion {
   AccelQ16 accel_ = 0;
   FracQ16 residual_ = 0;           // tracked residual ratio of the differential
   int32_t tof_inflation_ = int32_t{1} << 16;  // Q16, >= 1: the time of flight's variance factor
-  int64_t measured_us_ = 0;
+  int64_t measured_us_ = 0;        // how long the observer has measured without a break (us, capped)
   int64_t since_start_us_ = 0;     // measured time since the output (re)started, capped
   SpeedQ16 half_ = 0;              // the observer at half its time constant
   SpeedQ16 prev_direct_ = 0;       // the last direct value, for the scatter ...
@@ -106,7 +106,8 @@ class VelocityFusion {
   int64_t coast_st2_ = 0;          // ... its variance (Q32) ...
   int64_t coast_us_ = 0;           // ... how long ago (us, capped) ...
   int32_t coast_frames_ = -1;      // ... in frames since (-1: none to coast on)
-  int64_t lag_compensation(const FusionInput& in, int64_t dt_us);        // how long the observer has measured without a break (us, capped)
+  // The observer's lag on a ramp, with what the output's smoothing (time constant out_tau_us) adds to it.
+  int64_t lag_compensation(const FusionInput& in, int64_t dt_us, int64_t out_tau_us);
   void learn_scale(const FusionInput& in, int64_t dt_us, int64_t q_res, int64_t q_change, int64_t q_short, int64_t q_turn);
 
   ScaleQ24 scale_ = int32_t{1} << fx::kScaleFrac;

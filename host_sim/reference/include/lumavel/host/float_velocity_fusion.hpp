@@ -58,7 +58,7 @@ class FloatVelocityFusion {
   double coast_z_ = 0, coast_st2_ = 0;  // the last time of flight's value and variance ...
   int64_t coast_us_ = 0;                // ... how long ago (us) ...
   int coast_frames_ = -1;               // ... in frames (-1: none to coast on)
-  double lag_compensation(const FloatFusionInput& in, double dt);
+  double lag_compensation(const FloatFusionInput& in, double dt, double out_tau);
 };
 
 }  // namespace lumavel::host
