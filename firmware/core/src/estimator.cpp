@@ -105,10 +105,13 @@ Estimate Estimator::step_profiles(uint64_t t_ns, ColumnProfile& p0, ColumnProfil
 #if LUMAVEL_MATCH_FRAMES > 0
   if (matching) match_.apply(p1, bank_.column_band(), cfg_.height, radial1);
 #endif
-  stereo_measurement(p0, p1, bank_, (cfg_.options & kOptionPhotometricBalance) ? &balance_ : nullptr, m);
+  kdot::Normaliser norm1{};  // (cam1's N for the match's Jacobian)
+  stereo_measurement(p0, p1, bank_, (cfg_.options & kOptionPhotometricBalance) ? &balance_ : nullptr, m,
+                     matching ? &norm1 : nullptr);
 #if LUMAVEL_MATCH_FRAMES > 0
   MatchJac jac;
-  if (matching) match_.jacobian(p1, bank_.column_band(), cfg_.height, radial1, bank_.cam[1], bank_.count, m.f[1], jac);
+  if (matching)
+    match_.jacobian(p1, bank_.column_band(), cfg_.height, radial1, bank_.cam[1], bank_.count, m.f[1], jac, &norm1);
   MatchInput match_in{};
   match_in.usable = false;
 #endif

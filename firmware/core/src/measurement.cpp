@@ -33,6 +33,7 @@ struct CameraOutputs {
   ValueQ28 f[kMaxKernels];
   SlopeQ20 r[kMaxKernels];
   CurvQ12 c[kMaxKernels];
+  Normaliser norm;  // N and the reciprocal the ratios took
   bool no_light;
   bool saturated;
 };
@@ -48,6 +49,7 @@ void camera_outputs(const ColumnProfile& p, const CameraKernels& ck, uint8_t cou
   // The dot products in pairs that share the profile (kdot::dot2): the same sums.
   int64_t n = 0, n_d = 0;
   dot2(ck.norm, ck.norm_d, p, &n, &n_d);
+  out.norm = {n, {0, 0}};
   // No light: below a uniform image of kNoLightMeanDn (dark_n is in q8 sums).
   if (n <= 0 || n < (p.q8 ? ck.dark_n : ck.dark_n >> 8)) {
     out.no_light = true;
@@ -74,6 +76,7 @@ void camera_outputs(const ColumnProfile& p, const CameraKernels& ck, uint8_t cou
       en = dot_values(ck.norm, c, p.width);
   }
   const Reciprocal inv = reciprocal(n);
+  out.norm.inv = inv;
   bool sat = false;
   // value of table t = w * 2^-(31 + exp): a ratio of two dots carries 2^(exp_n - exp_t).
   const auto corr = [&](int64_t e, const KernelTable& t) {
@@ -151,10 +154,11 @@ AngleQ28 half_phase(const CameraOutputs& c0, const CameraOutputs& c1, ValueQ28 d
 }  // namespace
 
 void stereo_measurement(const ColumnProfile& p0, const ColumnProfile& p1, const KernelBank& bank,
-                        const PhotometricBalance* balance, StereoMeasurement& out) {
+                        const PhotometricBalance* balance, StereoMeasurement& out, kdot::Normaliser* norm1) {
   CameraOutputs c0, c1;
   camera_outputs(p0, bank.cam[0], bank.count, bank.leaning && p0.edges ? bank.lean[0] : nullptr, c0);
   camera_outputs(p1, bank.cam[1], bank.count, bank.leaning && p1.edges ? bank.lean[1] : nullptr, c1);
+  if (norm1) *norm1 = c1.norm;
   for (uint8_t k = 0; k < bank.count; ++k) {
     const ValueQ28 delta = balance && !c0.no_light && !c1.no_light ? balance->offset(k) : 0;
     out.balance[k] = delta;

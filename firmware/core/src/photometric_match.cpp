@@ -99,12 +99,12 @@ void PhotometricMatch::apply(ColumnProfile& p1, const ColumnBand* band, uint16_t
 
 void PhotometricMatch::jacobian(const ColumnProfile& p1, const ColumnBand* band, uint16_t height,
                                 const RadialSums* radial, const CameraKernels& ck, uint8_t count, const ValueQ28* f1,
-                                MatchJac& jac) {
-  const int64_t n = kdot::dot(ck.norm, p1);
+                                MatchJac& jac, const kdot::Normaliser* norm1) {
+  const int64_t n = norm1 ? norm1->n : kdot::dot(ck.norm, p1);
   for (uint8_t k = 0; k < count; ++k)
     for (int j = 0; j < kMatchParams; ++j) jac[k][j] = 0;
   if (n <= 0) return;
-  const kdot::Reciprocal inv = kdot::reciprocal(n);
+  const kdot::Reciprocal inv = norm1 && norm1->inv.mant != 0 ? norm1->inv : kdot::reciprocal(n);
   bool sat = false;
   // d sum' / d p_j per column, in the sums' units: a1 and a2 from the image,
   // beta's from the rows alone (its dot products kept while p and the

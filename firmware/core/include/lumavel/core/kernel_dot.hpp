@@ -170,6 +170,13 @@ inline Reciprocal reciprocal(int64_t n) {  // n > 0
   return {(int64_t{1} << 61) / n, e};
 }
 
+// A camera's normaliser dot product N and its reciprocal, as its outputs
+// were divided by them (inv.mant == 0: not taken, a frame without light).
+struct Normaliser {
+  int64_t n;
+  Reciprocal inv;
+};
+
 // round(x / N * 2^q), saturated to int32; relative error ~1e-9.
 inline int32_t ratio(int64_t x, const Reciprocal& r, int q, bool* sat) {
   // x / 2^sx (truncated towards zero) in [-2^31, 2^31), sx the least that fits.

@@ -21,6 +21,7 @@
 #include "lumavel/core/column_profile.hpp"
 #include "lumavel/core/fixed.hpp"
 #include "lumavel/core/kernel_bank.hpp"
+#include "lumavel/core/kernel_dot.hpp"
 #include "lumavel/core/photometric_balance.hpp"
 
 namespace lumavel {
@@ -43,8 +44,11 @@ struct StereoMeasurement {
 };
 
 // From the two column profiles and the bank; with a balance, cam1's outputs
-// are corrected by it first (nullptr: the cameras taken as twins).
+// are corrected by it first (nullptr: the cameras taken as twins). norm1, if
+// given, receives cam1's normaliser (the photometric match's Jacobian divides
+// by the same N: PhotometricMatch::jacobian).
 void stereo_measurement(const ColumnProfile& p0, const ColumnProfile& p1, const KernelBank& bank,
-                        const PhotometricBalance* balance, StereoMeasurement& out);
+                        const PhotometricBalance* balance, StereoMeasurement& out,
+                        kdot::Normaliser* norm1 = nullptr);
 
 }  // namespace lumavel

@@ -47,6 +47,7 @@
 #include "lumavel/core/column_profile.hpp"
 #include "lumavel/core/fixed.hpp"
 #include "lumavel/core/kernel_bank.hpp"
+#include "lumavel/core/kernel_dot.hpp"
 #include "lumavel/core/limits.hpp"
 #include "lumavel/core/photometric_params.hpp"
 
@@ -79,8 +80,12 @@ class PhotometricMatch {
   // an error of J slows the learning, it does not move where it ends). The
   // black level's column does not depend on the image: its dot products are
   // kept until p or the geometry changes (reset() on a new configuration).
+  // norm1: cam1's normaliser as the measurement took it from this profile
+  // (stereo_measurement), the same N without its dot product and division
+  // again; nullptr: taken here.
   void jacobian(const ColumnProfile& p1, const ColumnBand* band, uint16_t height, const RadialSums* radial,
-                const CameraKernels& ck, uint8_t count, const ValueQ28* f1, MatchJac& jac);
+                const CameraKernels& ck, uint8_t count, const ValueQ28* f1, MatchJac& jac,
+                const kdot::Normaliser* norm1 = nullptr);
   // One frame; true when p changed (by delta(), Q30 per parameter).
   bool learn(const MatchInput& in);
   const int32_t* params() const { return p_; }
