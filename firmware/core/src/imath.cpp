@@ -12,6 +12,19 @@ constexpr int64_t kAtanTable[] = {
     65536,      32768,      16384,      8192,      4096,      2048,      1024,     512,
     256,        128,        64,         32,        16,        8,         4,        2};
 constexpr int kCordicSteps = sizeof(kAtanTable) / sizeof(kAtanTable[0]);
+
+// The first kFastSteps entries rounded to Q28 for atan2_fast, at compile time
+// (per call, the 64-bit rounding of each entry was 5 instructions a step).
+constexpr int kFastSteps = 24;
+struct AtanQ28 {
+  int32_t v[kFastSteps];
+};
+constexpr AtanQ28 atan_q28() {
+  AtanQ28 t{};
+  for (int i = 0; i < kFastSteps; ++i) t.v[i] = static_cast<int32_t>((kAtanTable[i] + 8) >> 4);
+  return t;
+}
+constexpr AtanQ28 kAtanQ28 = atan_q28();
 // prod 1/sqrt(1 + 2^-2i) in Q1.30.
 constexpr int64_t kLn2Q27 = 93032640;
 
@@ -116,9 +129,9 @@ AngleQ28 atan2_fast(int32_t y32, int32_t x32) {
     y *= 2;
   }
   int32_t xs = static_cast<int32_t>(x), ys = static_cast<int32_t>(y), z = 0;
-  for (int i = 0; i < 24; ++i) {
+  for (int i = 0; i < kFastSteps; ++i) {
     const int32_t dx = xs >> i, dy = ys >> i;
-    const int32_t a = static_cast<int32_t>((kAtanTable[i] + 8) >> 4);  // Q28
+    const int32_t a = kAtanQ28.v[i];
     if (ys > 0) {
       xs += dy;
       ys -= dx;
