@@ -38,11 +38,17 @@ int64_t hold(int64_t v) { return v > kHeld ? kHeld : (v < -kHeld ? -kHeld : v); 
 
 // x_u = (2u + 1 - W) / W in Q30: the column's centre across the image, as
 // (2u + 1 - W) times one step 2^30 / W (one 32-bit division a call instead
-// of one 64-bit division per column; within W / 2 of 2^-30 of the exact x).
+// of one 64-bit division per column; within W / 2 of 2^-30 of the exact x),
+// walked from x_0 by 2 steps a column (the same integers, no multiply).
+// |x_u| <= (W - 1) 2^30 / W < 2^30: a 32-bit value, so that its products are
+// 32 x 32 -> 64 bits (one multiply on a 32-bit core, not a 64-bit one).
 struct ColumnX {
-  int64_t step;
-  explicit ColumnX(uint16_t width) : step(static_cast<int64_t>(static_cast<uint32_t>(kOne) / width)) {}
-  int64_t operator()(uint16_t u, uint16_t width) const { return static_cast<int64_t>(2 * u + 1 - width) * step; }
+  int32_t first, stride;  // x_0, x_(u+1) - x_u
+  explicit ColumnX(uint16_t width) {
+    const int32_t step = static_cast<int32_t>(static_cast<uint32_t>(kOne) / width);
+    first = (1 - width) * step;
+    stride = 2 * step;
+  }
 };
 
 // The rows column u sums, in the profile's units (a uniform image of value
@@ -51,8 +57,11 @@ int64_t rows_in_sum(const ColumnProfile& p, const ColumnBand* band, uint16_t hei
   return p.q8 ? int64_t{band_rows_q8(band, height, u)} : int64_t{height};
 }
 
-int64_t gain_q30(const int32_t* p, int64_t x) {
-  return kOne + fx::shr_round(int64_t{p[0]} * x, kQ) + fx::shr_round(int64_t{p[1]} * fx::shr_round(x * x, kQ), kQ);
+// x^2 in Q30 (|x| < 2^30: below 2^30 too).
+int32_t square_q30(int32_t x) { return static_cast<int32_t>(fx::shr_round(int64_t{x} * x, kQ)); }
+
+int64_t gain_q30(const int32_t* p, int32_t x) {
+  return kOne + fx::shr_round(int64_t{p[0]} * x, kQ) + fx::shr_round(int64_t{p[1]} * square_q30(x), kQ);
 }
 
 int64_t lerp(int64_t a, int64_t b, int64_t u_q16) { return a + fx::shr_round((b - a) * u_q16, 16); }
@@ -76,8 +85,8 @@ void PhotometricMatch::apply(ColumnProfile& p1, const ColumnBand* band, uint16_t
     return;
   }
   const ColumnX column_x(p1.width);
-  for (uint16_t u = 0; u < p1.width; ++u) {
-    const int64_t x = column_x(u, p1.width);
+  int32_t x = column_x.first;
+  for (uint16_t u = 0; u < p1.width; ++u, x += column_x.stride) {
     const int64_t g = gain_q30(p_, x);
     // (sum - rows beta) in Q8 units of the mapped profile, then times g: < 2^31 * 2^31
     const int64_t t = fx::shr_round(int64_t{p1.sum[u]} * (int64_t{1} << kBetaDnFrac) - rows_in_sum(p1, band, height, u) * p_[2],
@@ -111,10 +120,10 @@ void PhotometricMatch::jacobian(const ColumnProfile& p1, const ColumnBand* band,
   // geometry stay: for twins p stays 0, so they are taken once).
   int32_t du[2][kMaxColumns];
   const ColumnX column_x(p1.width);
-  for (uint16_t u = 0; u < p1.width; ++u) {
-    const int64_t x = column_x(u, p1.width);
+  int32_t x = column_x.first;
+  for (uint16_t u = 0; u < p1.width; ++u, x += column_x.stride) {
     du[0][u] = static_cast<int32_t>(fx::shr_round(int64_t{p1.sum[u]} * x, kQ));
-    du[1][u] = static_cast<int32_t>(fx::shr_round(int64_t{p1.sum[u]} * fx::shr_round(x * x, kQ), kQ) +
+    du[1][u] = static_cast<int32_t>(fx::shr_round(int64_t{p1.sum[u]} * square_q30(x), kQ) +
                                     (radial ? radial->sum_y2[u] : 0));
   }
   const bool beta_kept = beta_dots_.valid && beta_dots_.width == p1.width && beta_dots_.height == height &&
@@ -123,9 +132,10 @@ void PhotometricMatch::jacobian(const ColumnProfile& p1, const ColumnBand* band,
                          beta_dots_.rows_y2 == (radial ? radial->rows_y2_q8 : 0);
   if (!beta_kept) {
     int32_t db[kMaxColumns];
-    for (uint16_t u = 0; u < p1.width; ++u)
+    x = column_x.first;
+    for (uint16_t u = 0; u < p1.width; ++u, x += column_x.stride)
       db[u] = static_cast<int32_t>(-fx::shr_round(
-          (rows_in_sum(p1, band, height, u) * gain_q30(p_, column_x(u, p1.width)) +
+          (rows_in_sum(p1, band, height, u) * gain_q30(p_, x) +
            (radial ? int64_t{radial->rows_y2_q8} * p_[1] : 0)) * kOffsetUnitDn,
           kQ));
     beta_dots_ = BetaDots{true, p1.q8, count, p1.width, height, {p_[0], p_[1], p_[2]}, radial != nullptr,
