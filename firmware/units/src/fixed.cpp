@@ -42,6 +42,30 @@ uint64_t udivmod64_32(uint64_t n, uint32_t d, uint32_t* rem) {
   return (uint64_t{q_hi} << 32) | ((q1 << 16) + q0);
 }
 
+namespace {
+
+// div_q's quotient where |num| 2^q < 2^62 (0 <= q <= 31, den > 0): R =
+// floor((|num| 2^q + floor(den / 2)) / den) in one division is the two
+// divisions' ip 2^q + frac below (ip 2^q den is a whole multiple of den).
+// Saturated as there: R beyond int32 (toward either sign), and, for a
+// negative num, R = 2^31 with |num| / den >= 2^(31 - q) (ip's bound; -2^31
+// itself is returned unflagged where only the rounding reached it).
+int32_t div_q_one_division(bool negative, uint64_t mag, int64_t den, int q, bool* saturated) {
+  const uint64_t scaled = mag << q;
+  const uint64_t r = udiv_trunc(scaled + static_cast<uint64_t>(den / 2), static_cast<uint64_t>(den));
+  constexpr uint64_t kTwo31 = uint64_t{1} << 31;
+  if (!negative) {
+    if (r < kTwo31) return static_cast<int32_t>(r);
+    if (saturated) *saturated = true;
+    return kInt32Max;
+  }
+  if (r < kTwo31) return -static_cast<int32_t>(r);
+  if (saturated && (r > kTwo31 || (scaled >> 31) >= static_cast<uint64_t>(den))) *saturated = true;
+  return kInt32Min;
+}
+
+}  // namespace
+
 int32_t div_q(int64_t num, int64_t den, int q, bool* saturated) {
   if (den == 0) {
     if (num == 0) return 0;
@@ -81,6 +105,8 @@ int32_t div_q(int64_t num, int64_t den, int q, bool* saturated) {
     const uint64_t mag = num < 0 ? 0 - static_cast<uint64_t>(num) : static_cast<uint64_t>(num);
     num = num < 0 ? -static_cast<int64_t>(mag >> k) : static_cast<int64_t>(mag >> k);
   }
+  const uint64_t mag = num < 0 ? 0 - static_cast<uint64_t>(num) : static_cast<uint64_t>(num);
+  if (mag < (uint64_t{1} << (62 - q))) return div_q_one_division(num < 0, mag, den, q, saturated);
   const int64_t one = int64_t{1} << q;
   int64_t rem = 0;  // same sign as num
   const int64_t ip = div_trunc(num, den, &rem);
