@@ -25,19 +25,24 @@ constexpr int64_t kMaxHalfPhaseQ28 = fx::q_of(params::kMaxHalfPhase, 28);
 
 // x / tan(x) for |x| <= kMaxHalfPhase (clamped, 1.2 rad), Q1.30, by its series
 // 1 - x^2/3 - x^4/45 - 2x^6/945 - x^8/4725 - 2x^10/93555 (error < 3e-5 at 1.2).
-int64_t x_over_tan_q30(int64_t x_q28) {
+// 32-bit operands, so that each product is one 32 x 32 -> 64 multiply: the
+// clamped x (< 1.2 2^28), x^2 (< 1.45 2^30), each Horner partial (|p| < 0.38
+// 2^30) and the result (in (0.4, 1] 2^30) all fit int32.
+int32_t x_over_tan_q30(int64_t x_q28) {
   const int64_t lim = kMaxHalfPhaseQ28;
   if (x_q28 > lim) x_q28 = lim;
   if (x_q28 < -lim) x_q28 = -lim;
-  const int64_t x2 = fx::shr_round(x_q28 * x_q28, 26);  // Q30
+  const auto x = static_cast<int32_t>(x_q28);
+  const auto x2 = static_cast<int32_t>(fx::shr_round(int64_t{x} * x, 26));  // Q30
   // Horner in x^2 from the highest term.
   const int64_t one = int64_t{1} << 30;
-  int64_t p = -(2 * one) / 93555;
-  p = fx::shr_round(p * x2, 30) - one / 4725;
-  p = fx::shr_round(p * x2, 30) - (2 * one) / 945;
-  p = fx::shr_round(p * x2, 30) - one / 45;
-  p = fx::shr_round(p * x2, 30) - one / 3;
-  return one + fx::shr_round(p * x2, 30);
+  const auto horner = [x2](int32_t p, int64_t c) { return static_cast<int32_t>(fx::shr_round(int64_t{p} * x2, 30) - c); };
+  auto p = static_cast<int32_t>(-(2 * one) / 93555);
+  p = horner(p, one / 4725);
+  p = horner(p, (2 * one) / 945);
+  p = horner(p, one / 45);
+  p = horner(p, one / 3);
+  return static_cast<int32_t>(one + fx::shr_round(int64_t{p} * x2, 30));
 }
 
 // |e - ratio a|^2 / |e|^2 (ratio Q28): how much of the innovation the one
@@ -64,7 +69,8 @@ int32_t step_corrected_ratio(const int32_t* e, const int32_t* a, const int32_t* 
   int64_t num = 0;  // Q56
   for (uint8_t k = 0; k < count; ++k) {
     const int64_t y = fx::shr_round(int64_t{half[k]} * ratio, fx::kValueFrac);
-    num += fx::shr_round(int64_t{e[k]} * x_over_tan_q30(y), 30) * a[k];
+    // (|e x/tan x| <= |e|: int32)
+    num += int64_t{static_cast<int32_t>(fx::shr_round(int64_t{e[k]} * x_over_tan_q30(y), 30))} * a[k];
   }
   return fx::div_q(num, den, fx::kValueFrac, sat);
 }
