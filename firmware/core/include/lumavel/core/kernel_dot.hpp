@@ -189,12 +189,21 @@ inline int32_t ratio(int64_t x, const Reciprocal& r, int q, bool* sat) {
   }
   // x * 2^sx * mant / 2^61 / 2^exp * 2^q
   const int shift = 61 + r.exp - sx - q;
-  const int64_t p = x * r.mant;  // < 2^62
+  // (x in int32, mant <= 2^31 in uint32: a 32 x 32 -> 64 product, not a 64-bit one)
+  const int64_t p = int64_t{static_cast<int32_t>(x)} * int64_t{static_cast<uint32_t>(r.mant)};  // |p| <= 2^62
   if (shift <= 0) {
     if (shift < -30) return fx::sat32(p >= 0 ? (int64_t{1} << 40) : -(int64_t{1} << 40), sat);
     return fx::sat32(fx::sat32(p, sat) * (int64_t{1} << -shift), sat);
   }
   if (shift >= 63) return 0;
+  if (shift >= 33) {
+    // The rounding half 2^(shift-1) lies in the high word, so the low word
+    // cannot carry into the result: |p|'s high word (< 2^30 + 1) rounded in
+    // 32 bits, the same value as shr_round's 64-bit shift (< 2^30: no saturation).
+    const uint64_t a = p < 0 ? 0 - static_cast<uint64_t>(p) : static_cast<uint64_t>(p);
+    const uint32_t m = (static_cast<uint32_t>(a >> 32) + (uint32_t{1} << (shift - 33))) >> (shift - 32);
+    return p < 0 ? -static_cast<int32_t>(m) : static_cast<int32_t>(m);
+  }
   return fx::sat32(fx::shr_round(p, shift), sat);
 }
 
