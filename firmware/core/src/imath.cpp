@@ -179,10 +179,24 @@ uint32_t isqrt32(uint32_t v) {
     x = y;
   }
 }
+// Above 32 bits, the same iteration from (isqrt32(v / 4^k) + 1) 2^k >=
+// sqrt(v) (v / 4^k below 2^32; sqrt(m + 1) <= isqrt(m) + 1), already within
+// 2^-15 of the root: a step or two of 64 / 32-bit divisions instead of 32
+// digit steps in 64-bit arithmetic.
+uint32_t isqrt64(uint64_t v) {
+  if ((v >> 32) == 0) return isqrt32(static_cast<uint32_t>(v));
+  const int k = (64 - __builtin_clzll(v) - 31) / 2;
+  uint64_t x = (uint64_t{isqrt32(static_cast<uint32_t>(v >> (2 * k)))} + 1) << k;
+  for (;;) {
+    const uint64_t y = (x + udiv_trunc(v, x)) / 2;
+    if (y >= x) return static_cast<uint32_t>(x);
+    x = y;
+  }
+}
 #else
 uint32_t isqrt32(uint32_t v) { return isqrt_digits(v); }
-#endif
 uint32_t isqrt64(uint64_t v) { return isqrt_digits(v); }
+#endif
 
 // 2 pi in Q28 is 1686629713 + 0.06525 LSB: whole turns are taken off with
 // that fraction (Q32), so that the wrap stays exact however many turns there
