@@ -135,7 +135,8 @@ FusionOutput VelocityFusion::update(const FusionInput& in) {
     const int64_t st2 = st * st + move_sd * move_sd;  // Q32
     // Against its direction as moved to the present (zc: a window that spans a
     // reversal keeps the direction of its mean, not of the present), and only
-    // where that direction is clear (|zc| beyond kFusionAgainstSigmas of its sigma).
+    // where that direction is clear (|zc| beyond kFusionAgainstSigmas of its sigma;
+    // |zc| < 2^31 + 2^18: its square fits int64, as does 4 st2 < 2^44 in Q8).
     const bool against = (vd > 0) != (zc > 0) && abs64(vd) > ((kAgainstSigmasQ16 * sd) >> 16) &&
                          zc * zc > ((kAgainstSigmas2Q8 * st2) >> 8);
     failed_ = against;
