@@ -452,6 +452,25 @@ TEST(BadInput, ImageThatIsAFolderOrADevice) {
                   load_error().c_str());
 }
 
+// A frame file that is a link to an earlier row's frame is that frame read
+// twice (was: exit 0, the repeated frame read as a standstill; E 0.82 ->
+// 1.30 % on wall_40x30), refused as a name given twice is.
+TEST(BadInput, FrameThatIsALinkToAnotherFrame) {
+  std::filesystem::remove(image(0, 6));
+  std::filesystem::create_symlink(std::to_string(fixture::frame_time(o, 5)) + ".png", image(0, 6));
+  STRCMP_CONTAINS((m + "cam0/data.csv:8: filename '" + std::to_string(fixture::frame_time(o, 6)) +
+                   ".png' is the same file as '" + std::to_string(fixture::frame_time(o, 5)) +
+                   ".png', the frame of line 7 (a link to it): each row names its own image")
+                      .c_str(),
+                  load_error().c_str());
+  std::filesystem::remove(image(0, 6));
+  std::filesystem::create_hard_link(image(0, 2), image(0, 6));
+  STRCMP_CONTAINS((m + "cam0/data.csv:8: filename '" + std::to_string(fixture::frame_time(o, 6)) +
+                   ".png' is the same file as '" + std::to_string(fixture::frame_time(o, 2)) + ".png', the frame of line 4")
+                      .c_str(),
+                  load_error().c_str());
+}
+
 // A ground truth that is there but unreadable is refused, not taken for "no
 // ground truth" (a run without figures and exit 0).
 TEST(BadInput, GroundTruthThatIsAFolderIsNotIgnored) {

@@ -87,9 +87,9 @@ SliderDataset read_slider_dataset(const std::string& dir) {
     if (const std::string why = why_nul_in_name(file); !why.empty())
       throw recording_error_at(images, line, "image file name " + why);
     // (was: taken, exit 0; the repeated frame read as a standstill)
-    if (const std::string why = named.why_repeated(file, line); !why.empty())
-      throw recording_error_at(images, line, why);
     f.path = file.front() == '/' ? file : dir + "/" + file;
+    if (const std::string why = named.why_repeated(file, line, f.path); !why.empty())
+      throw recording_error_at(images, line, why);
     check_increasing(d.frames.empty() ? 0 : d.frames.back().t, f.t, !d.frames.empty(), images, line);
     d.frames.push_back(f);
   });

@@ -58,11 +58,12 @@ CamRows read_cam_rows(const std::string& root, int cam) {
       throw recording_error_at(c.csv, r.line,
                                "filename '" + name + "' leaves " + layout::kCamDir[cam] +
                                    "/data/ (names are relative to it, with no '..' and no leading '/')");
-    if (const std::string why = named.why_repeated(name, r.line); !why.empty())
+    const std::string path = dir + "/data/" + name;
+    if (const std::string why = why_not_a_file(path); !why.empty())
+      throw recording_error_at(c.csv, r.line, "image file " + shown_path(path) + " " + why);
+    if (const std::string why = named.why_repeated(name, r.line, path); !why.empty())
       throw recording_error_at(c.csv, r.line, why);
-    name = dir + "/data/" + name;
-    if (const std::string why = why_not_a_file(name); !why.empty())
-      throw recording_error_at(c.csv, r.line, "image file " + shown_path(name) + " " + why);
+    name = path;
   }
   return c;
 }

@@ -63,11 +63,20 @@ std::string why_nul_in_name(const std::string& name) {
          std::to_string(nul + 1) + "): a damaged row";
 }
 
-std::string FrameNames::why_repeated(const std::string& name, long line) {
+std::string FrameNames::why_repeated(const std::string& name, long line, const std::string& path) {
+  static const char* const kWhy = ": each row names its own image (a repeated frame would read as a standstill)";
   const auto [first, fresh] = line_of_.emplace(std::filesystem::path(name).lexically_normal().string(), line);
-  if (fresh) return "";
-  return "filename '" + name + "' is also the frame of line " + std::to_string(first->second) +
-         ": each row names its own image (a repeated frame would read as a standstill)";
+  if (!fresh) return "filename '" + name + "' is also the frame of line " + std::to_string(first->second) + kWhy;
+  // Another name for an earlier row's file (a symbolic or hard link) is the
+  // same frame read twice (was: exit 0, the repeated frame read as a standstill).
+  struct stat st {};
+  if (path.empty() || ::stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return "";
+  const auto [same, new_file] = file_of_.emplace(
+      std::make_pair(static_cast<unsigned long long>(st.st_dev), static_cast<unsigned long long>(st.st_ino)),
+      std::make_pair(line, name));
+  if (new_file) return "";
+  return "filename '" + name + "' is the same file as '" + same->second.second + "', the frame of line " +
+         std::to_string(same->second.first) + " (a link to it)" + kWhy;
 }
 
 std::string why_too_big_for_text(const std::string& path, const std::string& holds) {

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <map>
 #include <string>
+#include <utility>
 
 namespace lumavel::host {
 
@@ -70,11 +71,17 @@ class FrameNames {
  public:
   // "" the first time `name` is seen (names compared lexically normalised:
   // './x.png' is 'x.png'); else "filename 'x.png' is also the frame of line
-  // 7: each row names its own image (...)".
-  std::string why_repeated(const std::string& name, long line);
+  // 7: each row names its own image (...)". With `path` (where `name` is on
+  // the disk) the file itself is compared too, by device and inode: a name
+  // that is a symbolic or hard link to an earlier row's file is "filename
+  // 'y.png' is the same file as 'x.png', the frame of line 7 (a link to it):
+  // each row names its own image (...)". A path that cannot be examined is
+  // left to why_not_a_file.
+  std::string why_repeated(const std::string& name, long line, const std::string& path = "");
 
  private:
   std::map<std::string, long> line_of_;
+  std::map<std::pair<unsigned long long, unsigned long long>, std::pair<long, std::string>> file_of_;
 };
 // `path` (or a field, a line read from a file) as a message shows it: in full
 // up to 200 characters, else its start and end with the length ("aaa...zzz
