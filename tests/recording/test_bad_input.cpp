@@ -605,6 +605,21 @@ TEST(BadInput, ASecondYamlDocumentIsRefused) {
   STRCMP_CONTAINS("a second YAML document (after '---')", load_error().c_str());
 }
 
+// Keys after a '...' end marker were ignored (was: exit 0, cam0's T_BS
+// given again after '...' not read, the first one used).
+TEST(BadInput, TextAfterTheYamlDocumentEndIsRefused) {
+  const std::string y = m + "cam0/sensor.yaml";
+  const long lines = static_cast<long>(fixture::read_lines(y).size());
+  fixture::write_text(y, fixture::read_text(y) + "...\nT_BS:\n  cols: 4\n");
+  STRCMP_CONTAINS((y + ":" + std::to_string(lines + 2) + ": text after the end of the document ('...' at line " +
+                   std::to_string(lines + 1) + "): a sensor.yaml is one mapping of keys")
+                      .c_str(),
+                  load_error().c_str());
+  // A '...' closing the one document, with comments and blank lines after it, is YAML as it should be.
+  fixture::write_text(y, fixture::read_text(y).substr(0, fixture::read_text(y).rfind("...\n")) + "...\n# end\n\n");
+  STRCMP_EQUAL("(no error)", load_error().c_str());
+}
+
 // Values are shown where they break a rule.
 TEST(BadInput, SensorYamlErrorsShowTheValue) {
   const std::string y = m + "cam0/sensor.yaml";
