@@ -94,3 +94,24 @@ TEST(Calibrate, CoarseRegistrationSaysItCannotKnow) {
   CHECK(std::fabs(err_deg) <= 2 * sigma_deg);
   CHECK(sigma_deg > 0.1);
 }
+
+// Both cameras delivering the same images (one camera's stream written to
+// both folders; `run` flags NO_STEREO) made calibrate match a camera against
+// itself at another time: exit 0, "misalignment: 0.1561 deg +- 0.0647 deg"
+// on calib_wall_0 and a value to send to a board. Such frames have no stereo
+// difference to register.
+TEST(Calibrate, BothCamerasTheSameImagesIsNoMisalignment) {
+  const std::string dir = rendered("robustness_wall.yaml", 1.5, "same_images");
+  Recording rec = load_recording(dir);
+  for (FramePairEntry& f : rec.frames) f.path[1] = f.path[0];
+  std::string error = "(no error)";
+  try {
+    calibrate_misalignment(rec);
+  } catch (const std::runtime_error& e) {
+    error = e.what();
+  }
+  std::filesystem::remove_all(dir);
+  STRCMP_CONTAINS((dir + "/mav0: no frame pair registered: cam0 and cam1 delivered the same image on ").c_str(),
+                  error.c_str());
+  STRCMP_CONTAINS("(no stereo difference to register: one camera's images in both folders?)", error.c_str());
+}

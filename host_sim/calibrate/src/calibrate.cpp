@@ -283,6 +283,11 @@ Calibration calibrate_misalignment(const Recording& rec, const CalibrationOption
   FileStereoCamera camera(rec, width, height);
   std::vector<Profile> p0, p1;
   std::vector<uint64_t> times;
+  // Frames where both cameras delivered the same, textured image (the
+  // estimator's NO_STEREO): no stereo difference, nothing to register; were
+  // they registered, a camera would be matched against itself at another
+  // time (was: exit 0 and a misalignment to send to a board).
+  std::vector<bool> same_image;
   std::vector<uint8_t> b0(static_cast<size_t>(width * height)), b1(b0.size());
   hal::StereoImage img{0, {b0.data(), b1.data()}, 0, 0};
   for (;;) {
@@ -296,6 +301,7 @@ Calibration calibrate_misalignment(const Recording& rec, const CalibrationOption
         c0[static_cast<size_t>(u)] += b0[static_cast<size_t>(y * width + u)];
         c1[static_cast<size_t>(u)] += b1[static_cast<size_t>(y * width + u)];
       }
+    same_image.push_back(b0 == b1 && std::any_of(b0.begin(), b0.end(), [&](uint8_t v) { return v != b0[0]; }));
     p0.push_back(resample(c0, yaw0, g));
     p1.push_back(resample(c1, yaw1, g));
     times.push_back(img.t_ns);
@@ -331,8 +337,13 @@ Calibration calibrate_misalignment(const Recording& rec, const CalibrationOption
   out.height = height;
   std::vector<FrameShifts> shifts;
   size_t at_edge = 0;  // frames whose best match, a good one, lay at the end of the search
+  size_t same = 0;     // frames both cameras saw as one image
   for (size_t i = 0; i + 1 < p0.size(); ++i) {
     if (opt.progress) opt.progress("registering", i, p0.size() - 1);
+    if (same_image[i]) {
+      ++same;
+      continue;
+    }
     // Standing still: every lag matches; such frames say nothing.
     if (correlation(p0[i], p0[i + 1], 0, lo_all, hi_all, nullptr) > 0.99995) continue;
     ++out.candidates;
@@ -342,6 +353,11 @@ Calibration calibrate_misalignment(const Recording& rec, const CalibrationOption
     const size_t last = std::min(p0.size() - 1, i + static_cast<size_t>(opt.max_lag));
     std::vector<Match> fwd, bwd;
     for (size_t j = i; j <= last; ++j) {
+      if (same_image[j]) {  // no lag to a frame with one image for both cameras
+        fwd.push_back(Match{});
+        bwd.push_back(Match{});
+        continue;
+      }
       fwd.push_back(best_shift(p1[i], p0[j], max_shift));
       bwd.push_back(best_shift(p0[i], p1[j], max_shift));
     }
@@ -398,6 +414,10 @@ Calibration calibrate_misalignment(const Recording& rec, const CalibrationOption
     throw std::runtime_error(rec.root + ": no frame pair registered: " + std::to_string(at_edge) + " of " +
                              std::to_string(out.candidates) + " frames matched well only at the end of the +-" +
                              deg(opt.max_shift_deg * M_PI / 180) + " deg searched (--max-shift): is the misalignment larger?");
+  if (samples.empty() && same > 0)
+    throw std::runtime_error(rec.root + ": no frame pair registered: cam0 and cam1 delivered the same image on " +
+                             std::to_string(same) + " of " + std::to_string(p0.size() - 1) +
+                             " frames (no stereo difference to register: one camera's images in both folders?)");
   if (samples.empty())
     throw std::runtime_error(rec.root + ": no frame pair registered (does the rig move past a textured scene?)");
   out.misalignment = median(samples);
