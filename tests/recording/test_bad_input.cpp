@@ -620,6 +620,17 @@ TEST(BadInput, TextAfterTheYamlDocumentEndIsRefused) {
   STRCMP_EQUAL("(no error)", load_error().c_str());
 }
 
+// Brackets nested hundreds deep stop yaml-cpp's parser with "bad file"
+// (was: 'YAML syntax error: bad file', exit 1 with no rule said).
+TEST(BadInput, SensorYamlNestedTooDeepSaysSo) {
+  const std::string y = m + "cam1/sensor.yaml";
+  const long lines = static_cast<long>(fixture::read_lines(y).size());
+  fixture::write_text(y, fixture::read_text(y) + "deep: " + std::string(600, '[') + std::string(600, ']') + "\n");
+  const std::string e = load_error();
+  STRCMP_CONTAINS((y + ":" + std::to_string(lines + 1) + ": YAML nested ").c_str(), e.c_str());
+  STRCMP_CONTAINS(" levels deep, as deep as the YAML reader goes: a sensor.yaml is one mapping of keys", e.c_str());
+}
+
 // Values are shown where they break a rule.
 TEST(BadInput, SensorYamlErrorsShowTheValue) {
   const std::string y = m + "cam0/sensor.yaml";

@@ -1,5 +1,6 @@
 #include "lumavel/host/sensor_yaml.hpp"
 
+#include <yaml-cpp/depthguard.h>
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
@@ -87,6 +88,13 @@ YAML::Node load_yaml(const std::string& path) {
                                "not a YAML mapping of sensor keys (KEY: VALUE lines, docs/recording-format.md)");
     check_unique_keys(root, path, "");
     return root;
+  } catch (const YAML::DeepRecursion& e) {
+    // yaml-cpp's own words for it are "bad file" (was: 'YAML syntax error:
+    // bad file', no rule said).
+    throw recording_error_at(path, e.mark.line + 1,
+                             "YAML nested " + std::to_string(e.depth()) +
+                                 " levels deep, as deep as the YAML reader goes: a sensor.yaml is one mapping of keys "
+                                 "whose values are numbers, lists of numbers and T_BS's matrix");
   } catch (const YAML::ParserException& e) {
     throw recording_error_at(path, e.mark.line + 1, "YAML syntax error: " + e.msg);
   }
