@@ -222,6 +222,14 @@ TEST(ScenarioErrors, ASecondDocumentIsRefused) {
   STRCMP_EQUAL("(accepted)", error_of(std::string("description: \"a\n  --- b\"\n") + kGood).c_str());
 }
 
+// Brackets nested hundreds deep stop yaml-cpp's parser with "bad file"
+// (was: 'YAML syntax: bad file', exit 1 with no rule said).
+TEST(ScenarioErrors, NestingTooDeepSaysSo) {
+  const std::string e = error_of(std::string(kGood) + "seed: " + std::string(600, '[') + std::string(600, ']') + "\n");
+  STRCMP_CONTAINS("bad.yaml:14: YAML nested ", e.c_str());
+  STRCMP_CONTAINS(" levels deep, as deep as the YAML reader goes: a scenario is one map of KEY: VALUE lines", e.c_str());
+}
+
 // Aliases of aliases ("billion laughs"): 12 lines that expand to 9^12 values.
 // The check for repeated keys visited each of them: the render hung.
 TEST(ScenarioErrors, AliasesThatMultiplyAreRefused) {

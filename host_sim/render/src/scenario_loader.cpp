@@ -8,6 +8,7 @@
 #include "lumavel/host/path_check.hpp"
 #include "lumavel/host/yaml_text.hpp"
 
+#include <yaml-cpp/depthguard.h>
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
@@ -526,6 +527,11 @@ Scenario parse_scenario(const std::string& text, const std::string& name,
   YAML::Node root;
   try {
     root = YAML::Load(text);
+  } catch (const YAML::DeepRecursion& e) {
+    // yaml-cpp's own words for it are "bad file" (was: 'YAML syntax: bad file', no rule said).
+    throw ScenarioError(name + ":" + std::to_string(e.mark.line + 1) + ": YAML nested " + std::to_string(e.depth()) +
+                        " levels deep, as deep as the YAML reader goes: a scenario is one map of KEY: VALUE lines "
+                        "(host_sim/scenarios/README.md)");
   } catch (const YAML::ParserException& e) {
     throw ScenarioError(name + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax: " + e.msg);
   }
