@@ -519,6 +519,26 @@ TEST(BadInput, GroundTruthWithoutSamples) {
   STRCMP_CONTAINS((gt + ":2: no ground-truth samples after the header").c_str(), load_error().c_str());
 }
 
+// A ground truth that is there but covers none of the frames (its times in
+// microseconds here) was read as "no frame has ground truth": exit 0, no
+// figures, the file unused.
+TEST(BadInput, GroundTruthCoveringNoFrame) {
+  const std::string gt = m + "state_groundtruth_estimate0/data.csv";
+  std::vector<std::string> lines = fixture::read_lines(gt);
+  for (size_t i = 1; i < lines.size(); ++i) {
+    const size_t comma = lines[i].find(',');
+    lines[i] = std::to_string(std::stoull(lines[i].substr(0, comma)) / 1000) + lines[i].substr(comma);
+  }
+  fixture::write_lines(gt, lines);
+  const std::string e = load_error();
+  STRCMP_CONTAINS((gt + ": the ground-truth samples (t = ").c_str(), e.c_str());
+  STRCMP_CONTAINS((" ns) cover none of the frames of " + m + "cam0/data.csv (t = " +
+                   std::to_string(fixture::frame_time(o, 0)) + " .. ")
+                      .c_str(),
+                  e.c_str());
+  STRCMP_CONTAINS("no frame can be compared (remove the file for a run without ground truth)", e.c_str());
+}
+
 // yaml-cpp answers a repeated key with its first value: a T_BS appended to
 // correct the file was silently ignored.
 TEST(BadInput, SensorYamlKeyGivenTwice) {
