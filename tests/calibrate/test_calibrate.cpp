@@ -115,3 +115,22 @@ TEST(Calibrate, BothCamerasTheSameImagesIsNoMisalignment) {
                   error.c_str());
   STRCMP_CONTAINS("(no stereo difference to register: one camera's images in both folders?)", error.c_str());
 }
+
+// A recording of one frame was refused blaming the scene: "no frame pair
+// registered (does the rig move past a textured scene?)".
+TEST(Calibrate, OneFrameSaysSo) {
+  const std::string dir = rendered("robustness_wall.yaml", 0.5, "one_frame");
+  Recording rec = load_recording(dir);
+  rec.frames.resize(1);
+  std::string error = "(no error)";
+  try {
+    calibrate_misalignment(rec);
+  } catch (const std::runtime_error& e) {
+    error = e.what();
+  }
+  std::filesystem::remove_all(dir);
+  STRCMP_CONTAINS((dir + "/mav0: no frame pair registered: " + dir +
+                   "/mav0/cam0/data.csv has one frame, and each frame is registered against later ones")
+                      .c_str(),
+                  error.c_str());
+}

@@ -414,6 +414,12 @@ Calibration calibrate_misalignment(const Recording& rec, const CalibrationOption
     throw std::runtime_error(rec.root + ": no frame pair registered: " + std::to_string(at_edge) + " of " +
                              std::to_string(out.candidates) + " frames matched well only at the end of the +-" +
                              deg(opt.max_shift_deg * M_PI / 180) + " deg searched (--max-shift): is the misalignment larger?");
+  // One frame has no later one to be matched against (was: "does the rig
+  // move past a textured scene?", blaming the scene).
+  if (p0.size() < 2)
+    throw std::runtime_error(rec.root + ": no frame pair registered: " + rec.root +
+                             "/cam0/data.csv has one frame, and each frame is registered against later ones (record a "
+                             "pass past a textured scene)");
   if (samples.empty() && same > 0)
     throw std::runtime_error(rec.root + ": no frame pair registered: cam0 and cam1 delivered the same image on " +
                              std::to_string(same) + " of " + std::to_string(p0.size() - 1) +
