@@ -469,6 +469,15 @@ TEST(BadInput, FrameThatIsALinkToAnotherFrame) {
                    ".png' is the same file as '" + std::to_string(fixture::frame_time(o, 2)) + ".png', the frame of line 4")
                       .c_str(),
                   load_error().c_str());
+  // A link to the other camera's frame of another time (was: exit 0, cam1's
+  // image read as cam0's).
+  std::filesystem::remove(image(0, 6));
+  std::filesystem::create_symlink(image(1, 3), image(0, 6));
+  STRCMP_CONTAINS((m + "cam1/data.csv:5: filename '" + std::to_string(fixture::frame_time(o, 3)) +
+                   ".png' is the same file as '" + std::to_string(fixture::frame_time(o, 6)) +
+                   ".png', the frame of line 8 of " + m + "cam0/data.csv (a link to it)")
+                      .c_str(),
+                  load_error().c_str());
 }
 
 // A ground truth that is there but unreadable is refused, not taken for "no

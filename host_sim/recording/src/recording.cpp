@@ -43,12 +43,15 @@ bool leaves_data_folder(const std::string& name) {
   return false;
 }
 
-CamRows read_cam_rows(const std::string& root, int cam) {
+// `named`: the frame files of both cameras (a frame file is one frame: a
+// second row naming it, or naming a link to it, in either table is a damaged
+// table).
+CamRows read_cam_rows(const std::string& root, int cam, FrameNames& named) {
   CamRows c;
   const std::string dir = root + "/" + layout::kCamDir[cam];
   c.csv = dir + "/data.csv";
   c.rows = read_csv_table(c.csv, layout::cam_columns());
-  FrameNames named;  // a frame file is one frame: a second row naming it is a damaged table
+  named.next_table(c.csv);
   for (CsvRow& r : c.rows) {
     std::string& name = r.fields[0];
     if (name.empty()) throw recording_error_at(c.csv, r.line, "empty filename");
@@ -269,8 +272,9 @@ Recording load_recording(const std::string& dir_arg) {
   for (int c = 0; c < 2; ++c) check_lens_invertible(rec.cam[c], yaml[c]);
   rec.imu = read_imu_yaml(root + "/" + layout::kImuDir + "/sensor.yaml");
 
-  const CamRows c0 = read_cam_rows(root, 0);
-  const CamRows c1 = read_cam_rows(root, 1);
+  FrameNames named;
+  const CamRows c0 = read_cam_rows(root, 0, named);
+  const CamRows c1 = read_cam_rows(root, 1, named);
   if (c0.rows.empty()) throw recording_error_at(c0.csv, 2, "no frames");
   rec.frames = pair_frames(c0, c1);
 

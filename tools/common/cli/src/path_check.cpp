@@ -73,10 +73,16 @@ std::string FrameNames::why_repeated(const std::string& name, long line, const s
   if (path.empty() || ::stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return "";
   const auto [same, new_file] = file_of_.emplace(
       std::make_pair(static_cast<unsigned long long>(st.st_dev), static_cast<unsigned long long>(st.st_ino)),
-      std::make_pair(line, name));
+      Seen{line, name, table_});
   if (new_file) return "";
-  return "filename '" + name + "' is the same file as '" + same->second.second + "', the frame of line " +
-         std::to_string(same->second.first) + " (a link to it)" + kWhy;
+  return "filename '" + name + "' is the same file as '" + same->second.name + "', the frame of line " +
+         std::to_string(same->second.line) + (same->second.table != table_ ? " of " + same->second.table : "") +
+         " (a link to it)" + kWhy;
+}
+
+void FrameNames::next_table(const std::string& table) {
+  table_ = table;
+  line_of_.clear();
 }
 
 std::string why_too_big_for_text(const std::string& path, const std::string& holds) {

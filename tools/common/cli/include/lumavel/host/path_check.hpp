@@ -78,10 +78,20 @@ class FrameNames {
   // each row names its own image (...)". A path that cannot be examined is
   // left to why_not_a_file.
   std::string why_repeated(const std::string& name, long line, const std::string& path = "");
+  // The rows that follow are of another table (cam1/data.csv after
+  // cam0/data.csv): their names are read from another folder, but a file of
+  // an earlier table is still refused, "... the frame of line 50 of
+  // REC/mav0/cam0/data.csv (a link to it) ...".
+  void next_table(const std::string& table);
 
  private:
+  struct Seen {
+    long line;
+    std::string name, table;
+  };
+  std::string table_;
   std::map<std::string, long> line_of_;
-  std::map<std::pair<unsigned long long, unsigned long long>, std::pair<long, std::string>> file_of_;
+  std::map<std::pair<unsigned long long, unsigned long long>, Seen> file_of_;
 };
 // `path` (or a field, a line read from a file) as a message shows it: in full
 // up to 200 characters, else its start and end with the length ("aaa...zzz
