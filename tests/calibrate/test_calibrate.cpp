@@ -125,6 +125,26 @@ TEST(Calibrate, BothCamerasTheSameImagesIsNoMisalignment) {
   STRCMP_CONTAINS("(no stereo difference to register: one camera's images in both folders?)", error.c_str());
 }
 
+// Some frames with one image for both cameras are skipped and counted (the
+// report said "117 of 119 frames registered" and nothing of the 120 skipped).
+TEST(Calibrate, FramesWithOneImageForBothCamerasAreCounted) {
+  const std::string dir = rendered("robustness_wall.yaml", 1.5, "some_same_images");
+  Recording rec = load_recording(dir);
+  size_t made_same = 0;
+  for (size_t i = 0; i < rec.frames.size(); i += 3, ++made_same) rec.frames[i].path[1] = rec.frames[i].path[0];
+  Calibration c;
+  std::string error = "(no error)";
+  try {
+    c = calibrate_misalignment(rec);
+  } catch (const std::runtime_error& e) {
+    error = e.what();
+  }
+  std::filesystem::remove_all(dir);
+  STRCMP_EQUAL("(no error)", error.c_str());
+  // (the last frame is no candidate: it has no later one)
+  CHECK(c.same_image + 1 >= made_same && c.same_image <= made_same);
+}
+
 // A recording of one frame was refused blaming the scene: "no frame pair
 // registered (does the rig move past a textured scene?)".
 TEST(Calibrate, OneFrameSaysSo) {

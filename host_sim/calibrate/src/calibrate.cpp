@@ -420,6 +420,7 @@ Calibration calibrate_misalignment(const Recording& rec, const CalibrationOption
     throw std::runtime_error(rec.root + ": no frame pair registered: " + rec.root +
                              "/cam0/data.csv has one frame, and each frame is registered against later ones (record a "
                              "pass past a textured scene)");
+  out.same_image = same;
   if (samples.empty() && same > 0)
     throw std::runtime_error(rec.root + ": no frame pair registered: cam0 and cam1 delivered the same image on " +
                              std::to_string(same) + " of " + std::to_string(p0.size() - 1) +

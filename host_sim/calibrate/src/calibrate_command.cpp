@@ -123,6 +123,9 @@ int calibrate(CalibrateArgs& a) {
               rec.cam[0].height, c.width < rec.cam[0].width ? " binned" : "'s own size");
   std::printf("misalignment: %.4f deg +- %.4f deg (%zu of %zu frames registered)\n", c.misalignment * 180 / M_PI,
               c.uncertainty * 180 / M_PI, c.samples, c.candidates);
+  if (c.same_image > 0)
+    std::printf("skipped: %zu frames where both cameras delivered the same image (no stereo difference)\n",
+                c.same_image);
   std::printf("sensor.yaml says: %.4f deg\n", in_yaml * 180 / M_PI);
   const double uncertainty_deg = c.uncertainty * 180 / M_PI;
   if (!(uncertainty_deg <= kMaxSuggestedUncertaintyDeg)) {

@@ -44,6 +44,7 @@ struct Calibration {
   double uncertainty = 0;    // rad, 1 sigma: the spread over blocks of frames and the resolution floor
   size_t samples = 0;        // registered frame pairs used
   size_t candidates = 0;     // frames tried
+  size_t same_image = 0;     // frames skipped: both cameras delivered the same image (no stereo difference)
   int width = 0, height = 0;  // working size the frames were registered at
 };
 
