@@ -99,13 +99,13 @@ int32_t div_q(int64_t num, int64_t den, int q, bool* saturated) {
   // all k halvings in one shift (was a loop, a halving a step: den > 0, and k
   // halvings of num toward zero are one division by 2^k toward zero).
   const int64_t limit = int64_t{1} << (62 - q);
+  uint64_t mag = magnitude(num);
   if (den >= limit) {
     const int k = 64 - __builtin_clzll(static_cast<uint64_t>(den)) - (62 - q);
     den >>= k;
-    const uint64_t mag = num < 0 ? 0 - static_cast<uint64_t>(num) : static_cast<uint64_t>(num);
-    num = num < 0 ? -static_cast<int64_t>(mag >> k) : static_cast<int64_t>(mag >> k);
+    mag >>= k;
+    num = num < 0 ? -static_cast<int64_t>(mag) : static_cast<int64_t>(mag);
   }
-  const uint64_t mag = num < 0 ? 0 - static_cast<uint64_t>(num) : static_cast<uint64_t>(num);
   if (mag < (uint64_t{1} << (62 - q))) return div_q_one_division(num < 0, mag, den, q, saturated);
   const int64_t one = int64_t{1} << q;
   int64_t rem = 0;  // same sign as num

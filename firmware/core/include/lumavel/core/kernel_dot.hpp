@@ -182,7 +182,7 @@ inline int32_t ratio(int64_t x, const Reciprocal& r, int q, bool* sat) {
   // x / 2^sx (truncated towards zero) in [-2^31, 2^31), sx the least that fits.
   int sx = 0;
   if (x >= (int64_t{1} << 31) || x < -(int64_t{1} << 31)) {
-    const uint64_t a = x < 0 ? 0 - static_cast<uint64_t>(x) : static_cast<uint64_t>(x);
+    const uint64_t a = fx::magnitude(x);
     sx = bit_length(a) - 31;
     if (x < 0 && (a >> (sx - 1)) == (uint64_t{1} << 31)) --sx;  // -2^31 fits
     x = x < 0 ? -static_cast<int64_t>(a >> sx) : static_cast<int64_t>(a >> sx);
@@ -200,7 +200,7 @@ inline int32_t ratio(int64_t x, const Reciprocal& r, int q, bool* sat) {
     // The rounding half 2^(shift-1) lies in the high word, so the low word
     // cannot carry into the result: |p|'s high word (< 2^30 + 1) rounded in
     // 32 bits, the same value as shr_round's 64-bit shift (< 2^30: no saturation).
-    const uint64_t a = p < 0 ? 0 - static_cast<uint64_t>(p) : static_cast<uint64_t>(p);
+    const uint64_t a = fx::magnitude(p);
     const uint32_t m = (static_cast<uint32_t>(a >> 32) + (uint32_t{1} << (shift - 33))) >> (shift - 32);
     return p < 0 ? -static_cast<int32_t>(m) : static_cast<int32_t>(m);
   }

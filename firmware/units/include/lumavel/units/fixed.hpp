@@ -186,6 +186,9 @@ inline int32_t fraction_q16(int64_t num, int64_t den) {
   return static_cast<int32_t>(((n << 16) + d / 2) / d);
 }
 
+// |v| as unsigned: exact for every int64, INT64_MIN included (2^63).
+constexpr uint64_t magnitude(int64_t v) { return v < 0 ? 0 - static_cast<uint64_t>(v) : static_cast<uint64_t>(v); }
+
 // The travel from `since` to `now` (Q16 m/s x ns): exact while it is below
 // 2^63, i.e. for any window of the time of flight.
 constexpr int64_t travel_between(TravelQ16Ns now, TravelQ16Ns since) { return static_cast<int64_t>(now - since); }
