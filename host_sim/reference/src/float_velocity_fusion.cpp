@@ -49,7 +49,8 @@ FloatFusionOutput FloatVelocityFusion::update(const FloatFusionInput& in) {
       scale_var_ *= 1 - k;
     }
   }
-  // The output's smoothing, slowed by the residual; the differential's lag as that of the output it makes alone (the core's comment).
+  // The output's smoothing, slowed by the residual; the differential's lag as
+  // that of the output it makes alone (the core's comment).
   const double slowed_tau = kFusionTau * (1 + residual_ / kFusionSlowResidual);
   const double vd = in.v_differential / scale_ + lag_compensation(in, dt, slowed_tau);
   if (!in.direct) {  // nothing measured: V held

@@ -66,18 +66,20 @@ constexpr double kFusionScaleTermMaxSpeed = 64.0;
 // estimate, the innovations show what it really is on this scene.
 constexpr double kFusionTofFloor = 0.01;
 // Where the differential points against the time of flight's direction (which
-// camera trails: a discrete fact of the match; its value moved to the present
+// camera trails: a discrete fact of the match; taken as moved to the present
 // by the fused rate, so that a window spanning a reversal does not hold the
-// direction of its mean) by more than this many of its own sigmas, it has failed (near texture aliasing can turn it over while its
-// kernels still agree): the time of flight alone, and its scatter is not
-// judged against it. (Near clutter: V -1.3 m/s for 1.2 s of a 0.7 m/s pass.)
+// direction of its mean, and only where that stands clear of 0 by this many
+// of its own sigmas) by more than this many of its own sigmas, it has failed
+// (near texture aliasing can turn it over while its kernels still agree): the
+// time of flight alone, and its scatter is not judged against it. (Near
+// clutter: V -1.3 m/s for 1.2 s of a 0.7 m/s pass.)
 constexpr double kFusionAgainstSigmas = 2.0;
 // The time of flight is a mean over its window; the fusion moves it to the
 // present by the fused rate, A tau / 2. That rate lags a change of
 // acceleration (kFusionAccelTau) and is noisy, so the move counts as
 // uncertain by this share of itself: the time of flight weighs less while
 // the rig accelerates and its window is long (measured at 0, 0.5 and 1:
-// docs/design.md, "Time of flight").
+// docs/design.md, "Moving the window to the present").
 constexpr double kFusionTofMoveShare = 0.5;
 // Once it has so failed, it stays failed on the frames without a time of
 // flight that follow (a track lost for a few frames while near texture still

@@ -31,8 +31,9 @@
 // samples' whole variance for the first solution. (Counting the samples that
 // came before any solution, whose residual is the cameras' whole difference,
 // kept the prior strong for seconds: a 3.5 DN black level took 1.5 s.) The
-// solution is applied in the measure that it explains the samples (R^2 from kMatchExplainedNone to kMatchExplainedAll,
-// never less than it once was): twins' samples hold what the sampling itself
+// solution is applied in the measure that it explains the samples (R^2 from
+// kMatchExplainedNone to kMatchExplainedAll, never less than it once was):
+// twins' samples hold what the sampling itself
 // gets wrong, a few tenths of them at most, which a mapping must not chase.
 // New parameters change cam1's F: the estimator moves the previous frame's
 // F1 by J dp so that the next interval sees no step (estimator.cpp).
