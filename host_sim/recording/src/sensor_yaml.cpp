@@ -64,22 +64,8 @@ YAML::Node load_yaml(const std::string& path) {
     // LoadAll can loop on malformed input.)
     // So would the text after a '...' end marker (was: exit 0, the keys
     // after it ignored).
-    bool content = false;
-    long ended_at = 0;  // the line of a '...' after content
-    yaml_text::for_each_line(text, [&](long n, const std::string& l) {
-      if (yaml_text::is_marker(l, "---")) {
-        if (content)
-          throw recording_error_at(path, n, "a second YAML document (after '---'): a sensor.yaml is one mapping of keys");
-      } else if (yaml_text::is_marker(l, "...")) {
-        if (content && ended_at == 0) ended_at = n;
-      } else if (yaml_text::has_content(l)) {
-        if (ended_at != 0)
-          throw recording_error_at(path, n,
-                                   "text after the end of the document ('...' at line " + std::to_string(ended_at) +
-                                       "): a sensor.yaml is one mapping of keys");
-        content = true;
-      }
-    });
+    if (const yaml_text::NotOneDocument bad = yaml_text::why_not_one_document(text); bad.line != 0)
+      throw recording_error_at(path, bad.line, bad.why + ": a sensor.yaml is one mapping of keys");
     YAML::Node root = YAML::Load(text);
     if (root.IsNull())
       throw recording_error_in(path, "empty file: a sensor.yaml holds the sensor's keys (docs/recording-format.md)");

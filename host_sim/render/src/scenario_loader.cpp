@@ -508,22 +508,9 @@ Scenario parse_scenario(const std::string& text, const std::string& name,
   // '...' end marker) after some content was ignored, silently, and the
   // render made from the first part. Refused, as in a sensor.yaml (scanned
   // in the text: yaml-cpp's LoadAll can loop on malformed input).
-  bool content = false;
-  long ended_at = 0;  // the line of a '...' after content
-  yaml_text::for_each_line(text, [&](long line, const std::string& l) {
-    if (yaml_text::is_marker(l, "---")) {
-      if (content)
-        throw ScenarioError(name + ":" + std::to_string(line) +
-                            ": a second YAML document (after '---'): a scenario is one map of KEY: VALUE lines");
-    } else if (yaml_text::is_marker(l, "...")) {
-      if (content && ended_at == 0) ended_at = line;
-    } else if (yaml_text::has_content(l)) {
-      if (ended_at != 0)
-        throw ScenarioError(name + ":" + std::to_string(line) + ": text after the end of the document ('...' at line " +
-                            std::to_string(ended_at) + "): a scenario is one map of KEY: VALUE lines");
-      content = true;
-    }
-  });
+  if (const yaml_text::NotOneDocument bad = yaml_text::why_not_one_document(text); bad.line != 0)
+    throw ScenarioError(name + ":" + std::to_string(bad.line) + ": " + bad.why +
+                        ": a scenario is one map of KEY: VALUE lines");
   YAML::Node root;
   try {
     root = YAML::Load(text);

@@ -31,4 +31,30 @@ void for_each_line(const std::string& text, F f) {
   }
 }
 
+// Where `text` stops being one YAML document (Load reads the first and drops
+// the rest, silently): a '---' after some content, or content after a '...'
+// end marker. line 0: one document.
+struct NotOneDocument {
+  long line;
+  std::string why;  // "a second YAML document (after '---')", "text after the end of the document (...)"
+};
+inline NotOneDocument why_not_one_document(const std::string& text) {
+  NotOneDocument out{0, ""};
+  bool content = false;
+  long ended_at = 0;  // the line of a '...' after content
+  for_each_line(text, [&](long n, const std::string& l) {
+    if (out.line != 0) return;
+    if (is_marker(l, "---")) {
+      if (content) out = {n, "a second YAML document (after '---')"};
+    } else if (is_marker(l, "...")) {
+      if (content && ended_at == 0) ended_at = n;
+    } else if (has_content(l)) {
+      if (ended_at != 0)
+        out = {n, "text after the end of the document ('...' at line " + std::to_string(ended_at) + ")"};
+      content = true;
+    }
+  });
+  return out;
+}
+
 }  // namespace lumavel::host::yaml_text
