@@ -52,6 +52,32 @@ TEST(ColumnProfile, CountsClippedOnSampledRows) {
   LONGS_EQUAL(80, p.clip_sampled);
 }
 
+// The clip count's byte lanes against a pixel-by-pixel count: mixed rows of
+// 0, 1, 254 and 255 (the neighbours of the clipped values), every width's
+// tail, aligned and not, up to the widest row (a lane's largest count).
+TEST(ColumnProfile, ClipCountMatchesAPixelByPixelCount) {
+  uint32_t seed = 12345;
+  const uint8_t values[] = {0, 1, 2, 127, 128, 253, 254, 255};
+  for (const uint16_t w : std::initializer_list<uint16_t>{4, 5, 6, 7, 40, 41, 42, 43, kMaxColumns}) {
+    for (const uint16_t offset : std::initializer_list<uint16_t>{0, 1}) {
+      const uint16_t h = 17, stride = static_cast<uint16_t>(w + offset);
+      std::vector<uint8_t> buf(static_cast<size_t>(stride) * h + 4);
+      uint8_t* const img = buf.data() + offset;
+      for (size_t i = 0; i < static_cast<size_t>(stride) * h; ++i) {
+        seed = seed * 1664525u + 1013904223u;
+        img[i] = values[seed >> 29];
+      }
+      unsigned want = 0;
+      for (uint16_t y = 0; y < h; y = static_cast<uint16_t>(y + 8))
+        for (uint16_t x = 0; x < w; ++x) want += img[y * stride + x] == 0 || img[y * stride + x] == 255;
+      ColumnProfile p;
+      column_profile(img, w, h, stride, nullptr, p);
+      LONGS_EQUAL(want, p.clipped);
+      LONGS_EQUAL(3u * w, p.clip_sampled);
+    }
+  }
+}
+
 TEST(ColumnProfile, LineScan) {
   std::vector<uint8_t> img(128);
   for (int i = 0; i < 128; ++i) img[static_cast<size_t>(i)] = static_cast<uint8_t>(i);
