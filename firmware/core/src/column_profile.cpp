@@ -54,6 +54,9 @@ template <unsigned Words, bool Radial = false>
 __attribute__((always_inline)) inline void column_sums(const uint8_t* p, uint16_t from, uint16_t to, uint16_t from2,
                                                         uint16_t to2, uint16_t stride, bool aligned, ColumnSum* out,
                                                         Ring ring = {}) {
+  // Without SIMD, the even bytes are not masked at all: the words' plain sum
+  // (wrapping) is even + (odd << 8) exactly, and even < 2^32, so even is that
+  // sum less odd << 8, mod 2^32 (four operations a word where five were).
   uint32_t even[Words] = {}, odd[Words] = {};
   for (int range = 0; range < 2; ++range) {
     const uint8_t* q = p + uint32_t{range == 0 ? from : from2} * stride;
@@ -68,7 +71,7 @@ __attribute__((always_inline)) inline void column_sums(const uint8_t* p, uint16_
           even[k] = __uxtab16(even[k], w);
           odd[k] = __uxtab16(odd[k], (w >> 8) | (w << 24));  // UXTAB16 with ROR #8
 #else
-          even[k] += w & 0x00FF00FFu;
+          even[k] += w;
           odd[k] += (w >> 8) & 0x00FF00FFu;
 #endif
         }
@@ -77,11 +80,18 @@ __attribute__((always_inline)) inline void column_sums(const uint8_t* p, uint16_
       for (; q < end; q += stride)
         for (unsigned k = 0; k < Words; ++k) {
           const uint32_t w = load_word(q + 4 * k);
+#if defined(__ARM_FEATURE_SIMD32)
           even[k] += w & 0x00FF00FFu;
+#else
+          even[k] += w;
+#endif
           odd[k] += (w >> 8) & 0x00FF00FFu;
         }
     }
   }
+#if !defined(__ARM_FEATURE_SIMD32)
+  for (unsigned k = 0; k < Words; ++k) even[k] -= odd[k] << 8;
+#endif
   uint8_t probe[4] = {1, 0, 0, 0};
   const bool little = load_word(probe) == 1u;
   for (unsigned k = 0; k < Words; ++k) {
