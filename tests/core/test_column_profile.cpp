@@ -11,21 +11,26 @@ using namespace lumavel;
 
 TEST_GROUP(ColumnProfile){};
 
+// Every width's tail, word-aligned rows and not, and the tallest frame
+// (each byte lane's largest sum) with bytes near 255 in every lane.
 TEST(ColumnProfile, SumsEveryColumnWhateverTheWidth) {
-  for (const uint16_t w : std::initializer_list<uint16_t>{16, 17, 18, 19, 40, 159, 160}) {
-    const uint16_t h = 7, stride = static_cast<uint16_t>(w + 3);
-    std::vector<uint8_t> img(static_cast<size_t>(stride) * h, 0xEE);
-    for (uint16_t y = 0; y < h; ++y)
-      for (uint16_t x = 0; x < w; ++x) img[static_cast<size_t>(y * stride + x)] = static_cast<uint8_t>((x * 13 + y * 31) % 251);
-    ColumnProfile p;
-    column_profile(img.data(), w, h, stride, nullptr, p);
-    for (uint16_t x = 0; x < w; ++x) {
-      unsigned s = 0;
-      for (uint16_t y = 0; y < h; ++y) s += img[static_cast<size_t>(y * stride + x)];
-      LONGS_EQUAL(s, p.sum[x]);
-      CHECK_FALSE(p.q8);
-    }
-  }
+  for (const uint16_t w : std::initializer_list<uint16_t>{16, 17, 18, 19, 40, 159, 160})
+    for (const uint16_t h : std::initializer_list<uint16_t>{7, kMaxRows})
+      for (const uint16_t pad : std::initializer_list<uint16_t>{3, static_cast<uint16_t>((4 - w % 4) % 4)}) {
+        const uint16_t stride = static_cast<uint16_t>(w + pad);
+        std::vector<uint8_t> img(static_cast<size_t>(stride) * h, 0xEE);
+        for (uint16_t y = 0; y < h; ++y)
+          for (uint16_t x = 0; x < w; ++x)
+            img[static_cast<size_t>(y * stride + x)] = static_cast<uint8_t>(255 - (x * 13 + y * 31) % 23);
+        ColumnProfile p;
+        column_profile(img.data(), w, h, stride, nullptr, p);
+        for (uint16_t x = 0; x < w; ++x) {
+          unsigned s = 0;
+          for (uint16_t y = 0; y < h; ++y) s += img[static_cast<size_t>(y * stride + x)];
+          LONGS_EQUAL(s, p.sum[x]);
+          CHECK_FALSE(p.q8);
+        }
+      }
 }
 
 TEST(ColumnProfile, MaxSizeWhiteFrameDoesNotOverflow) {
