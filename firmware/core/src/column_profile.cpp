@@ -58,6 +58,14 @@ __attribute__((always_inline)) inline void column_sums(const uint8_t* p, uint16_
   // (wrapping) is even + (odd << 8) exactly, and even < 2^32, so even is that
   // sum less odd << 8, mod 2^32 (four operations a word where five were).
   uint32_t even[Words] = {}, odd[Words] = {};
+  // The odd bytes' mask, opaque to the compiler on Thumb-2 without SIMD (an
+  // empty asm: no instruction): held in a register, it ANDs w shifted in one
+  // instruction, where the immediate form takes a shift and an AND (M3 at
+  // 160x120: 139 023 -> 129 588 instructions a frame).
+  uint32_t mask = 0x00FF00FFu;
+#if defined(__thumb2__) && !defined(__ARM_FEATURE_SIMD32)
+  __asm__("" : "+r"(mask));
+#endif
   for (int range = 0; range < 2; ++range) {
     const uint8_t* q = p + uint32_t{range == 0 ? from : from2} * stride;
     const uint8_t* const end = p + uint32_t{range == 0 ? to : to2} * stride;
@@ -72,7 +80,7 @@ __attribute__((always_inline)) inline void column_sums(const uint8_t* p, uint16_
           odd[k] = __uxtab16(odd[k], (w >> 8) | (w << 24));  // UXTAB16 with ROR #8
 #else
           even[k] += w;
-          odd[k] += (w >> 8) & 0x00FF00FFu;
+          odd[k] += (w >> 8) & mask;
 #endif
         }
       }
@@ -85,7 +93,7 @@ __attribute__((always_inline)) inline void column_sums(const uint8_t* p, uint16_
 #else
           even[k] += w;
 #endif
-          odd[k] += (w >> 8) & 0x00FF00FFu;
+          odd[k] += (w >> 8) & mask;
         }
     }
   }
