@@ -39,7 +39,7 @@ uint32_t lanes_sum(uint32_t lanes) {
 // Sums of rows [from, to) of the 4 * Words columns at p: two 16-bit lanes per
 // register (255 * 128 < 2^16), so each pixel costs about one load share and
 // one add; Words words a row share the loop's pointer step, compare and
-// branch (two words: 13 instructions per 8 pixels on M3 against 18).
+// branch (four words: 19 instructions per 16 pixels on M3).
 // Word-aligned rows take the aligned path (one LDR per four pixels).
 // Inlined: a call per group of columns costs more than the band's own work.
 // Rows [from, to) and [from2, to2) (a radial ring's two halves; from2 ==
