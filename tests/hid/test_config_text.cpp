@@ -153,6 +153,25 @@ TEST(ConfigText, ValuesBeyondTheirFieldGetTheRule) {
                offline_refusal("kernels=1x:0.07\n").c_str());
 }
 
+// A whole number is written as the command lines take theirs: "040" is 32
+// to C's base-0 readers (and to CLI11's), 40 here: refused, not guessed
+// (was: width=040 set 40 while --width 040 ran at 32). A sign is a number's.
+TEST(ConfigText, AWholeNumberWithALeadingZeroIsRefused) {
+  STRCMP_EQUAL("rig.cfg:1: width = 040: a leading zero (octal to some readers, decimal to others): write the number "
+               "without it; width must be 16..160 columns",
+               offline_refusal("width=040\n").c_str());
+  STRCMP_EQUAL("rig.cfg:2: kernels = 1:0.07,01:0.14: a leading zero (octal to some readers, decimal to others): write "
+               "the number without it; kernels are ORDER:SIGMA_RAD[,...], 1..6 of them, orders 0..3, sigmas "
+               "0.0087..0.785 rad (0.5..45 deg)",
+               offline_refusal("width=40\nkernels=1:0.07,01:0.14\n").c_str());
+  STRCMP_EQUAL("rig.cfg:1: tau_us = 0x10: not a whole number; tau_us must be 1000..10000000 us",
+               offline_refusal("tau_us=0x10\n").c_str());
+  DeviceSetup s = sample();
+  STRCMP_EQUAL("", error_of(s, "width=+64\nkernels=1:0.07, 0:0.14\nbaseline_correction=0\n").c_str());
+  LONGS_EQUAL(64, s.config.width);
+  LONGS_EQUAL(0, s.config.kernels[1].order);
+}
+
 // Two values for one key in a file, or a file that sets nothing, are refused:
 // which was meant is not for lumavel to guess.
 TEST(ConfigText, OneLensValueIsOneValue) {

@@ -199,6 +199,21 @@ TEST(ScenarioErrors, TimesThatLeaveTheFormatAreRefused) {
   STRCMP_CONTAINS("first_frame_s", e.c_str());
 }
 
+// start_ns is read as the command lines read whole numbers: yaml-cpp read
+// C's base-0 forms ('010' as 8 ns, '0x10' as 16), the seed's reader 010 as 10.
+TEST(ScenarioErrors, AStartTimeInOctalOrHexadecimalIsRefused) {
+  std::string e = error_of(std::string("start_ns: 010\n") + kGood);
+  STRCMP_CONTAINS("bad.yaml:1: 'start_ns' must be a whole number of nanoseconds in 0..4e18 (timestamps must stay within "
+                  "signed 64 bits), written without a leading zero, not '010'",
+                  e.c_str());
+  e = error_of(std::string("start_ns: 0x10\n") + kGood);
+  STRCMP_CONTAINS("bad.yaml:1: 'start_ns' must be a whole number of nanoseconds in 0..4e18 (timestamps must stay within "
+                  "signed 64 bits), not '0x10'",
+                  e.c_str());
+  STRCMP_EQUAL("(accepted)", error_of(std::string("start_ns: 0\n") + kGood).c_str());
+  CHECK_EQUAL(1000000010LL, parse_scenario(std::string("start_ns: 1000000010\n") + kGood, "good.yaml").start_ns);
+}
+
 // The gyro's first sample time became int64 nanoseconds: imu offset_s 1e300
 // overflowed them and the render hung stepping from the wrapped time.
 TEST(ScenarioErrors, AGyroOffsetBeyondTheRangeIsRefused) {

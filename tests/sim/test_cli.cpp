@@ -143,6 +143,32 @@ TEST(Cli, UsageErrorsExitTwo) {
   STRCMP_CONTAINS("--only: needs a part of a study title, not an empty one", r.err.c_str());
 }
 
+// An option's whole number has no leading zero: CLI11 converts integer
+// options in base 0, so '--width 040' passed the range check as 40 and ran
+// at 32 columns, exit 0. Refused, with the rule; a sign is a number's.
+TEST(Cli, AWholeNumberWithALeadingZeroIsRefused) {
+  const std::string r0 = rec();
+  Outcome r = sim("run '" + r0 + "' -o est.csv --width 040");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("lumavel-sim run: --width: must be a whole number in 16..2048 (above 160 only with --engine vo), "
+                  "written without a leading zero (octal to some readers), not '040'",
+                  r.err.c_str());
+  r = sim("render a.yaml out --resolution 040x30");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("--resolution: must be WxH with W in 1..8192 and H in 1..8192 (e.g. 40x30), written without a "
+                  "leading zero (octal to some readers), not '040x30'",
+                  r.err.c_str());
+  r = sim("render a.yaml out --seed 010");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("--seed: must be a whole number in 0..9007199254740992, written without a leading zero", r.err.c_str());
+  r = sim("run '" + r0 + "' -o est.csv --width +20");
+  LONGS_EQUAL(0, r.code);
+  STRCMP_CONTAINS(" 20x30 working", r.err.c_str());
+  r = sim("run '" + r0 + "' -o est.csv --width 0");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("not '0'", r.err.c_str());
+}
+
 TEST(Cli, MissingRecordingExitsOne) {
   Outcome r = sim("run nowhere");
   LONGS_EQUAL(1, r.code);

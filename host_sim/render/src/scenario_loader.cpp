@@ -2,6 +2,7 @@
 // typo is an error naming file and line, never a silently ignored setting.
 #include "lumavel/host/render/scenario_loader.hpp"
 
+#include "lumavel/host/decimal_text.hpp"
 #include "lumavel/host/lens_distortion.hpp"
 #include "lumavel/host/render/photometric_presets.hpp"
 #include "lumavel/host/render/view_renderer.hpp"
@@ -542,16 +543,17 @@ Scenario parse_scenario(const std::string& text, const std::string& name,
     if (seed != std::floor(seed)) r.fail(root["seed"], "'seed' must be a whole number");
     s.seed = static_cast<uint64_t>(seed);
     if (const YAML::Node n = root["start_ns"]) {
-      long long v = -1;
-      try {
-        v = n.as<long long>();
-      } catch (const YAML::Exception&) {
-      }
+      // As the command lines read whole numbers (decimal_text.hpp): yaml-cpp's
+      // as<long long> reads C's base-0 forms, 'start_ns: 010' as 8 and 0x10 as 16.
+      const WholeText w = n.IsScalar() ? read_whole(n.Scalar()) : WholeText{WholeText::Problem::kNotAWholeNumber, 0};
+      const long long v = w.problem == WholeText::Problem::kNone ? w.value : -1;
       // Timestamps start_ns + up to 1e6 s stay within the format's signed 64-bit nanoseconds.
       constexpr long long kMaxStartNs = 4000000000000000000LL;
       if (v < 0 || v > kMaxStartNs)
-        r.fail(n, "'start_ns' must be a whole number of nanoseconds in 0..4e18 (timestamps must stay within signed "
-                  "64 bits), not '" + (n.IsScalar() ? n.Scalar() : std::string("?")) + "'");
+        r.fail(n, std::string("'start_ns' must be a whole number of nanoseconds in 0..4e18 (timestamps must stay "
+                              "within signed 64 bits)") +
+                      (w.problem == WholeText::Problem::kLeadingZero ? ", written without a leading zero" : "") +
+                      ", not '" + (n.IsScalar() ? n.Scalar() : std::string("?")) + "'");
       s.start_ns = v;
     }
     s.groundtruth_rate_hz = r.num(root, "groundtruth_rate_hz", 200, 1, 100000);

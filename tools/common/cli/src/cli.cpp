@@ -41,13 +41,20 @@ class UsageFirst : public CLI::Formatter {
 
 std::string in_quotes(const std::string& s) { return "'" + s + "'"; }
 
+// Whole numbers as the files' (decimal_text.hpp): "040" is refused, not 40
+// here and 32 to CLI11, which converts integer options in base 0.
 bool parse_long(const std::string& s, long long& out) {
-  if (s.empty()) return false;
-  char* end = nullptr;
-  errno = 0;
-  out = std::strtoll(s.c_str(), &end, 10);
-  return *end == '\0' && errno == 0 && !std::isspace(static_cast<unsigned char>(s[0]));
+  const host::WholeText w = host::read_whole(s);
+  out = w.value;
+  return w.problem == host::WholeText::Problem::kNone;
 }
+
+bool has_leading_zero(const std::string& s) {
+  return host::read_whole(s).problem == host::WholeText::Problem::kLeadingZero;
+}
+
+// What a message adds when a leading zero is what is wrong.
+std::string leading_zero_note(bool zero) { return zero ? ", written without a leading zero (octal to some readers)" : ""; }
 
 // Decimal only, as the files' numbers (decimal_text.hpp): '--baseline 0x1p-5' is refused, not 0.03125.
 bool parse_double(const std::string& s, double& out) {
@@ -165,8 +172,8 @@ CLI::Validator whole_number_in(long long lo, long long hi, const std::string& no
       [lo, hi, note](std::string& s) -> std::string {
         long long v = 0;
         if (!parse_long(s, v) || v < lo || v > hi)
-          return "must be a whole number in " + std::to_string(lo) + ".." + std::to_string(hi) + note + ", not " +
-                 in_quotes(s);
+          return "must be a whole number in " + std::to_string(lo) + ".." + std::to_string(hi) + note +
+                 leading_zero_note(has_leading_zero(s)) + ", not " + in_quotes(s);
         return {};
       },
       "");
@@ -227,9 +234,12 @@ CLI::Validator size_wxh(int max_w, int max_h) {
   return CLI::Validator(
       [max_w, max_h](std::string& s) -> std::string {
         int w = 0, h = 0;
-        if (!parse_size(s, w, h) || w > max_w || h > max_h)
+        if (!parse_size(s, w, h) || w > max_w || h > max_h) {
+          const size_t x = s.find('x');
+          const bool zero = x != std::string::npos && (has_leading_zero(s.substr(0, x)) || has_leading_zero(s.substr(x + 1)));
           return "must be WxH with W in 1.." + std::to_string(max_w) + " and H in 1.." + std::to_string(max_h) +
-                 " (e.g. 40x30), not " + in_quotes(s);
+                 " (e.g. 40x30)" + leading_zero_note(zero) + ", not " + in_quotes(s);
+        }
         return {};
       },
       "");

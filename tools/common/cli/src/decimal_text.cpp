@@ -39,4 +39,37 @@ DecimalText read_decimal(const std::string& text) {
   return d;
 }
 
+WholeText read_whole(const std::string& text) {
+  WholeText w;
+  using P = WholeText::Problem;
+  const size_t digits = text.empty() || (text[0] != '+' && text[0] != '-') ? 0 : 1;
+  if (digits == text.size() || text.find_first_not_of("0123456789", digits) != std::string::npos) {
+    w.problem = P::kNotAWholeNumber;
+    return w;
+  }
+  if (text[digits] == '0' && text.size() > digits + 1) {
+    w.problem = P::kLeadingZero;
+    return w;
+  }
+  char* end = nullptr;
+  errno = 0;
+  w.value = std::strtoll(text.c_str(), &end, 10);
+  if (errno == ERANGE) {
+    w.problem = P::kOverflow;
+    w.value = 0;
+  }
+  return w;
+}
+
+const char* whole_text_rule(WholeText::Problem p) {
+  switch (p) {
+    case WholeText::Problem::kNone: return "";
+    case WholeText::Problem::kNotAWholeNumber: return "not a whole number";
+    case WholeText::Problem::kLeadingZero:
+      return "a leading zero (octal to some readers, decimal to others): write the number without it";
+    case WholeText::Problem::kOverflow: return "beyond 64 bits";
+  }
+  return "";
+}
+
 }  // namespace lumavel::host

@@ -50,13 +50,13 @@ double parse_double(const std::string& v) {
   return d.value;
 }
 
+// Read as the command lines read their whole numbers (decimal_text.hpp): "040" is refused.
 long long parse_int(const std::string& v, long long lo, long long hi) {
-  char* end = nullptr;
-  errno = 0;
-  const long long n = std::strtoll(v.c_str(), &end, 10);
-  if (v.empty() || *end != '\0') throw BadValue("not a whole number", false);
-  if (errno == ERANGE || n < lo || n > hi) throw BadValue("beyond its field", true);
-  return n;
+  const WholeText w = read_whole(v);
+  using P = WholeText::Problem;
+  if (w.problem == P::kNotAWholeNumber || w.problem == P::kLeadingZero) throw BadValue(whole_text_rule(w.problem), false);
+  if (w.problem == P::kOverflow || w.value < lo || w.value > hi) throw BadValue("beyond its field", true);
+  return w.value;
 }
 
 // Physical value to a signed 32-bit fixed-point number with `frac` bits.
@@ -100,7 +100,9 @@ void parse_kernels(proto::DeviceConfig& c, const std::string& v) {
                                std::to_string(proto::kWireKernels) + " kernels");
     }
     proto::KernelSetting& k = n.kernels[n.kernel_count++];
-    k.order = static_cast<uint8_t>(parse_int(item.substr(0, colon), 0, 255));
+    // Blanks before an order are dropped, as they were ("1:0.07, 1:0.14").
+    const size_t order_at = std::min(item.find_first_not_of(" \t"), colon);
+    k.order = static_cast<uint8_t>(parse_int(item.substr(order_at, colon - order_at), 0, 255));
     k.sigma = to_q(item.substr(colon + 1), fx::kAngleFrac);
     if (comma == std::string::npos) break;
     start = comma + 1;

@@ -27,4 +27,23 @@ struct DecimalText {
 };
 DecimalText read_decimal(const std::string& text);
 
+// TEXT read whole as a whole number: decimal digits with an optional sign,
+// nothing else (no spaces). A leading zero is refused: "040" is 32 to C's
+// base-0 readers (CLI11 converts its integer options so: `--width 040` ran
+// at 32 columns after the range check had read 40), 40 to others; which one
+// was meant is not for the tools to guess. "0" itself is a number.
+struct WholeText {
+  enum class Problem {
+    kNone,
+    kNotAWholeNumber,  // empty, or not only digits after the sign
+    kLeadingZero,      // digits, but starting with 0 ("040", "-07", "00")
+    kOverflow,         // digits beyond 64 bits
+  };
+  Problem problem = Problem::kNone;
+  long long value = 0;  // set when problem is kNone
+};
+WholeText read_whole(const std::string& text);
+// The rule broken, in words ("" for kNone): for messages.
+const char* whole_text_rule(WholeText::Problem p);
+
 }  // namespace lumavel::host
