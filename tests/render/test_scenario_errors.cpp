@@ -309,3 +309,19 @@ TEST(ScenarioErrors, ASinusoidGoingBelowBlackIsRefused) {
   STRCMP_EQUAL("(accepted)", error_of(replace(kGood, wall, "{type: sinusoid, mean: 127.5, amplitude: 127.5}")).c_str());
   STRCMP_EQUAL("(accepted)", error_of(replace(kGood, "speed: 0.5", "speed: [0.5, -0.5], profile: smooth")).c_str());
 }
+
+// And above 255 it was clipped to white, silently (the crests flattened, the
+// mean lowered): refused the same way.
+TEST(ScenarioErrors, ASinusoidGoingAboveWhiteIsRefused) {
+  const std::string wall = "{type: uniform, value: 90}";
+  std::string e = error_of(replace(kGood, wall, "{type: sinusoid, mean: 200, amplitude: 100}"));
+  STRCMP_CONTAINS("bad.yaml:13: sinusoid 'mean' = 200 plus its 'amplitude' = 100 is 300: the brightness, mean + "
+                  "amplitude at the crests, would go above 255 (white) and be clipped; amplitude must be at most 255 - "
+                  "mean",
+                  e.c_str());
+  // The default amplitude (127) with a brighter mean.
+  e = error_of(replace(kGood, wall, "{type: sinusoid, mean: 129, combine: product}"));
+  STRCMP_CONTAINS("bad.yaml:13: sinusoid 'mean' = 129 plus its 'amplitude' = 127 is 256", e.c_str());
+  STRCMP_EQUAL("(accepted)", error_of(replace(kGood, wall, "{type: sinusoid, mean: 200, amplitude: 55}")).c_str());
+  STRCMP_EQUAL("(accepted)", error_of(replace(kGood, wall, "{type: sinusoid, mean: 128}")).c_str());  // the defaults
+}

@@ -29,6 +29,8 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kPi = 3.14159265358979323846;
+// The brightest a surface is (8-bit white): the patterns' levels lie in 0..kWhite.
+constexpr double kWhite = 255;
 
 class Reader {
  public:
@@ -344,12 +346,12 @@ void read_pattern(const Reader& r, const YAML::Node& n, PatternSpec& p,
   if (type == "uniform") {
     r.check_keys(n, "pattern", {"type", "value"});
     p.kind = PatternKind::Uniform;
-    p.value = r.num(n, "value", p.value, 0, 255);
+    p.value = r.num(n, "value", p.value, 0, kWhite);
   } else if (type == "sinusoid") {
     r.check_keys(n, "pattern", {"type", "mean", "amplitude", "period_m", "phase_deg", "combine"});
     p.kind = PatternKind::Sinusoid;
-    p.mean = r.num(n, "mean", p.mean, 0, 255);
-    p.amplitude = r.num(n, "amplitude", p.amplitude, 0, 255);
+    p.mean = r.num(n, "mean", p.mean, 0, kWhite);
+    p.amplitude = r.num(n, "amplitude", p.amplitude, 0, kWhite);
     // The pattern spans mean - amplitude .. mean + amplitude (sum or product):
     // below 0 it was clipped to black, silently (flattened troughs, another
     // mean). A brightness cannot be negative: refused.
@@ -358,6 +360,14 @@ void read_pattern(const Reader& r, const YAML::Node& n, PatternSpec& p,
       os << "sinusoid 'amplitude' = " << p.amplitude << " is larger than its 'mean' = " << p.mean
          << ": the brightness, mean - amplitude at the troughs, would go below 0 and be clipped to black; a "
             "brightness cannot be negative, so amplitude must be at most the mean";
+      r.fail(n["amplitude"] ? n["amplitude"] : n["mean"] ? n["mean"] : n, os.str());
+    }
+    // Above 255 it was clipped to white, silently (flattened crests, another mean).
+    if (p.mean + p.amplitude > kWhite) {
+      std::ostringstream os;
+      os << "sinusoid 'mean' = " << p.mean << " plus its 'amplitude' = " << p.amplitude << " is "
+         << p.mean + p.amplitude << ": the brightness, mean + amplitude at the crests, would go above " << kWhite
+         << " (white) and be clipped; amplitude must be at most " << kWhite << " - mean";
       r.fail(n["amplitude"] ? n["amplitude"] : n["mean"] ? n["mean"] : n, os.str());
     }
     if (n["period_m"]) {
@@ -375,8 +385,8 @@ void read_pattern(const Reader& r, const YAML::Node& n, PatternSpec& p,
     r.check_keys(n, "pattern", {"type", "square_m", "low", "high"});
     p.kind = PatternKind::Checker;
     p.square_m = r.num(n, "square_m", p.square_m, 1e-4, 1e6);
-    p.low = r.num(n, "low", p.low, 0, 255);
-    p.high = r.num(n, "high", p.high, 0, 255);
+    p.low = r.num(n, "low", p.low, 0, kWhite);
+    p.high = r.num(n, "high", p.high, 0, kWhite);
   } else if (type == "photo") {
     r.check_keys(n, "pattern", {"type", "file", "size_m", "tiling", "offset_m"});
     p.kind = PatternKind::Photo;
@@ -404,7 +414,7 @@ void read_pattern(const Reader& r, const YAML::Node& n, PatternSpec& p,
 
 void read_scene(const Reader& r, const YAML::Node& n, Scenario& s, const std::string& base_dir) {
   r.check_keys(n, "scene", {"background", "planes"});
-  s.background = r.num(n, "background", s.background, 0, 255);
+  s.background = r.num(n, "background", s.background, 0, kWhite);
   const YAML::Node planes = n["planes"];
   if (!planes) return;
   if (!planes.IsSequence()) r.fail(planes, "'planes' must be a list");
