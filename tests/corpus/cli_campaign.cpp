@@ -453,7 +453,13 @@ std::vector<Case> recording_cases(const std::string& base) {
   refused("YAML T_BS a reflection", [=](const std::string& r) { scale_column0(r + m + y1, -1); }, y1, "T_BS");
   refused("YAML T_BS 15 numbers", [=](const std::string& r) { replace_in(r + m + yi, "0, 0, 0, 1]", "0, 0, 0]"); }, yi, "T_BS");
   refused("YAML baseline zero", [=](const std::string& r) { set_tbs(r + m + y0, 3, get_tbs(r + m + y1, 3)); }, y0, "T_BS");
-  refused("YAML baseline 1000 m", [=](const std::string& r) { set_tbs(r + m + y1, 3, "1000"); }, "sensor.yaml", "baseline");
+  refused("YAML baseline 10 m", [=](const std::string& r) { set_tbs(r + m + y1, 3, "10"); }, "sensor.yaml", "baseline");
+  // Values read but not estimated with (was: exit 0, 1e300 taken as it was).
+  refused("YAML camera 1000 m from the body origin", [=](const std::string& r) { set_tbs(r + m + y1, 3, "1000"); }, y1, "T_BS: translation (1000");
+  refused("YAML imu T_BS translation 1e300", [=](const std::string& r) { set_tbs(r + m + yi, 11, "1e300"); }, yi, "translation");
+  refused("YAML exposure 1e300 s", [=](const std::string& r) { put_yaml(r + m + y0, "exposure_s", "1e300"); }, y0, "exposure_s = 1e+300");
+  refused("YAML gyro noise density 1e300", [=](const std::string& r) { put_yaml(r + m + yi, "gyroscope_noise_density", "1e300"); }, yi, "gyroscope_noise_density = 1e+300");
+  refused("YAML rate_hz 1e300", [=](const std::string& r) { set_yaml(r + m + y1, "rate_hz", "1e300"); }, at_key(y1, "rate_hz"), "1e+300");
   refused("YAML baseline along y", [=](const std::string& r) { set_tbs(r + m + y1, 7, "3"); }, y0, "T_BS");
   refused("cam1 missing entirely", [=](const std::string& r) { fs::remove_all(r + m + "cam1"); }, y1, "");
   refused("mav0 a file", [=](const std::string& r) { fs::remove_all(r + "/mav0"); write_text(r + "/mav0", "x"); }, "mav0", "file");

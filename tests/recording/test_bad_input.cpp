@@ -668,6 +668,55 @@ TEST(BadInput, SensorYamlErrorsShowTheValue) {
   STRCMP_CONTAINS("must be positive", load_error().c_str());
 }
 
+// Values lumavel reads but does not estimate with (the gyro's position, the
+// exposure, the gyro's noise model; rate_hz where data.csv times the
+// samples) were taken whatever they were: 1e300 passed, silently (exit 0).
+// Refused at their line, with the range.
+TEST(BadInput, SensorYamlValuesNotEstimatedWithAreRangeChecked) {
+  const std::string yi = m + "imu0/sensor.yaml", y0 = m + "cam0/sensor.yaml";
+  // "FILE:LINE: " of the first line of `y` that starts with `key`.
+  auto at = [](const std::string& y, const std::string& key) {
+    const std::vector<std::string> lines = fixture::read_lines(y);
+    size_t i = 0;
+    while (i < lines.size() && lines[i].rfind(key, 0) != 0) ++i;
+    return y + ":" + std::to_string(i + 1) + ": ";
+  };
+  const std::string imu = fixture::read_text(yi), cam = fixture::read_text(y0);
+  fixture::replace_in(yi, "data: [1, 0, 0, 0,", "data: [1, 0, 0, 1e300,");
+  STRCMP_CONTAINS((at(yi, "  cols:") + "T_BS: translation (1e+300, 0, 0) m: each component must be within +-100 m (a "
+                   "sensor on the vehicle, near the body origin)").c_str(),
+                  load_error().c_str());
+  // The key's whole line set to `line`.
+  auto set_key = [&](const std::string& y, const std::string& text, const std::string& key, const std::string& line) {
+    fixture::write_text(y, text);
+    std::vector<std::string> lines = fixture::read_lines(y);
+    for (std::string& l : lines)
+      if (l.rfind(key + ":", 0) == 0) l = line;
+    fixture::write_lines(y, lines);
+  };
+  set_key(yi, imu, "gyroscope_noise_density", "gyroscope_noise_density: 1e300");
+  STRCMP_CONTAINS((at(yi, "gyroscope_noise_density") + "gyroscope_noise_density = 1e+300 must be 0..10 rad/s/sqrt(Hz)").c_str(),
+                  load_error().c_str());
+  set_key(yi, imu, "gyroscope_noise_density", "gyroscope_random_walk: 11");
+  STRCMP_CONTAINS((at(yi, "gyroscope_random_walk") + "gyroscope_random_walk = 11 must be 0..10 rad/s^2/sqrt(Hz)").c_str(),
+                  load_error().c_str());
+  fixture::write_text(yi, imu);
+  fixture::replace_in(yi, "rate_hz: ", "rate_hz: 1e300 #");
+  STRCMP_CONTAINS((at(yi, "rate_hz") + "rate_hz = 1e+300 must be at most 1e+06 Hz (a period of 1 us or more)").c_str(),
+                  load_error().c_str());
+  fixture::write_text(yi, imu);
+  // The fixture's cameras run at 100 Hz: at most 10 frame periods is 0.1 s.
+  fixture::write_text(y0, cam + "exposure_s: 0.25\n");
+  STRCMP_CONTAINS((at(y0, "exposure_s") + "exposure_s = 0.25 must be 0..0.1 s (at most 10 frame periods, 10 / "
+                   "rate_hz)").c_str(),
+                  load_error().c_str());
+  // The ranges' ends, and an ordinary exposure and noise model, load.
+  fixture::write_text(y0, cam + "exposure_s: 0.1\n");
+  set_key(yi, imu, "gyroscope_noise_density", "gyroscope_noise_density: 1.7e-4\ngyroscope_random_walk: 10");
+  fixture::replace_in(yi, "data: [1, 0, 0, 0,", "data: [1, 0, 0, -100,");
+  STRCMP_EQUAL("(no error)", load_error().c_str());
+}
+
 // A data.csv that is not text (a zero-filled or binary file of many MB) is
 // refused at its first line, without reading it whole into memory.
 TEST(BadInput, AnEndlessFirstLineIsRefusedAtOnce) {

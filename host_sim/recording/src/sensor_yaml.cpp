@@ -22,6 +22,13 @@ namespace {
 
 long line_of(const YAML::Node& n) { return n.Mark().line + 1; }  // yaml-cpp lines are 0-based
 
+// A derived bound for a message (10 / 60 Hz as 0.1667, not 0.16666666666666666).
+std::string four_digits(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.4g", v);
+  return b;
+}
+
 // The line of `key` itself (a block value such as T_BS's starts on the next line).
 long key_line(const YAML::Node& root, const char* key) {
   for (const auto& kv : root)
@@ -169,20 +176,40 @@ Pose read_pose(const YAML::Node& root, const std::string& path) {
     throw recording_error_at(path, line_of(t), "T_BS: last row is " + format_double(d[12]) + ", " +
                                                    format_double(d[13]) + ", " + format_double(d[14]) + ", " +
                                                    format_double(d[15]) + ": it must be 0, 0, 0, 1");
+  if (std::fabs(d[3]) > kMaxSensorOffsetM || std::fabs(d[7]) > kMaxSensorOffsetM || std::fabs(d[11]) > kMaxSensorOffsetM)
+    throw recording_error_at(path, line_of(t), "T_BS: translation (" + format_double(d[3]) + ", " + format_double(d[7]) +
+                                                   ", " + format_double(d[11]) + ") m: each component must be within +-" +
+                                                   format_double(kMaxSensorOffsetM) +
+                                                   " m (a sensor on the vehicle, near the body origin)");
   Pose p;
   for (size_t i = 0; i < 16; ++i) p[i] = d[i];
   return p;
 }
 
 // -1 when absent (the optional physical quantities are never negative: a
-// negative value in the file is an error, not a way to say "absent").
-double optional_number(const YAML::Node& root, const char* key, const std::string& path) {
+// negative value in the file is an error, not a way to say "absent"). At
+// most `hi`, `range` saying the range and its unit ("0..10 rad/s/sqrt(Hz)").
+double optional_number(const YAML::Node& root, const char* key, const std::string& path, double hi,
+                       const std::string& range) {
   const YAML::Node n = root[key];
   if (!n) return -1.0;
   const double v = number(n, key, path);
   if (v < 0)
     throw recording_error_at(path, line_of(n), std::string(key) + " = " + format_double(v) + " must not be negative");
+  if (v > hi)
+    throw recording_error_at(path, line_of(n), std::string(key) + " = " + format_double(v) + " must be " + range);
   return v;
+}
+
+// rate_hz, positive and at most kMaxRateHz; its line in `line`.
+double read_rate(const YAML::Node& root, const std::string& path, long& line) {
+  const double rate = number(require(root, "rate_hz", path), "rate_hz", path);
+  line = line_of(root["rate_hz"]);
+  if (rate <= 0) throw recording_error_at(path, line, "rate_hz = " + format_double(rate) + " must be positive");
+  if (rate > kMaxRateHz)
+    throw recording_error_at(path, line, "rate_hz = " + format_double(rate) + " must be at most " +
+                                             format_double(kMaxRateHz) + " Hz (a period of 1 us or more)");
+  return rate;
 }
 
 std::string optional_text(const YAML::Node& root, const char* key) {
@@ -242,10 +269,7 @@ CameraSensor read_camera_yaml(const std::string& path) {
   const YAML::Node root = load_yaml(path);
   check_sensor_type(root, "camera", path);
   CameraSensor c;
-  c.rate_hz = number(require(root, "rate_hz", path), "rate_hz", path);
-  c.line.rate_hz = line_of(root["rate_hz"]);
-  if (c.rate_hz <= 0)
-    throw recording_error_at(path, c.line.rate_hz, "rate_hz = " + format_double(c.rate_hz) + " must be positive");
+  c.rate_hz = read_rate(root, path, c.line.rate_hz);
   const YAML::Node res = require(root, "resolution", path);
   const std::vector<double> r = numbers(res, "resolution", 2, path);
   if (r[0] < 1 || r[1] < 1 || r[0] > 16384 || r[1] > 16384 || r[0] != std::floor(r[0]) || r[1] != std::floor(r[1]))
@@ -278,7 +302,10 @@ CameraSensor read_camera_yaml(const std::string& path) {
   c.line.distortion = line_of(dc);
   c.T_BS = read_pose(root, path);
   c.line.T_BS = key_line(root, "T_BS");
-  c.exposure_s = optional_number(root, "exposure_s", path);
+  c.exposure_s = optional_number(root, "exposure_s", path, kMaxExposureFrames / c.rate_hz,
+                                 "0.." + four_digits(kMaxExposureFrames / c.rate_hz) + " s (at most " +
+                                     format_double(kMaxExposureFrames) + " frame periods, " +
+                                     format_double(kMaxExposureFrames) + " / rate_hz)");
   c.comment = optional_text(root, "comment");
   return c;
 }
@@ -287,13 +314,12 @@ ImuSensor read_imu_yaml(const std::string& path) {
   const YAML::Node root = load_yaml(path);
   check_sensor_type(root, "imu", path);
   ImuSensor s;
-  s.rate_hz = number(require(root, "rate_hz", path), "rate_hz", path);
-  s.line.rate_hz = line_of(root["rate_hz"]);
-  if (s.rate_hz <= 0)
-    throw recording_error_at(path, s.line.rate_hz, "rate_hz = " + format_double(s.rate_hz) + " must be positive");
+  s.rate_hz = read_rate(root, path, s.line.rate_hz);
   s.T_BS = read_pose(root, path);
-  s.gyroscope_noise_density = optional_number(root, "gyroscope_noise_density", path);
-  s.gyroscope_random_walk = optional_number(root, "gyroscope_random_walk", path);
+  s.gyroscope_noise_density = optional_number(root, "gyroscope_noise_density", path, kMaxGyroNoiseDensity,
+                                              "0.." + format_double(kMaxGyroNoiseDensity) + " rad/s/sqrt(Hz)");
+  s.gyroscope_random_walk = optional_number(root, "gyroscope_random_walk", path, kMaxGyroRandomWalk,
+                                            "0.." + format_double(kMaxGyroRandomWalk) + " rad/s^2/sqrt(Hz)");
   s.comment = optional_text(root, "comment");
   return s;
 }

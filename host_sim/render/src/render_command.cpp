@@ -14,6 +14,7 @@
 #include "lumavel/host/recording.hpp"
 #include "lumavel/host/rig.hpp"
 #include "lumavel/host/rig_settings_check.hpp"
+#include "lumavel/host/sensor_yaml.hpp"
 #include "lumavel/host/render/recording_renderer.hpp"
 #include "lumavel/host/render/photometric_presets.hpp"
 #include "lumavel/host/render/scenario_loader.hpp"
@@ -104,9 +105,10 @@ void add_render_command(cli::Tool& tool) {
       ->type_name("WxH")
       ->check(cli::size_wxh(8192, 8192));
   c->add_option("--exposure", a->ov.exposure_frames,
-                "exposure time as a fraction of the frame period, 0..10 (0 = instant)")
+                "exposure time as a fraction of the frame period, 0.." + cli::number_text(kMaxExposureFrames) +
+                    " (0 = instant)")
       ->type_name("F")
-      ->check(cli::number_in(0, 10));
+      ->check(cli::number_in(0, kMaxExposureFrames));
   std::string presets;
   for (const auto& p : render::photometric_presets()) presets += std::string("\n    ") + p.name + ": " + p.what;
   c->add_option("--camera-mismatch", a->ov.camera_mismatch,

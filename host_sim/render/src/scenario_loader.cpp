@@ -7,6 +7,7 @@
 #include "lumavel/host/render/photometric_presets.hpp"
 #include "lumavel/host/render/view_renderer.hpp"
 #include "lumavel/host/path_check.hpp"
+#include "lumavel/host/sensor_yaml.hpp"
 #include "lumavel/host/yaml_text.hpp"
 
 #include <yaml-cpp/depthguard.h>
@@ -273,7 +274,7 @@ void read_camera(const Reader& r, const YAML::Node& n, Scenario& s) {
     c.vfov_deg = v[1];
   }
   c.rate_hz = r.num(n, "rate_hz", c.rate_hz, 0.1, 10000);
-  c.exposure_frames = r.num(n, "exposure", c.exposure_frames, 0, 10);
+  c.exposure_frames = r.num(n, "exposure", c.exposure_frames, 0, kMaxExposureFrames);
   c.baseline_m = r.num(n, "baseline_m", c.baseline_m, 0, 10);
   c.misalignment_deg = r.num(n, "misalignment_deg", c.misalignment_deg, -45, 45);
   c.look = r.word(n, "look", "left", {"left", "right"}) == "left" ? LookSide::Left : LookSide::Right;
@@ -467,8 +468,8 @@ void read_imu(const Reader& r, const YAML::Node& n, Scenario& s) {
   // nanoseconds, and 1e300 s overflowed it (the sample loop then stepped
   // from the wrapped time for ever: the render hung).
   m.offset_s = r.num(n, "offset_s", m.offset_s, -1e6, 1e6);
-  m.gyro_noise_density = r.num(n, "gyro_noise_density", 0, 0, 10);
-  m.gyro_random_walk = r.num(n, "gyro_random_walk", 0, 0, 10);
+  m.gyro_noise_density = r.num(n, "gyro_noise_density", 0, 0, kMaxGyroNoiseDensity);
+  m.gyro_random_walk = r.num(n, "gyro_random_walk", 0, 0, kMaxGyroRandomWalk);
   m.gyro_bias_z = r.num(n, "gyro_bias_deg_s", 0, -1000, 1000) * kPi / 180.0;
   m.accel_noise_density = r.num(n, "accel_noise_density", 0, 0, 100);
 }

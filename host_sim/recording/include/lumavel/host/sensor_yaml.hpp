@@ -38,6 +38,18 @@ struct ImuSensor {
   } line;
 };
 
+// The ranges of values a sensor.yaml gives that lumavel reads but does not
+// estimate with (the translations of T_BS other than the cameras' x,
+// exposure_s, the gyro's noise model; rate_hz when data.csv times the
+// samples): a value beyond them is a damaged file, refused at its line like
+// any other damaged value, not taken silently. Generous: what a sensor on a
+// vehicle, or a rendered one, can have.
+constexpr double kMaxRateHz = 1e6;           // rate_hz: a period of 1 us or more
+constexpr double kMaxSensorOffsetM = 100;    // each T_BS translation component: a sensor on the vehicle
+constexpr double kMaxExposureFrames = 10;    // exposure_s <= 10 / rate_hz (the renderer's longest blur)
+constexpr double kMaxGyroNoiseDensity = 10;  // gyroscope_noise_density, rad/s/sqrt(Hz)
+constexpr double kMaxGyroRandomWalk = 10;    // gyroscope_random_walk, rad/s^2/sqrt(Hz)
+
 // The intrinsics' own rules, checked as they are read, before the lens
 // model uses them (a principal point of 1e5 px would otherwise be blamed on
 // the distortion coefficients): cu within [-width, 2 width], cv within
