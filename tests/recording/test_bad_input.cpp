@@ -329,6 +329,20 @@ TEST(BadInput, SensorYamlSyntaxError) {
   STRCMP_CONTAINS("YAML syntax error", e.c_str());
 }
 
+// A tab in the indentation: yaml-cpp says "illegal map value", not why (was:
+// the message alone, the tab to be found by eye).
+TEST(BadInput, SensorYamlIndentedWithATabSaysSo) {
+  const std::string y = m + "cam0/sensor.yaml";
+  fixture::replace_in(y, "\n  cols: 4", "\n\tcols: 4");
+  size_t line = 0;
+  const std::vector<std::string> lines = fixture::read_lines(y);
+  while (line < lines.size() && lines[line] != "\tcols: 4") ++line;
+  STRCMP_CONTAINS((y + ":" + std::to_string(line + 1) +
+                   ": YAML syntax error: illegal map value; this line is indented with a tab, and YAML indents with "
+                   "spaces only").c_str(),
+                  load_error().c_str());
+}
+
 TEST(BadInput, SensorYamlWrongType) {
   const std::string y = m + "imu0/sensor.yaml";
   fixture::write_text(y, "sensor_type: camera\nrate_hz: 500\n");

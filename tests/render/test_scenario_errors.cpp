@@ -128,6 +128,15 @@ TEST(ScenarioErrors, YamlSyntaxErrorNamesTheLine) {
   STRCMP_CONTAINS("YAML syntax", e.c_str());
 }
 
+// A tab in the indentation: yaml-cpp's words alone did not say why.
+TEST(ScenarioErrors, ATabInTheIndentationIsNamed) {
+  const std::string e = error_of(replace(kGood, "  rate_hz: 60", "\trate_hz: 60"));
+  STRCMP_CONTAINS("bad.yaml:4: YAML syntax: ", e.c_str());
+  STRCMP_CONTAINS("; this line is indented with a tab, and YAML indents with spaces only", e.c_str());
+  // A tab after the indentation is no indentation.
+  STRCMP_EQUAL("(accepted)", error_of(replace(kGood, "  rate_hz: 60", "  rate_hz:\t60")).c_str());
+}
+
 TEST(ScenarioErrors, MissingFileIsNamed) {
   try {
     load_scenario("/nonexistent/scenario.yaml");

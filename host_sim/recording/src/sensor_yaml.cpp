@@ -89,7 +89,8 @@ YAML::Node load_yaml(const std::string& path) {
                                  " levels deep, as deep as the YAML reader goes: a sensor.yaml is one mapping of keys "
                                  "whose values are numbers, lists of numbers and T_BS's matrix");
   } catch (const YAML::ParserException& e) {
-    throw recording_error_at(path, e.mark.line + 1, "YAML syntax error: " + e.msg);
+    throw recording_error_at(path, e.mark.line + 1,
+                             "YAML syntax error: " + e.msg + yaml_text::tab_indent_note(text, e.mark.line + 1));
   }
 }
 

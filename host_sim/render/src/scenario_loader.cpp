@@ -532,7 +532,8 @@ Scenario parse_scenario(const std::string& text, const std::string& name,
                         " levels deep, as deep as the YAML reader goes: a scenario is one map of KEY: VALUE lines "
                         "(host_sim/scenarios/README.md)");
   } catch (const YAML::ParserException& e) {
-    throw ScenarioError(name + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax: " + e.msg);
+    throw ScenarioError(name + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax: " + e.msg +
+                        yaml_text::tab_indent_note(text, e.mark.line + 1));
   }
   if (root.IsNull())
     throw ScenarioError(name + ": empty file: a scenario holds KEY: VALUE lines (host_sim/scenarios/README.md)");

@@ -57,4 +57,17 @@ inline NotOneDocument why_not_one_document(const std::string& text) {
   return out;
 }
 
+// What a syntax error at `line` adds when that line is indented with a tab
+// (yaml-cpp says "illegal map value" or the like, not why): "" otherwise.
+inline std::string tab_indent_note(const std::string& text, long line) {
+  std::string note;
+  for_each_line(text, [&](long n, const std::string& l) {
+    if (n != line) return;
+    const size_t first = l.find_first_not_of(" \t");
+    if (l.find('\t') < std::min(first, l.size()))
+      note = "; this line is indented with a tab, and YAML indents with spaces only";
+  });
+  return note;
+}
+
 }  // namespace lumavel::host::yaml_text
