@@ -22,11 +22,20 @@ RecordingError error_at_key(const std::string& file, long line, const std::strin
   return line > 0 ? recording_error_at(file, line, what) : recording_error_in(file, what);
 }
 
+// ((R e_z) x (R e_x)).z: the image u axis against the body's yaw.
+double u_cross_z(const Pose& T) {
+  double ex[3], ez[3];
+  axis(T, 0, ex);
+  axis(T, 2, ez);
+  return ez[0] * ex[1] - ez[1] * ex[0];
+}
+
 }  // namespace
 
+int u_sign_of(const CameraSensor& c) { return u_cross_z(c.T_BS) > 0 ? 1 : -1; }
+
 CameraModel derive_camera(const CameraSensor& c, int work_width, const std::string& yaml_path) {
-  double ex[3], ez[3];
-  axis(c.T_BS, 0, ex);
+  double ez[3];
   axis(c.T_BS, 2, ez);
   // The optical axis must look sideways, roughly in the body x-y plane.
   if (std::hypot(ez[0], ez[1]) < 0.5) {
@@ -40,7 +49,7 @@ CameraModel derive_camera(const CameraSensor& c, int work_width, const std::stri
                                             "the baseline along x (README, \"The rig\"). A rig with forward-looking "
                                             "cameras (such as EuRoC's, whose body z is forward) does not fit");
   }
-  const double cross_z = ez[0] * ex[1] - ez[1] * ex[0];  // ((R e_z) x (R e_x)).z
+  const double cross_z = u_cross_z(c.T_BS);
   if (std::fabs(cross_z) < 0.5)
     throw error_at_key(yaml_path, c.line.T_BS,
                        "T_BS: the image u axis is not horizontal (camera rolled more than 60 degrees)");
@@ -49,7 +58,7 @@ CameraModel derive_camera(const CameraSensor& c, int work_width, const std::stri
   m.fu = c.fu * scale;
   m.cu = (c.cu + 0.5) * scale - 0.5;  // pixel-centre convention: centre of pixel 0 is 0
   m.axis_yaw = std::atan2(ez[1], ez[0]);
-  m.u_sign = cross_z > 0 ? 1 : -1;
+  m.u_sign = u_sign_of(c);
   m.edges = undistorted_column_edges(c, work_width, m.axis_yaw, m.u_sign);
   m.elevation_scale = lens_elevation_scales(c, work_width);
   return m;

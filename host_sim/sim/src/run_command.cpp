@@ -367,6 +367,14 @@ int run(const RunArgs& a) {
     throw;
   }
   if (bar) bar->finish();
+  // Said even with -q: a warning about the input, not a part of the summary.
+  if (result.mirrored)
+    std::fprintf(stderr,
+                 "run: warning: cam0's and cam1's images moved opposite ways on %zu of the %zu frames where both moved "
+                 "a working column or more. The cameras look the same way (T_BS), so any motion of the rig moves both "
+                 "images the same way: the images of one camera are mirrored left-right, or upside down where its "
+                 "T_BS says upright (%s/cam0/sensor.yaml, cam1/sensor.yaml). The estimates are not to be trusted\n",
+                 result.motion_opposite, result.motion_same + result.motion_opposite, rec.root.c_str());
   if (plot_out) {
     const std::string svg = track_svg(result.track, recording_name(a.rec) + ": V_xb, " + engine_name(options.engine) +
                                                         " engine, " + std::to_string(result.width) + "x" +

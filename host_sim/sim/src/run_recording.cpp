@@ -6,6 +6,7 @@
 
 #include "lumavel/host/file_camera.hpp"
 #include "lumavel/host/groundtruth.hpp"
+#include "lumavel/host/motion_direction.hpp"
 #include "lumavel/host/recording_layout.hpp"
 #include "lumavel/host/rig_settings_check.hpp"
 #include "lumavel/host/vo_engine.hpp"
@@ -152,6 +153,7 @@ RunResult run_recording(const Recording& rec, const EstimatorSettings& settings,
   const size_t n = static_cast<size_t>(settings.width) * static_cast<size_t>(settings.height);
   std::vector<uint8_t> buf0(n), buf1(n);
   hal::StereoImage img{0, {buf0.data(), buf1.data()}, 0, 0};
+  MotionDirectionCheck motion(settings.width, settings.height, u_sign_of(rec.cam[0]), u_sign_of(rec.cam[1]));
   size_t gyro = 0;
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
@@ -168,6 +170,7 @@ RunResult run_recording(const Recording& rec, const EstimatorSettings& settings,
     }
     const EngineEstimate e = engine.step(img.t_ns, buf0.data(), buf1.data());
     in_engine += Clock::now() - engine_start;
+    motion.add(buf0.data(), buf1.data());
     if (csv) write_row(csv, e, img.t_ns);
     if (sink) sink(e);
     result.track.push_back(TrackPoint{img.t_ns, e.v, std::nan(""), e.status});
@@ -181,6 +184,9 @@ RunResult run_recording(const Recording& rec, const EstimatorSettings& settings,
       result.clip_lowest[c] = binned->lowest_ceiling(c);
     }
   result.step_s = std::chrono::duration<double>(in_engine).count();
+  result.motion_same = motion.same();
+  result.motion_opposite = motion.opposite();
+  result.mirrored = motion.mirrored();
   if (result.has_truth) {
     std::vector<uint64_t> t;
     t.reserve(result.track.size());

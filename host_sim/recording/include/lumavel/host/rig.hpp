@@ -29,6 +29,10 @@ bool lens_applies(const CameraSensor& c);
 // k1, k2, p1, p2 of the sensor (missing ones 0).
 LensDistortion lens_of(const CameraSensor& c);
 
+// +1 or -1: the sign of d(body yaw)/du of the camera's image
+// (CameraModel::u_sign: -1 upright, +1 upside down), from its T_BS.
+int u_sign_of(const CameraSensor& c);
+
 // Camera model of one camera at the working width. Throws RecordingError
 // naming the sensor.yaml when the optical axis is not horizontal.
 CameraModel derive_camera(const CameraSensor& c, int work_width, const std::string& yaml_path);

@@ -62,6 +62,10 @@ struct RunResult {
   double hfov_deg = 0;            // cam0's horizontal field of view
   size_t clip_clamped[2] = {};    // frames of each camera clamped at a clip ceiling (RunOptions::clip_match)
   int clip_lowest[2] = {255, 255};  // the lowest ceiling of each camera
+  // Frames where both cameras' images clearly moved, the same way or
+  // opposite ways (motion_direction.hpp); mirrored: one image is mirrored.
+  size_t motion_same = 0, motion_opposite = 0;
+  bool mirrored = false;
   double wall_s = 0;              // time spent in the frame loop
   double step_s = 0;              // of which in the engine (push_gyro and step): its compute time
 };

@@ -1,0 +1,50 @@
+// Which way each camera's image moved between consecutive frames, compared
+// between the two cameras. They look the same way (T_BS, checked by the rig
+// rules), so any motion of the rig, travel along body x or a turn, moves both
+// images the same way in body yaw: the image shift along u times the
+// camera's u_sign (d(body yaw)/du from its T_BS) has the same sign in both.
+// A camera whose image moves the other way on (nearly) every frame where
+// both clearly moved is mirrored left-right, or upside down where its T_BS
+// says upright: the estimator then runs with exit 0 and errors near 100 %
+// (the stereo pair never agrees), flagged by nothing of its own. Swapped
+// cameras (cam0's images in cam1) are not seen here: both images still move
+// the same way (the estimates then have the wrong sign).
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace lumavel::host {
+
+// A frame pair counts when both images moved by a whole working column or
+// more, each shift matching the previous frame with a correlation of at
+// least kMotionMinCorrelation (slower motion, a plain scene: not counted).
+constexpr double kMotionMinCorrelation = 0.5;
+// Opposite on at least this many such frames and this share of them: said.
+// (On the rendered scenarios an intact rig was opposite on at most 1 frame
+// of 362 (near_clutter at 40 columns), a mirrored one on every counted frame.)
+constexpr size_t kMotionMinOppositeFrames = 20;
+constexpr double kMotionOppositeShare = 0.9;
+
+class MotionDirectionCheck {
+ public:
+  // `u_sign`: each camera's d(body yaw)/du sign (CameraModel::u_sign, u_sign_of).
+  MotionDirectionCheck(int width, int height, int u_sign0, int u_sign1);
+  // The next frame pair (width x height 8-bit each, the engine's frames).
+  void add(const uint8_t* cam0, const uint8_t* cam1);
+  size_t same() const { return same_; }          // frames where both moved the same way
+  size_t opposite() const { return opposite_; }  // ... opposite ways
+  // Opposite on kMotionMinOppositeFrames or more and on kMotionOppositeShare of the counted frames.
+  bool mirrored() const;
+
+ private:
+  // The shift (columns, + towards larger u) from the previous profile to this one, 0 when not clear.
+  int shift(const std::vector<double>& now, const std::vector<double>& before) const;
+  int width_, height_;
+  int u_sign_[2];
+  std::vector<double> profile_[2], previous_[2];
+  bool have_previous_ = false;
+  size_t same_ = 0, opposite_ = 0;
+};
+
+}  // namespace lumavel::host

@@ -1,0 +1,70 @@
+#include "lumavel/host/motion_direction.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lumavel::host {
+
+MotionDirectionCheck::MotionDirectionCheck(int width, int height, int u_sign0, int u_sign1)
+    : width_(width), height_(height), u_sign_{u_sign0 < 0 ? -1 : 1, u_sign1 < 0 ? -1 : 1} {
+  for (int c = 0; c < 2; ++c) profile_[c].assign(static_cast<size_t>(width), 0.0);
+}
+
+int MotionDirectionCheck::shift(const std::vector<double>& now, const std::vector<double>& before) const {
+  // now[u] ~ before[u - L]: the content moved by L columns. Lags up to a
+  // quarter of the width, each over the columns both profiles share.
+  const int max_lag = width_ / 4;
+  int best = 0;
+  double best_r = -2;
+  for (int lag = -max_lag; lag <= max_lag; ++lag) {
+    const int from = std::max(0, lag), to = std::min(width_, width_ + lag);
+    const int n = to - from;
+    if (n < 2) continue;
+    double ma = 0, mb = 0;
+    for (int u = from; u < to; ++u) {
+      ma += now[static_cast<size_t>(u)];
+      mb += before[static_cast<size_t>(u - lag)];
+    }
+    ma /= n;
+    mb /= n;
+    double ab = 0, aa = 0, bb = 0;
+    for (int u = from; u < to; ++u) {
+      const double a = now[static_cast<size_t>(u)] - ma, b = before[static_cast<size_t>(u - lag)] - mb;
+      ab += a * b;
+      aa += a * a;
+      bb += b * b;
+    }
+    const double r = aa > 0 && bb > 0 ? ab / std::sqrt(aa * bb) : 0;
+    if (r > best_r) {
+      best_r = r;
+      best = lag;
+    }
+  }
+  return best_r >= kMotionMinCorrelation ? best : 0;
+}
+
+void MotionDirectionCheck::add(const uint8_t* cam0, const uint8_t* cam1) {
+  const uint8_t* img[2] = {cam0, cam1};
+  int moved[2] = {0, 0};
+  for (int c = 0; c < 2; ++c) {
+    std::vector<double>& p = profile_[c];
+    for (int u = 0; u < width_; ++u) {
+      double sum = 0;
+      for (int v = 0; v < height_; ++v) sum += img[c][static_cast<size_t>(v) * static_cast<size_t>(width_) + static_cast<size_t>(u)];
+      p[static_cast<size_t>(u)] = sum;
+    }
+    if (have_previous_) moved[c] = shift(p, previous_[c]) * u_sign_[c];
+    previous_[c].swap(p);
+    p.resize(static_cast<size_t>(width_));
+  }
+  have_previous_ = true;
+  if (moved[0] == 0 || moved[1] == 0) return;
+  ((moved[0] > 0) == (moved[1] > 0) ? same_ : opposite_) += 1;
+}
+
+bool MotionDirectionCheck::mirrored() const {
+  return opposite_ >= kMotionMinOppositeFrames &&
+         static_cast<double>(opposite_) >= kMotionOppositeShare * static_cast<double>(same_ + opposite_);
+}
+
+}  // namespace lumavel::host

@@ -1,0 +1,116 @@
+// The motion-direction check of `run` (motion_direction.hpp): both cameras'
+// images move the same way on an intact rig; a mirrored camera's move the
+// other way, and is said. Then through the command line.
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "lumavel/host/image_io.hpp"
+#include "lumavel/host/motion_direction.hpp"
+#include "recording_fixture.hpp"
+// CppUTest last: its leak-detector macros redefine new.
+#include "CppUTest/TestHarness.h"
+
+using namespace lumavel::host;
+
+namespace {
+
+constexpr int kW = 40, kH = 3;
+
+// A W x H frame of a texture moved `shift` columns towards larger u,
+// mirrored left-right, or turned upside down (u and v reversed).
+std::vector<uint8_t> frame(double shift, bool mirrored = false, bool upside_down = false) {
+  std::vector<uint8_t> px(static_cast<size_t>(kW * kH));
+  for (int v = 0; v < kH; ++v)
+    for (int u = 0; u < kW; ++u) {
+      const int su = mirrored || upside_down ? kW - 1 - u : u, sv = upside_down ? kH - 1 - v : v;
+      const double x = su - shift;
+      px[static_cast<size_t>(v * kW + u)] =
+          static_cast<uint8_t>(std::lround(120 + 60 * std::sin(0.7 * x) + 30 * std::sin(1.9 * x + 0.5) + sv));
+    }
+  return px;
+}
+
+}  // namespace
+
+TEST_GROUP(MotionDirection){};
+
+TEST(MotionDirection, AnIntactRigMovesBothImagesTheSameWay) {
+  MotionDirectionCheck c(kW, kH, -1, -1);
+  for (int i = 0; i < 30; ++i) c.add(frame(2.0 * i).data(), frame(2.0 * i + 1.5).data());
+  LONGS_EQUAL(29, c.same());
+  LONGS_EQUAL(0, c.opposite());
+  CHECK_FALSE(c.mirrored());
+}
+
+TEST(MotionDirection, AMirroredCameraMovesTheOtherWayAndIsSaid) {
+  MotionDirectionCheck c(kW, kH, -1, -1);
+  for (int i = 0; i < 30; ++i) c.add(frame(2.0 * i).data(), frame(2.0 * i + 1.5, true).data());
+  LONGS_EQUAL(0, c.same());
+  LONGS_EQUAL(29, c.opposite());
+  CHECK(c.mirrored());
+}
+
+// Upside down where T_BS says so (u_sign +1): intact. Upside down where it
+// says upright: as mirrored.
+TEST(MotionDirection, AnUpsideDownCameraIsIntactWhereItsPoseSaysSo) {
+  MotionDirectionCheck said(kW, kH, -1, +1), unsaid(kW, kH, -1, -1);
+  for (int i = 0; i < 30; ++i) {
+    said.add(frame(2.0 * i).data(), frame(2.0 * i + 1.5, false, true).data());
+    unsaid.add(frame(2.0 * i).data(), frame(2.0 * i + 1.5, false, true).data());
+  }
+  LONGS_EQUAL(29, said.same());
+  CHECK_FALSE(said.mirrored());
+  CHECK(unsaid.mirrored());
+}
+
+// Below a column a frame, standing still, or too few frames: nothing said.
+TEST(MotionDirection, SlowMotionOrAFewFramesSayNothing) {
+  MotionDirectionCheck slow(kW, kH, -1, -1), still(kW, kH, -1, -1), few(kW, kH, -1, -1);
+  for (int i = 0; i < 30; ++i) {
+    slow.add(frame(0.3 * i).data(), frame(0.3 * i + 1.5, true).data());
+    still.add(frame(0).data(), frame(1.5, true).data());
+  }
+  for (int i = 0; i < static_cast<int>(kMotionMinOppositeFrames); ++i)  // 19 frame pairs
+    few.add(frame(2.0 * i).data(), frame(2.0 * i + 1.5, true).data());
+  LONGS_EQUAL(0, slow.same() + slow.opposite());
+  LONGS_EQUAL(0, still.same() + still.opposite());
+  LONGS_EQUAL(kMotionMinOppositeFrames - 1, few.opposite());
+  CHECK_FALSE(slow.mirrored() || still.mirrored() || few.mirrored());
+}
+
+// A recording whose cam1 images are mirrored left-right ran with exit 0 and
+// E near 100 %, nothing said. The run says it, even with -q; the intact one
+// says nothing.
+TEST(MotionDirection, RunWarnsOfAMirroredCamera) {
+  fixture::TempDir dir;
+  fixture::Options o;
+  o.frames = 40;
+  const std::string rec = fixture::write_recording(dir.path() + "/rec", o);
+  auto rewrite = [&](bool mirrored) {
+    for (int i = 0; i < o.frames; ++i)
+      for (int c = 0; c < 2; ++c) {
+        std::vector<uint8_t> px(static_cast<size_t>(o.width * o.height));
+        const std::vector<uint8_t> row = frame(2.0 * i + 1.5 * c, c == 1 && mirrored);
+        for (int v = 0; v < o.height; ++v)
+          for (int u = 0; u < o.width; ++u) px[static_cast<size_t>(v * o.width + u)] = row[static_cast<size_t>(u)];
+        write_png_gray(rec + "/mav0/cam" + std::to_string(c) + "/data/" + std::to_string(fixture::frame_time(o, i)) +
+                           ".png",
+                       px.data(), o.width, o.height);
+      }
+  };
+  const std::string err = dir.path() + "/stderr.txt";
+  const std::string run = "'" LUMAVEL_SIM_EXE "' run '" + rec + "' -q -o /dev/null --plot /dev/null 2>'" + err + "'";
+  rewrite(false);
+  LONGS_EQUAL(0, std::system(run.c_str()));
+  STRCMP_EQUAL("", fixture::read_text(err).c_str());
+  rewrite(true);
+  LONGS_EQUAL(0, std::system(run.c_str()));
+  STRCMP_EQUAL(("run: warning: cam0's and cam1's images moved opposite ways on 39 of the 39 frames where both moved a "
+                "working column or more. The cameras look the same way (T_BS), so any motion of the rig moves both "
+                "images the same way: the images of one camera are mirrored left-right, or upside down where its T_BS "
+                "says upright (" + rec + "/mav0/cam0/sensor.yaml, cam1/sensor.yaml). The estimates are not to be "
+                "trusted\n").c_str(),
+               fixture::read_text(err).c_str());
+}
