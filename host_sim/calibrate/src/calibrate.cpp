@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "lumavel/host/file_camera.hpp"
+#include "lumavel/host/motion_direction.hpp"
 #include "lumavel/host/recording_error.hpp"
 #include "lumavel/host/rig.hpp"
 #include "lumavel/host/rig_settings_check.hpp"
@@ -290,6 +291,7 @@ Calibration calibrate_misalignment(const Recording& rec, const CalibrationOption
   std::vector<bool> same_image;
   std::vector<uint8_t> b0(static_cast<size_t>(width * height)), b1(b0.size());
   hal::StereoImage img{0, {b0.data(), b1.data()}, 0, 0};
+  MotionDirectionCheck motion(width, height, u_sign_of(rec.cam[0]), u_sign_of(rec.cam[1]));
   for (;;) {
     const hal::CaptureStatus st = camera.capture(img);
     if (st == hal::CaptureStatus::kEnd) break;
@@ -302,10 +304,21 @@ Calibration calibrate_misalignment(const Recording& rec, const CalibrationOption
         c1[static_cast<size_t>(u)] += b1[static_cast<size_t>(y * width + u)];
       }
     same_image.push_back(b0 == b1 && std::any_of(b0.begin(), b0.end(), [&](uint8_t v) { return v != b0[0]; }));
+    motion.add(b0.data(), b1.data());
     p0.push_back(resample(c0, yaw0, g));
     p1.push_back(resample(c1, yaw1, g));
     times.push_back(img.t_ns);
   }
+  // A mirrored camera's images move against the other's: registering them
+  // gave a misalignment to send to a board, exit 0.
+  if (motion.mirrored())
+    throw RecordingError(rec.root + ": cam0's and cam1's images moved opposite ways on " +
+                         std::to_string(motion.opposite()) + " of the " +
+                         std::to_string(motion.same() + motion.opposite()) +
+                         " frames where both moved a working column or more. The cameras look the same way (T_BS), "
+                         "so any motion of the rig moves both images the same way: the images of one camera are "
+                         "mirrored left-right, or upside down where its T_BS says upright (" + rec.root +
+                         "/cam0/sensor.yaml, cam1/sensor.yaml); they cannot be registered");
   std::vector<double> heading(times.size(), 0.0);
   {
     size_t k = 0;
