@@ -68,6 +68,7 @@ void Estimator::reset() {
   balance_.reset();
 #if LUMAVEL_MATCH_FRAMES > 0
   match_.reset();
+  jac_held_ = false;
 #endif
   y_ = 0;
   have_prev_ = false;
@@ -109,9 +110,18 @@ Estimate Estimator::step_profiles(uint64_t t_ns, ColumnProfile& p0, ColumnProfil
   stereo_measurement(p0, p1, bank_, (cfg_.options & kOptionPhotometricBalance) ? &balance_ : nullptr, m,
                      matching ? &norm1 : nullptr);
 #if LUMAVEL_MATCH_FRAMES > 0
-  MatchJac jac;
-  if (matching)
-    match_.jacobian(p1, bank_.column_band(), cfg_.height, radial1, bank_.cam[1], bank_.count, m.f[1], jac, &norm1);
+  // cam1's Jacobian every other frame, the last one's held between (it
+  // follows the scene, which moves little in a frame; issue 14's cost): anew
+  // after a frame without light and after p changed.
+  MatchJac& jac = jac_;
+  if (matching) {
+    if (!jac_held_ || m.no_light) {
+      match_.jacobian(p1, bank_.column_band(), cfg_.height, radial1, bank_.cam[1], bank_.count, m.f[1], jac, &norm1);
+      jac_held_ = !m.no_light;
+    } else {
+      jac_held_ = false;
+    }
+  }
   MatchInput match_in{};
   match_in.usable = false;
 #endif
@@ -230,6 +240,7 @@ Estimate Estimator::step_profiles(uint64_t t_ns, ColumnProfile& p0, ColumnProfil
   // been taken with them, so that the next interval sees no step.
 #if LUMAVEL_MATCH_FRAMES > 0
   if (matching && match_.learn(match_in)) {
+    jac_held_ = false;
     for (uint8_t k = 0; k < m.count; ++k) {
       int64_t jp = 0;
       for (int j = 0; j < kMatchParams; ++j) jp += int64_t{jac[k][j]} * match_.delta(j);

@@ -44,7 +44,16 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
   if (matching) p[1] = match_.apply(p[1], bank_.band.rows);
   FloatStereoMeasurement m =
       float_stereo_measurement(p[0], p[1], bank_, s_.photometric_balance ? &balance_ : nullptr);
-  const Eigen::MatrixXd jac = matching ? match_.jacobian(p[1], bank_.band.rows, bank_.cam[1], m.f[1]) : Eigen::MatrixXd();
+  // cam1's Jacobian every other frame, held between (the core's rule).
+  if (matching) {
+    if (!jac_held_ || m.no_light) {
+      jac_ = match_.jacobian(p[1], bank_.band.rows, bank_.cam[1], m.f[1]);
+      jac_held_ = !m.no_light;
+    } else {
+      jac_held_ = false;
+    }
+  }
+  const Eigen::MatrixXd& jac = jac_;
   FloatPhotometricMatch::Input match_in{};
   match_in.usable = false;
 
@@ -151,6 +160,7 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
   // The photometric match (as the core: an unusable interval clears its
   // history; new parameters move this frame's F1 by J dp).
   if (matching && match_.learn(match_in)) {
+    jac_held_ = false;
     const Eigen::VectorXd df = jac * match_.delta();
     prev_.f[1] += df;
     prev_.mid += 0.5 * df;

@@ -97,6 +97,10 @@ class Estimator {
   AngleQ28 scale_max_turn_ = 0;     // ... weighing a scale measurement as its limit (fusion_params.hpp)
   TravelQ16Ns y_ = 0;              // integral of the differential observer's direct values
   StereoMeasurement meas_[2]{};  // previous and current frame
+#if LUMAVEL_MATCH_FRAMES > 0
+  MatchJac jac_{};               // cam1's dF/dp, held for one frame after it was formed
+  bool jac_held_ = false;        // jac_ was formed on the frame before: this one takes it as it is
+#endif
   int cur_ = 0;
   bool have_prev_ = false;
   bool configured_ = false;

@@ -44,6 +44,8 @@ class FloatEstimator {
   double scale_max_turn_ = 0;      // ... weighing a scale measurement as its limit, rad
   double y_ = 0;                 // integral of the differential observer's direct values, m
   FloatStereoMeasurement prev_;  // the previous frame's
+  Eigen::MatrixXd jac_;          // cam1's dF/dp, held for one frame after it was formed (as the core)
+  bool jac_held_ = false;
   bool have_prev_ = false;
   uint64_t prev_t_ns_ = 0;
   double prev_gyro_angle_ = 0;  // raw integral, unwrapped, rad
