@@ -312,13 +312,9 @@ Calibration calibrate_misalignment(const Recording& rec, const CalibrationOption
   // A mirrored camera's images move against the other's: registering them
   // gave a misalignment to send to a board, exit 0.
   if (motion.mirrored())
-    throw RecordingError(rec.root + ": cam0's and cam1's images moved opposite ways on " +
-                         std::to_string(motion.opposite()) + " of the " +
-                         std::to_string(motion.same() + motion.opposite()) +
-                         " frames where both moved a working column or more. The cameras look the same way (T_BS), "
-                         "so any motion of the rig moves both images the same way: the images of one camera are "
-                         "mirrored left-right, or upside down where its T_BS says upright (" + rec.root +
-                         "/cam0/sensor.yaml, cam1/sensor.yaml); they cannot be registered");
+    throw RecordingError(rec.root + ": " +
+                         opposite_motion_text(motion.opposite(), motion.same() + motion.opposite(), rec.root) +
+                         "; they cannot be registered");
   std::vector<double> heading(times.size(), 0.0);
   {
     size_t k = 0;

@@ -67,4 +67,12 @@ bool MotionDirectionCheck::mirrored() const {
          static_cast<double>(opposite_) >= kMotionOppositeShare * static_cast<double>(same_ + opposite_);
 }
 
+std::string opposite_motion_text(size_t opposite, size_t counted, const std::string& root) {
+  return "cam0's and cam1's images moved opposite ways on " + std::to_string(opposite) + " of the " +
+         std::to_string(counted) +
+         " frames where both moved a working column or more. The cameras look the same way (T_BS), so any motion "
+         "of the rig moves both images the same way: the images of one camera are mirrored left-right, or upside "
+         "down where its T_BS says upright (" + root + "/cam0/sensor.yaml, cam1/sensor.yaml)";
+}
+
 }  // namespace lumavel::host

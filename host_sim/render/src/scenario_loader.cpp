@@ -356,12 +356,13 @@ void read_pattern(const Reader& r, const YAML::Node& n, PatternSpec& p,
     // The pattern spans mean - amplitude .. mean + amplitude (sum or product):
     // below 0 it was clipped to black, silently (flattened troughs, another
     // mean). A brightness cannot be negative: refused.
+    const YAML::Node blamed = n["amplitude"] ? n["amplitude"] : n["mean"] ? n["mean"] : n;
     if (p.amplitude > p.mean) {
       std::ostringstream os;
       os << "sinusoid 'amplitude' = " << p.amplitude << " is larger than its 'mean' = " << p.mean
          << ": the brightness, mean - amplitude at the troughs, would go below 0 and be clipped to black; a "
             "brightness cannot be negative, so amplitude must be at most the mean";
-      r.fail(n["amplitude"] ? n["amplitude"] : n["mean"] ? n["mean"] : n, os.str());
+      r.fail(blamed, os.str());
     }
     // Above 255 it was clipped to white, silently (flattened crests, another mean).
     if (p.mean + p.amplitude > kWhite) {
@@ -369,7 +370,7 @@ void read_pattern(const Reader& r, const YAML::Node& n, PatternSpec& p,
       os << "sinusoid 'mean' = " << p.mean << " plus its 'amplitude' = " << p.amplitude << " is "
          << p.mean + p.amplitude << ": the brightness, mean + amplitude at the crests, would go above " << kWhite
          << " (white) and be clipped; amplitude must be at most " << kWhite << " - mean";
-      r.fail(n["amplitude"] ? n["amplitude"] : n["mean"] ? n["mean"] : n, os.str());
+      r.fail(blamed, os.str());
     }
     if (n["period_m"]) {
       const auto v = r.list(n["period_m"], "period_m", 2, 1e-4, 1e6);

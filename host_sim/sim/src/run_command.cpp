@@ -23,6 +23,7 @@
 #include "lumavel/host/output_file.hpp"
 #include "lumavel/host/path_check.hpp"
 #include "lumavel/host/progress.hpp"
+#include "lumavel/host/motion_direction.hpp"
 #include "lumavel/host/run_recording.hpp"
 #include "lumavel/host/track_plot.hpp"
 #include "lumavel/host/vo/stereo_rig.hpp"
@@ -369,12 +370,9 @@ int run(const RunArgs& a) {
   if (bar) bar->finish();
   // Said even with -q: a warning about the input, not a part of the summary.
   if (result.mirrored)
-    std::fprintf(stderr,
-                 "run: warning: cam0's and cam1's images moved opposite ways on %zu of the %zu frames where both moved "
-                 "a working column or more. The cameras look the same way (T_BS), so any motion of the rig moves both "
-                 "images the same way: the images of one camera are mirrored left-right, or upside down where its "
-                 "T_BS says upright (%s/cam0/sensor.yaml, cam1/sensor.yaml). The estimates are not to be trusted\n",
-                 result.motion_opposite, result.motion_same + result.motion_opposite, rec.root.c_str());
+    std::fprintf(stderr, "run: warning: %s. The estimates are not to be trusted\n",
+                 opposite_motion_text(result.motion_opposite, result.motion_same + result.motion_opposite, rec.root)
+                     .c_str());
   if (plot_out) {
     const std::string svg = track_svg(result.track, recording_name(a.rec) + ": V_xb, " + engine_name(options.engine) +
                                                         " engine, " + std::to_string(result.width) + "x" +

@@ -12,6 +12,7 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace lumavel::host {
@@ -46,5 +47,10 @@ class MotionDirectionCheck {
   bool have_previous_ = false;
   size_t same_ = 0, opposite_ = 0;
 };
+
+// What a mirrored camera looks like, for run's warning and calibrate's
+// refusal: "cam0's and cam1's images moved opposite ways on N of the M
+// frames ... (ROOT/cam0/sensor.yaml, cam1/sensor.yaml)".
+std::string opposite_motion_text(size_t opposite, size_t counted, const std::string& root);
 
 }  // namespace lumavel::host
