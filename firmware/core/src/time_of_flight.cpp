@@ -11,6 +11,7 @@ namespace {
 using namespace params;
 
 // Squared gates in Q16 (residuals are compared as squares: no root per segment).
+constexpr int64_t kVertexSlackDiv = fx::q_of(1 / kTofVertexSlack, 0);
 constexpr int64_t kPathResidualSqQ16 = fx::q_of(kTofMaxPathResidual * kTofMaxPathResidual, 16);
 constexpr int64_t kMotionResidualSqQ16 = fx::q_of(kTofMaxResidualVsMotion * kTofMaxResidualVsMotion, 16);
 constexpr int64_t kGateFramesQ16 = fx::q_of(kTofTrackGateFrames, 16);
@@ -104,9 +105,23 @@ bool TimeOfFlight::search(const TofTrackInput& in, int trail, int64_t want_ns, i
       ed += int64_t{e} * d;
       dd += int64_t{d} * d;
     }
-    if (dd <= 0 || ed < 0 || ed > dd) continue;
-    const int64_t fr = fx::fraction_q16(ed, dd);  // Q16 in [0, 1] (0 <= ed <= dd)
-    int64_t res = ee - fx::shr_round(fr * ed, 16);
+    if (dd <= 0) continue;
+    // The closest point on the segment, or its end where the point lies just
+    // beyond it (kTofVertexSlack): the squared distance to a, or to b (ee - 2 ed + dd,
+    // summed so that no partial sum passes 2^62).
+    const int64_t slack = dd / kVertexSlackDiv;
+    int64_t fr = 0, res = 0;
+    if (ed < 0) {
+      if (ed < -slack) continue;
+      res = ee;
+    } else if (ed > dd) {
+      if (ed - dd > slack) continue;
+      fr = kOneQ16;
+      res = (ee - ed) + (dd - ed);
+    } else {
+      fr = fx::fraction_q16(ed, dd);  // Q16 in [0, 1] (0 <= ed <= dd)
+      res = ee - fx::shr_round(fr * ed, 16);
+    }
     if (res < 0) res = 0;
     if (res > (kPathResidualSqQ16 * (dd >> 16)) || res > (kMotionResidualSqQ16 * (motion >> 16))) continue;
     const int64_t span = static_cast<int64_t>(b.t_ns - a.t_ns);

@@ -27,6 +27,10 @@ constexpr int64_t kScaleStartVarQ40 = fx::q_of(kFusionScaleStartVar, fx::kVarFra
 constexpr int64_t kTauUs = fx::q_of(kFusionTau * 1e6, 0);
 constexpr int64_t kSlowUsPerResidual = fx::q_of(kFusionTau * 1e6 / kFusionSlowResidual, 0);  // us per unit residual
 constexpr int64_t kAccelTauUs = fx::q_of(kFusionAccelTau * 1e6, 0);
+constexpr int64_t kMoveAccelTauUs = fx::q_of(kFusionMoveAccelTau * 1e6, 0);
+constexpr int64_t kMoveAccelResidualQ16 = fx::q_of(kFusionMoveAccelResidual, 16);
+// 1 / (kFusionMoveAccelResidual - kFusionScaleMaxResidual): the blend's slope per unit residual
+constexpr int64_t kMoveBlendSlopeQ16 = fx::q_of(1 / (kFusionMoveAccelResidual - kFusionScaleMaxResidual), 16);
 constexpr int64_t kHalfPerMillionQ40 = fx::q_of(0.5e-6, 40);  // A tau / 2 with tau in us
 constexpr int64_t kInt31 = int64_t{1} << 31;
 constexpr int64_t kAccelMaxQ16 = fx::q_of(kFusionAccelMax, fx::kAccelFrac);
@@ -124,7 +128,7 @@ FusionOutput VelocityFusion::update(const FusionInput& in) {
   int64_t target = vd;
   if (use_tof) {
     // z + A tau / 2: A tau_us < 2^40, times 2^40 / 2e6 (< 2^20) < 2^60
-    const int64_t moved = fx::shr_round(int64_t{accel_} * tau_us * kHalfPerMillionQ40, 40);
+    const int64_t moved = fx::shr_round(move_rate() * tau_us * kHalfPerMillionQ40, 40);
     const int64_t zc = int64_t{tof.v} + moved;
     const int64_t inflated = (int64_t{tof.sig} * fx::isqrt32(static_cast<uint32_t>(tof_inflation_))) >> 8;  // sig sqrt(n), Q16
     const int64_t rel = inflated > kTofFloorQ16 ? inflated : kTofFloorQ16;
@@ -162,7 +166,7 @@ FusionOutput VelocityFusion::update(const FusionInput& in) {
     if (tof.held && coast_frames_ >= 0 && !failed_) {
       coast_us_ = std::min<int64_t>(coast_us_ + dt_us, kInt31);
       ++coast_frames_;
-      const int64_t zc = coast_z_ + fx::div_trunc(int64_t{accel_} * coast_us_, 1000000);
+      const int64_t zc = coast_z_ + fx::div_trunc(move_rate() * coast_us_, 1000000);
       const int64_t grow = kCoastGrowth * (coast_frames_ + 1);
       const int64_t st2 = coast_st2_ * grow * grow;
       const int64_t w = fx::fraction_q16(sd2, sd2 + st2);
@@ -194,12 +198,26 @@ FusionOutput VelocityFusion::update(const FusionInput& in) {
     accel_ = static_cast<AccelQ16>(clamp64(
         accel_ + fx::div_q((nv - v_) * 1000000 - int64_t{accel_} * dt_us, kAccelTauUs + dt_us, 0, &sat),
         -kAccelMaxQ16, kAccelMaxQ16));
+    move_accel_ = static_cast<AccelQ16>(clamp64(
+        move_accel_ + fx::div_q((nv - v_) * 1000000 - int64_t{move_accel_} * dt_us, kMoveAccelTauUs + dt_us, 0, &sat),
+        -kAccelMaxQ16, kAccelMaxQ16));
   }
   v_ = fx::sat32(nv, &sat);
   out.v = v_;
   out.used_tof = use_tof;
   out.saturated = sat;
   return out;
+}
+
+int64_t VelocityFusion::move_rate() const {
+  // The faster rate's share: 1 up to the clean residual, 0 from kFusionMoveAccelResidual
+  // (and while the differential stands failed against the time of flight: its residual misses that).
+  int64_t share = kOneQ16;
+  if (failed_ || residual_ >= kMoveAccelResidualQ16)
+    share = 0;
+  else if (residual_ > kScaleMaxResidualQ16)
+    share = ((kMoveAccelResidualQ16 - residual_) * kMoveBlendSlopeQ16) >> 16;  // < 2^13 x 2^20
+  return accel_ + ((share * (int64_t{move_accel_} - accel_)) >> 16);
 }
 
 int64_t VelocityFusion::lag_compensation(const FusionInput& in, int64_t dt_us, int64_t out_tau_us) {

@@ -55,9 +55,12 @@ bool FloatTimeOfFlight::search(int trail, double max_rotation, double want_ns, d
     const Eigen::VectorXd e = now.f[trail] - dth * rb - a.f[lead];
     const Eigen::VectorXd d = b.f[lead] - a.f[lead];
     const double ee = e.squaredNorm(), ed = e.dot(d), dd = d.squaredNorm();
-    if (dd <= 0 || ed < 0 || ed > dd) continue;
-    const double fr = ed / dd;
-    const double res = std::max(ee - fr * ed, 0.0);
+    if (dd <= 0) continue;
+    // The closest point, or the segment's end just beyond it (the core's comment).
+    const double slack = dd * kTofVertexSlack;
+    if (ed < -slack || ed - dd > slack) continue;
+    const double fr = std::clamp(ed / dd, 0.0, 1.0);
+    const double res = std::max(ed < 0 ? ee : (ed > dd ? ee - 2 * ed + dd : ee - fr * ed), 0.0);
     if (res > kTofMaxPathResidual * kTofMaxPathResidual * dd ||
         res > kTofMaxResidualVsMotion * kTofMaxResidualVsMotion * motion)
       continue;

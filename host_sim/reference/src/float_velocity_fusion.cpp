@@ -71,7 +71,7 @@ FloatFusionOutput FloatVelocityFusion::update(const FloatFusionInput& in) {
   const double sd2 = sd * sd + scale_var_ * held * held;
   double target = vd;
   if (use_tof) {
-    const double moved = accel_ * tof.tau_ns * 1e-9 / 2;
+    const double moved = move_rate() * tof.tau_ns * 1e-9 / 2;
     const double zc = tof.v + moved;
     const double rel = std::max(tof.sig * std::sqrt(tof_inflation_), kFusionTofFloor);
     const double st = rel * std::fabs(tof.v) + kFusionSpeedFloor;
@@ -97,7 +97,7 @@ FloatFusionOutput FloatVelocityFusion::update(const FloatFusionInput& in) {
     if (tof.held && coast_frames_ >= 0 && !failed_) {
       coast_us_ = std::min<int64_t>(coast_us_ + dt_us, int64_t{1} << 31);
       ++coast_frames_;
-      const double zc = coast_z_ + accel_ * static_cast<double>(coast_us_) * 1e-6;
+      const double zc = coast_z_ + move_rate() * static_cast<double>(coast_us_) * 1e-6;
       const double grow = kFusionCoastSigmaGrowth * (coast_frames_ + 1);
       const double st2 = coast_st2_ * grow * grow;
       target = vd + sd2 / (sd2 + st2) * (zc - vd);
@@ -121,6 +121,8 @@ FloatFusionOutput FloatVelocityFusion::update(const FloatFusionInput& in) {
   if (dt > 0) {
     accel_ = std::clamp(accel_ + ((nv - v_) / dt - accel_) * dt / (kFusionAccelTau + dt), -kFusionAccelMax,
                         kFusionAccelMax);
+    move_accel_ = std::clamp(move_accel_ + ((nv - v_) / dt - move_accel_) * dt / (kFusionMoveAccelTau + dt),
+                             -kFusionAccelMax, kFusionAccelMax);
   }
   v_ = nv;
   out.v = v_;
@@ -130,6 +132,13 @@ FloatFusionOutput FloatVelocityFusion::update(const FloatFusionInput& in) {
 
 // The observer's lag on a ramp, added back where it stands out of its noise
 // and no further than the observer shows it (the core's comments).
+double FloatVelocityFusion::move_rate() const {
+  if (failed_) return accel_;  // (the core's comment)
+  const double share = std::clamp((kFusionMoveAccelResidual - residual_) /
+                                      (kFusionMoveAccelResidual - kFusionScaleMaxResidual), 0.0, 1.0);
+  return accel_ + share * (move_accel_ - accel_);
+}
+
 double FloatVelocityFusion::lag_compensation(const FloatFusionInput& in, double dt, double out_tau) {
   if (!in.direct || dt <= 0) return 0;
   if (!have_direct_) {

@@ -16,6 +16,14 @@ constexpr double kTofMaxPathResidual = 0.3;
 // ... and against the trail camera's own change since its previous frame
 // (so that a still or slowly changing view cannot match anything).
 constexpr double kTofMaxResidualVsMotion = 1.0;
+// A closest point just beyond a segment's end, by up to this fraction of the
+// segment's step (projected), is taken as that end (the frame itself): the
+// two engines' sums differ in their last bits, and a point on a frame must
+// not fall off both segments in one engine and onto one in the other
+// (`FixedVsFloat.At160x120` split so for a frame at 1/65536). A tie-breaker,
+// not a search: at 1/64 and 1/1024 more points were taken, and the day
+// soak's twins parted by 5.1 % of the speed after their splits (bound 5 %).
+constexpr double kTofVertexSlack = 1.0 / 16384;
 // Rotation between the two sightings, in units of the narrowest kernel's
 // sigma: the matching removes it to first order only.
 constexpr double kTofMaxRotationSigma = 0.25;
@@ -158,5 +166,19 @@ constexpr double kFusionLagSigmas = 3.0;
 // and bound (m/s^2); the direct values' scatter is smoothed as the rate.
 constexpr double kFusionAccelTau = 0.3;
 constexpr double kFusionAccelMax = 10.0;
+// The window's move to the present (and a held track's coast) takes a faster
+// rate where the differential is clean: smoothed over kFusionMoveAccelTau (s)
+// at a residual up to kFusionScaleMaxResidual, the kFusionAccelTau rate alone
+// from kFusionMoveAccelResidual on, linear between. A clean differential's
+// rate is mostly not noise, and a start or a stop outruns the slow rate (the
+// trolley's L1 at 160x120 3.06 -> 2.81 %; at 0.15 s 2.68 %, but a steady
+// synthetic pass's worst error +13 %); among near clutter (residual 0.2 and
+// more) the rate carries the differential's aliasing, and the fast rate
+// alone lost 4-11 % there (docs/design.md, "Moving the window to the
+// present"). Not while the differential stands failed against the time of
+// flight (its residual does not show that).
+constexpr double kFusionMoveAccelTau = 0.2;
+constexpr double kFusionMoveAccelResidual = 0.1;
+static_assert(kFusionMoveAccelResidual > kFusionScaleMaxResidual, "the blend runs from the clean residual up");
 
 }  // namespace lumavel::params

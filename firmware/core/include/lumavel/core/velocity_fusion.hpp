@@ -12,7 +12,7 @@
 // - The time of flight's uncertainty is its match's timing uncertainty over
 //   tau (time_of_flight.hpp), never below kFusionTofFloor. Its window mean
 //   lags a changing V by tau / 2, which is added back from the fused V's own
-//   rate of change.
+//   rate of change (followed faster where the differential is clean).
 // - The differential's scale (its distance over the window against h) is
 //   learned where the differential is clean, as a slow random walk, and the
 //   differential is divided by it: a consistent bias, e.g. from a finite
@@ -92,6 +92,7 @@ class VelocityFusion {
   bool started_ = false;
   SpeedQ16 v_ = 0;
   AccelQ16 accel_ = 0;
+  AccelQ16 move_accel_ = 0;        // the same rate smoothed faster, for the window's move where the differential is clean
   FracQ16 residual_ = 0;           // tracked residual ratio of the differential
   int32_t tof_inflation_ = int32_t{1} << 16;  // Q16, >= 1: the time of flight's variance factor
   int64_t measured_us_ = 0;        // how long the observer has measured without a break (us, capped)
@@ -106,6 +107,8 @@ class VelocityFusion {
   int64_t coast_st2_ = 0;          // ... its variance (Q32) ...
   int64_t coast_us_ = 0;           // ... how long ago (us, capped) ...
   int32_t coast_frames_ = -1;      // ... in frames since (-1: none to coast on)
+  // The rate the window is moved to the present by (kFusionMoveAccelTau, fusion_params.hpp).
+  int64_t move_rate() const;
   // The observer's lag on a ramp, with what the output's smoothing (time constant out_tau_us) adds to it.
   int64_t lag_compensation(const FusionInput& in, int64_t dt_us, int64_t out_tau_us);
   void learn_scale(const FusionInput& in, int64_t dt_us, int64_t q_res, int64_t q_change, int64_t q_short, int64_t q_turn);

@@ -44,6 +44,7 @@ class FloatVelocityFusion {
  private:
   bool started_ = false;
   double v_ = 0, accel_ = 0, residual_ = 0, tof_inflation_ = 1;
+  double move_accel_ = 0;  // the rate smoothed faster, for the window's move (the core's comment)
   double scale_ = 1, scale_var_ = 0;
   bool scale_started_ = false;
   // How long the observer has measured without a hold: counted as the core
@@ -58,6 +59,7 @@ class FloatVelocityFusion {
   double coast_z_ = 0, coast_st2_ = 0;  // the last time of flight's value and variance ...
   int64_t coast_us_ = 0;                // ... how long ago (us) ...
   int coast_frames_ = -1;               // ... in frames (-1: none to coast on)
+  double move_rate() const;
   double lag_compensation(const FloatFusionInput& in, double dt, double out_tau);
 };
 
