@@ -8,6 +8,7 @@
 
 #include "lumavel/host/file_config_store.hpp"
 #include "lumavel/host/hid_link.hpp"
+#include "lumavel/host/path_check.hpp"
 #include "lumavel/host/report_file.hpp"
 #include "lumavel/protocol/reports.hpp"
 
@@ -129,6 +130,15 @@ TEST(HostLinks, ErrorsNameTheDeviceAndSayWhatToDo) {
   std::fclose(f);
   STRCMP_EQUAL("keep me\n", kept);
   std::remove(plain.c_str());
+  // Another device node (was: hidg read /dev/zero as host requests for ever,
+  // a hang; uhid took its UHID_CREATE2 write and waited 30 s for a host).
+  // Where sysfs names the node, that is: without sysfs nothing can tell.
+  if (!host::char_device_of("/dev/zero").subsystem.empty()) {
+    CHECK_TRUE(contains(open_error("hidg:/dev/zero"),
+                        "/dev/zero: is the character device 1:5 (mem zero), not a HID gadget device node"));
+    CHECK_TRUE(contains(open_error("uhid:/dev/null"),
+                        "/dev/null: is the character device 1:3 (mem null), not a uhid device node"));
+  }
   const std::string file = open_error("file:/nonexistent/dir/x.hidrep");
   CHECK_TRUE(contains(file, "/nonexistent/dir/x.hidrep"));
   CHECK_TRUE(contains(open_error("file:"), "needs a path"));

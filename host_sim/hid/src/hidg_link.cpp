@@ -25,7 +25,9 @@ namespace proto = lumavel::protocol;
 class HidgLink : public hal::ReportLink {
  public:
   explicit HidgLink(const std::string& path) : path_(path) {
-    refuse_if_not_a_device(path, "HID gadget device node (/dev/hidgN)");
+    // Another device was read as the host's requests: /dev/zero never ran
+    // dry and poll_features read it for ever (the run hung).
+    refuse_if_not_a_device(path, "HID gadget device node (/dev/hidgN)", "hidg", "");
     fd_ = ::open(path.c_str(), O_RDWR | O_CLOEXEC | O_NONBLOCK);
     if (fd_ < 0) {
       const int e = errno;

@@ -15,6 +15,9 @@ std::unique_ptr<hal::ReportLink> make_file_link(const std::string& path);
 // file there was written over (and uhid then waited for kernel events that a
 // file never gives: a hang). Throws HidLinkError naming the path and what it
 // is, before it is opened; a missing path is left to open's own message.
-void refuse_if_not_a_device(const std::string& path, const std::string& what);
+// Where sysfs says what a device node is, it must be of that `subsystem`
+// and, given one, have that `name` (another device, /dev/zero, is refused).
+void refuse_if_not_a_device(const std::string& path, const std::string& what, const std::string& subsystem,
+                            const std::string& name);
 
 }  // namespace lumavel::host

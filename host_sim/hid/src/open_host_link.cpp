@@ -23,9 +23,10 @@ LinkSpec split(const std::string& spec) {
 
 }  // namespace
 
-void refuse_if_not_a_device(const std::string& path, const std::string& what) {
+void refuse_if_not_a_device(const std::string& path, const std::string& what, const std::string& subsystem,
+                            const std::string& name) {
   if (!path_present(path)) return;
-  if (const std::string why = why_not_a_device(path, what); !why.empty())
+  if (const std::string why = why_not_a_device(path, what, subsystem, name); !why.empty())
     throw HidLinkError(path + ": " + why + "; a report file is --hid file:PATH");
 }
 

@@ -22,7 +22,9 @@ namespace proto = lumavel::protocol;
 class UhidLink : public hal::ReportLink {
  public:
   explicit UhidLink(const std::string& path) : path_(path) {
-    refuse_if_not_a_device(path, "uhid device node (/dev/uhid)");
+    // Another device (/dev/null, a tty) took the UHID_CREATE2 write, never
+    // answered, and the first report waited its 30 s for a host in vain.
+    refuse_if_not_a_device(path, "uhid device node (/dev/uhid)", "misc", "uhid");
     fd_ = ::open(path.c_str(), O_RDWR | O_CLOEXEC | O_NONBLOCK);
     if (fd_ < 0) {
       const int e = errno;

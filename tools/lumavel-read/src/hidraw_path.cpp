@@ -5,22 +5,13 @@
 
 #include <cerrno>
 #include <cstring>
-#include <filesystem>
+
+#include "lumavel/host/path_check.hpp"
 
 namespace lumavel::read {
 namespace {
 
 constexpr const char* kHint = " (use a path that `lumavel-read list` shows, such as /dev/hidraw0)";
-
-// The kernel subsystem of a character device: the last part of
-// /sys/dev/char/MAJ:MIN/subsystem ("hidraw", "mem", "tty"), or "" when unknown.
-std::string char_subsystem(dev_t rdev) {
-  const std::string link =
-      "/sys/dev/char/" + std::to_string(major(rdev)) + ":" + std::to_string(minor(rdev)) + "/subsystem";
-  std::error_code ec;
-  const std::filesystem::path target = std::filesystem::read_symlink(link, ec);
-  return ec ? std::string() : target.filename().string();
-}
 
 }  // namespace
 
@@ -33,7 +24,7 @@ std::string why_not_hidraw(const std::string& path) {
   if (S_ISREG(st.st_mode)) return path + " is a regular file, not a hidraw device" + kHint;
   if (S_ISDIR(st.st_mode)) return path + " is a directory, not a hidraw device" + kHint;
   if (!S_ISCHR(st.st_mode)) return path + " is not a character device, so not a hidraw device" + kHint;
-  const std::string sub = char_subsystem(st.st_rdev);
+  const std::string sub = host::char_device_of(path).subsystem;
   if (sub == "hidraw") return "";
   return path + " is the character device " + std::to_string(major(st.st_rdev)) + ":" +
          std::to_string(minor(st.st_rdev)) + (sub.empty() ? "" : " (" + sub + ")") + ", not a hidraw device" + kHint;

@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <sys/stat.h>
+#include <sys/sysmacros.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -93,10 +94,33 @@ std::string why_too_big_for_text(const std::string& path, const std::string& hol
          " bytes are read)";
 }
 
-std::string why_not_a_device(const std::string& path, const std::string& what) {
+CharDevice char_device_of(const std::string& path) {
+  struct stat st {};
+  CharDevice d;
+  if (::stat(path.c_str(), &st) != 0 || !S_ISCHR(st.st_mode)) return d;
+  d.major = major(st.st_rdev);
+  d.minor = minor(st.st_rdev);
+  const std::string node = "/sys/dev/char/" + std::to_string(d.major) + ":" + std::to_string(d.minor);
+  std::error_code e1, e2;
+  const std::filesystem::path device = std::filesystem::read_symlink(node, e1);
+  const std::filesystem::path subsystem = std::filesystem::read_symlink(node + "/subsystem", e2);
+  if (!e1) d.name = device.filename().string();
+  if (!e2) d.subsystem = subsystem.filename().string();
+  return d;
+}
+
+std::string why_not_a_device(const std::string& path, const std::string& what, const std::string& subsystem,
+                             const std::string& name) {
   struct stat st {};
   if (::stat(path.c_str(), &st) != 0) return stat_failure(errno);
-  if (S_ISCHR(st.st_mode)) return {};
+  if (S_ISCHR(st.st_mode)) {
+    const CharDevice d = char_device_of(path);
+    const bool other = (!subsystem.empty() && !d.subsystem.empty() && d.subsystem != subsystem) ||
+                       (!name.empty() && !d.name.empty() && d.name != name);
+    if (!other) return {};
+    return "is the character device " + std::to_string(d.major) + ":" + std::to_string(d.minor) + " (" +
+           d.subsystem + (d.subsystem.empty() || d.name.empty() ? "" : " ") + d.name + "), not a " + what;
+  }
   if (S_ISREG(st.st_mode)) return "is a regular file, not a " + what;
   if (S_ISDIR(st.st_mode)) return "is a folder, not a " + what;
   return std::string("is ") + special_kind(st.st_mode) + ", not a " + what;

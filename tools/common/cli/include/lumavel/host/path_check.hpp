@@ -16,10 +16,23 @@ namespace lumavel::host {
 // not a configuration file", "is a FIFO (named pipe), not a configuration
 // file", "is a loop of symbolic links".
 std::string why_not_a_file(const std::string& path, const std::string& what = "file");
+// What the kernel says a character device node is, from sysfs
+// (/sys/dev/char/MAJ:MIN): its subsystem ("hidraw", "hidg", "misc", "mem",
+// "tty") and its own name ("hidraw0", "hidg0", "uhid", "null"); both "" when
+// sysfs does not say (not mounted, or no such node).
+struct CharDevice {
+  unsigned major = 0, minor = 0;
+  std::string subsystem, name;
+};
+CharDevice char_device_of(const std::string& path);
 // "" when `path` (symlinks followed) is a character device node, such as
 // /dev/uhid or /dev/hidg0; otherwise the reason, e.g. "is a regular file, not
-// a uhid device node" (what = "uhid device node").
-std::string why_not_a_device(const std::string& path, const std::string& what);
+// a uhid device node" (what = "uhid device node"). With `subsystem` or
+// `name` given, the node must also be that device where sysfs says what it
+// is (/dev/zero for a hidg node was read for ever): "is the character device
+// 1:5 (mem null), not a HID gadget device node".
+std::string why_not_a_device(const std::string& path, const std::string& what, const std::string& subsystem = "",
+                             const std::string& name = "");
 // "" when `path` is a folder; otherwise the reason, e.g. "is a file, not a
 // recording folder" (what = "recording folder").
 std::string why_not_a_folder(const std::string& path, const std::string& what = "folder");
