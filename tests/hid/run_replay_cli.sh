@@ -84,6 +84,11 @@ usage bogus
 usage --backend usb list
 usage stream --count many
 usage replay x.hidrep -n 0  # was: every measurement, exit 0 (0 was the default's "no limit")
+# was: waited for ever for a report (0 was the default's "never"); timeout(1) ends the old behaviour
+timeout 10 "$READ" stream --timeout 0 > /dev/null 2> usage.err
+rc=$?
+[ $rc -eq 2 ] || fail "lumavel-read stream --timeout 0: exit $rc, expected 2: $(cat usage.err)"
+grep -qF -- "--timeout: must be a number in (0, 1e+09], not '0'" usage.err || fail "stream --timeout 0: $(cat usage.err)"
 usage stream --live --no-live
 usage replay
 usage replay a b

@@ -53,9 +53,11 @@ void add_stream_options(CLI::App* c, StreamOptions& o, bool live_options) {
       ->type_name("N")
       ->check(cli::whole_number_in(1, 1000000000000LL));
   if (!live_options) return;
-  c->add_option("--timeout", o.timeout_s, "give up after S seconds without a report (default: never)")
+  // As --count: 0 is the default's "never" inside; given, it asked to give
+  // up at once and waited for ever.
+  c->add_option("--timeout", o.timeout_s, "give up after S seconds without a report, (0, 1e9] (default: never)")
       ->type_name("S")
-      ->check(cli::number_in(0, 1e9));
+      ->check(cli::positive_number_up_to(1e9));
   c->add_flag("--no-reconnect", o.no_reconnect, "exit when the device goes away instead of waiting for it");
   CLI::Option* live = c->add_flag("--live", o.live, "force the live line on");
   CLI::Option* no_live = c->add_flag("--no-live", o.no_live, "force the live line off");
