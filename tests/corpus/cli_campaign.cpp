@@ -712,6 +712,13 @@ std::vector<Case> render_cases() {
                  replace_in(d + "/scenario.yaml", "duration_s: 0.1", "duration_s: 300000");
                  replace_in(d + "/scenario.yaml", "rate_hz: 60", "rate_hz: 10000");
                }, Expect::kRefused, "scenario.yaml", "camera rate_hz = 10000 Hz for duration_s = 300000 s is 3e+09 frame pairs", {}});
+  // 8192x8192 frames, render limited to 1 GB: each of its 2 threads holds a
+  // frame's radiance, 600 MB (was: "error: std::bad_alloc", naming nothing).
+  c.push_back({"render: 8192x8192 frames in 1 GB", "render", [](const std::string& d) {
+                 write_text(d + "/scenario.yaml", photo_scenario("photo.pgm"));
+                 write_text(d + "/photo.pgm", "P5\n2 2\n255\n" + std::string(4, '\x80'));
+                 replace_in(d + "/scenario.yaml", "resolution: [40, 30]", "resolution: [8192, 8192]");
+               }, Expect::kRefused, "scenario.yaml", "out of memory rendering 8192x8192 frames with 2 threads", {}, {}, {}, 1024});
   // netpbm allows '#' comments in the header, and GIMP writes one (was:
   // refused, "photo.pgm: not a binary 8-bit PGM").
   c.push_back({"render: photo a PGM with a comment (as GIMP writes)", "render", [](const std::string& d) {

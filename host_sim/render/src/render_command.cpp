@@ -1,8 +1,10 @@
 // Command line of `lumavel-sim render`.
 #include "lumavel/host/render_command.hpp"
 
+#include <cstdint>
 #include <cstdio>
 #include <memory>
+#include <new>
 #include <stdexcept>
 #include <exception>
 #include <filesystem>
@@ -71,6 +73,21 @@ int render_to_folder(RenderArgs& a) {
   render::RenderSummary r;
   try {
     r = render::render_recording(s, a.out, a.opt);
+  } catch (const std::bad_alloc&) {
+    // Each worker holds a frame's radiance (doubles) and its 8-bit image: at
+    // 8192x8192 that is 600 MB a thread (was: "error: std::bad_alloc",
+    // naming neither the scenario nor the size).
+    std::error_code ignored;
+    std::filesystem::remove_all(mav0, ignored);
+    constexpr double kBytesPerPixel = sizeof(double) + sizeof(uint8_t);
+    char b[400];
+    std::snprintf(b, sizeof b,
+                  "out of memory rendering %dx%d frames with %d thread%s: each thread holds a frame's radiance and "
+                  "image, %g bytes a pixel (%.0f MB at this size); render with fewer --threads or at a lower "
+                  "--resolution",
+                  s.camera.width, s.camera.height, a.opt.threads, a.opt.threads == 1 ? "" : "s", kBytesPerPixel,
+                  kBytesPerPixel * s.camera.width * s.camera.height / 1e6);
+    throw std::runtime_error(s.file + ": " + b);
   } catch (...) {
     std::error_code ignored;
     std::filesystem::remove_all(mav0, ignored);
