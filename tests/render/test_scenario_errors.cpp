@@ -73,6 +73,17 @@ TEST(ScenarioErrors, OutOfRangeValue) {
   STRCMP_CONTAINS("rate_hz", e.c_str());
 }
 
+// More pixels than lumavel bins a frame of (was: rendered, 45 min at 8192x8192,
+// then refused by run's check); 4096x4096 is the most.
+TEST(ScenarioErrors, ResolutionBeyondWhatRunBins) {
+  const std::string e = error_of(replace(kGood, "resolution: [40, 30]", "resolution: [8192, 8192]"));
+  STRCMP_CONTAINS("bad.yaml:3: 'resolution' = [8192, 8192] is 67108864 pixels: lumavel bins frames of at most "
+                  "16777216 pixels (4096x4096", e.c_str());
+  STRCMP_EQUAL("(accepted)", error_of(replace(kGood, "resolution: [40, 30]", "resolution: [4096, 4096]")).c_str());
+  STRCMP_CONTAINS("'resolution' = [4097, 4096] is 16781312 pixels",
+                  error_of(replace(kGood, "resolution: [40, 30]", "resolution: [4097, 4096]")).c_str());
+}
+
 TEST(ScenarioErrors, NotANumber) {
   const std::string e = error_of(replace(kGood, "value: 90", "value: grey"));
   STRCMP_CONTAINS("bad.yaml:13:", e.c_str());

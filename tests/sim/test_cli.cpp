@@ -125,6 +125,10 @@ TEST(Cli, UsageErrorsExitTwo) {
   LONGS_EQUAL(2, r.code);
   STRCMP_CONTAINS("--resolution: must be WxH with W in 1..8192 and H in 1..8192 (e.g. 40x30), not '40by30'",
                   r.err.c_str());
+  r = sim("render a.yaml out --resolution 8192x4096");  // was: rendered, then refused by run's check
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("--resolution: 8192x4096 is 33554432 pixels: lumavel bins frames of at most 16777216 pixels",
+                  r.err.c_str());
   r = sim("calibrate rec --max-shift 0");
   LONGS_EQUAL(2, r.code);
   STRCMP_CONTAINS("--max-shift: must be a number in (0, 20], not '0'", r.err.c_str());

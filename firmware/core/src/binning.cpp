@@ -39,7 +39,7 @@ bool bin_area(const ImageView& in, uint8_t* dst, uint16_t out_w, uint16_t out_h)
   if (out_w == 0 || out_h == 0 || out_w > in.width || out_h > in.height) return false;
   if (out_w > kMaxColumns || in.stride < in.width) return false;
   // 255 * in_w * in_h must fit 32 bits.
-  if (uint64_t{in.width} * in.height > (uint64_t{1} << 24)) return false;
+  if (uint64_t{in.width} * in.height > kMaxBinPixels) return false;
   const uint32_t denom = uint32_t{in.width} * in.height;
   uint32_t acc[kMaxColumns];
   for (uint16_t Y = 0; Y < out_h; ++Y) {

@@ -276,6 +276,10 @@ CameraSensor read_camera_yaml(const std::string& path) {
   if (r[0] < 1 || r[1] < 1 || r[0] > 16384 || r[1] > 16384 || r[0] != std::floor(r[0]) || r[1] != std::floor(r[1]))
     throw recording_error_at(path, line_of(res), "resolution: [" + format_double(r[0]) + ", " + format_double(r[1]) +
                                                      "]: expected [width, height] in whole pixels, 1..16384");
+  // (was: refused at frame 0, "cannot bin to the working resolution", no rule said)
+  if (const std::string why = why_too_many_pixels(r[0], r[1]); !why.empty())
+    throw recording_error_at(path, line_of(res),
+                             "resolution: [" + format_double(r[0]) + ", " + format_double(r[1]) + "] " + why);
   c.line.resolution = line_of(res);
   c.width = static_cast<int>(r[0]);
   c.height = static_cast<int>(r[1]);

@@ -45,7 +45,11 @@ int render_to_folder(RenderArgs& a) {
   // '-' made a folder named '-' (a recording is a folder: it cannot go to
   // standard output), refused as '-' is where other outputs cannot take it.
   if (a.out == "-") throw std::runtime_error("- (OUT): " + why_dash_is_not_an_output("recording", "folder"));
-  if (!a.resolution.empty()) cli::parse_size(a.resolution, a.ov.width, a.ov.height);
+  if (!a.resolution.empty()) {
+    cli::parse_size(a.resolution, a.ov.width, a.ov.height);
+    if (const std::string why = why_too_many_pixels(a.ov.width, a.ov.height); !why.empty())
+      throw cli::UsageError("--resolution: " + a.resolution + " " + why);
+  }
   a.opt.progress = !a.quiet;
   render::Scenario s = render::load_scenario(a.scenario);
   render::apply_overrides(s, a.ov);

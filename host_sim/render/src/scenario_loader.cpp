@@ -265,6 +265,10 @@ void read_camera(const Reader& r, const YAML::Node& n, Scenario& s) {
     const auto v = r.list(n["resolution"], "resolution", 2, 1, 8192);
     if (v[0] != std::floor(v[0]) || v[1] != std::floor(v[1]))
       r.fail(n["resolution"], "'resolution' must be two whole numbers [width, height]");
+    // (was: rendered, for hours at 8192x8192, then refused by run's check)
+    if (const std::string why = why_too_many_pixels(v[0], v[1]); !why.empty())
+      r.fail(n["resolution"], "'resolution' = [" + std::to_string(static_cast<long>(v[0])) + ", " +
+                                  std::to_string(static_cast<long>(v[1])) + "] " + why);
     c.width = static_cast<int>(v[0]);
     c.height = static_cast<int>(v[1]);
   }

@@ -13,10 +13,14 @@ struct ImageView {
   uint32_t stride;  // bytes between rows
 };
 
+// The largest frame bin_area takes, in pixels (4096x4096): 255 * in.width *
+// in.height must fit its 32-bit sums.
+constexpr uint32_t kMaxBinPixels = uint32_t{1} << 24;
+
 // dst is out_w * out_h bytes. Requires out_w <= in.width, out_h <= in.height,
 // out_w <= kMaxColumns (limits.hpp), in.stride >= in.width and
-// in.width * in.height <= 2^24. False (dst untouched) if the sizes do not
-// allow binning.
+// in.width * in.height <= kMaxBinPixels. False (dst untouched) if the sizes
+// do not allow binning.
 bool bin_area(const ImageView& in, uint8_t* dst, uint16_t out_w, uint16_t out_h);
 
 }  // namespace lumavel

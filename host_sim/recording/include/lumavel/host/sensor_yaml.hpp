@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "lumavel/core/binning.hpp"
+
 namespace lumavel::host {
 
 // 4x4 row-major pose of a sensor in the body frame: p_B = T_BS * p_S.
@@ -55,6 +57,16 @@ constexpr double kMaxGyroRandomWalk = 10;    // gyroscope_random_walk, rad/s^2/s
 // the distortion coefficients): cu within [-width, 2 width], cv within
 // [-height, 2 height], fv/fu 0.5..2. Throws RecordingError naming FILE:LINE.
 void check_intrinsics(const CameraSensor& c, const std::string& file, long line);
+
+// "" when a frame of width x height pixels can be binned to a working size
+// (lumavel::bin_area: at most kMaxBinPixels, 4096x4096); otherwise why not:
+// "is N pixels: lumavel bins frames of at most ...". A sensor.yaml's
+// resolution, a scenario's and render --resolution are held to it.
+inline std::string why_too_many_pixels(double width, double height) {
+  if (width * height <= kMaxBinPixels) return "";
+  return "is " + std::to_string(static_cast<long long>(width * height)) + " pixels: lumavel bins frames of at most " +
+         std::to_string(kMaxBinPixels) + " pixels (4096x4096: it sums a frame in 32 bits)";
+}
 
 // Throw RecordingError naming `path` (and the line when the problem has one).
 CameraSensor read_camera_yaml(const std::string& path);
