@@ -363,6 +363,21 @@ TEST(Cli, WorkingSizeLargerThanTheSensorIsRefused) {
                   r.err.c_str());
 }
 
+// A line scan works at height 1; a --height beyond it is refused as a --width
+// beyond the sensor is (was: --height 2 run at height 1, silently).
+TEST(Cli, HeightLargerThanALineScanIsRefused) {
+  fixture::Options o;
+  o.height = 1;
+  const std::string yaml = fixture::read_text(rec(o) + "/mav0/cam0/sensor.yaml");
+  const Outcome r = sim("run rec --height 2");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS(("cam0/sensor.yaml:" + line_of(yaml, "resolution:") +
+                   ": cannot bin the 40x1 sensor up to the working resolution 40x2")
+                      .c_str(),
+                  r.err.c_str());
+  LONGS_EQUAL(0, sim("run rec --height 1 -q -o /dev/null").code);
+}
+
 // The fixture's cameras carry a small radial-tangential distortion: corrected
 // by default, read as pinhole with --ignore-distortion (other estimates).
 TEST(Cli, IgnoreDistortionIsSaidAndChangesTheEstimates) {

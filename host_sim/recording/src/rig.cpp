@@ -227,6 +227,17 @@ WorkingSize default_working_size(const Recording& rec) {
   return {default_columns(rec.cam[0].width), default_rows(rec.cam[0].height)};
 }
 
+void check_bins_down(const Recording& rec, WorkingSize size) {
+  for (int c = 0; c < 2; ++c) {
+    const CameraSensor& cam = rec.cam[c];
+    if (size.width > cam.width || size.height > cam.height)
+      throw error_at_key(rec.root + "/" + layout::kCamDir[c] + "/sensor.yaml", cam.line.resolution,
+                         "cannot bin the " + std::to_string(cam.width) + "x" + std::to_string(cam.height) +
+                             " sensor up to the working resolution " + std::to_string(size.width) + "x" +
+                             std::to_string(size.height) + " (choose a smaller --width/--height)");
+  }
+}
+
 EstimatorSettings derive_settings(const Recording& rec, WorkingSize size) {
   const std::string yaml0 = rec.root + "/" + layout::kCamDir[0] + "/sensor.yaml";
   if (rec.cam[0].height == 1) size.height = 1;  // line-scan sensor
@@ -245,16 +256,9 @@ EstimatorSettings derive_settings(const Recording& rec, WorkingSize size) {
   EstimatorSettings s;
   s.width = size.width;
   s.height = size.height;
-  for (int c = 0; c < 2; ++c) {
-    const CameraSensor& cam = rec.cam[c];
-    const std::string yaml = rec.root + "/" + layout::kCamDir[c] + "/sensor.yaml";
-    if (size.width > cam.width || size.height > cam.height)
-      throw error_at_key(yaml, cam.line.resolution, "cannot bin the " + std::to_string(cam.width) + "x" +
-                                         std::to_string(cam.height) + " sensor up to the working resolution " +
-                                         std::to_string(size.width) + "x" + std::to_string(size.height) +
-                                         " (choose a smaller --width/--height)");
-    s.cam[c] = derive_camera(cam, size.width, yaml);
-  }
+  check_bins_down(rec, size);
+  for (int c = 0; c < 2; ++c)
+    s.cam[c] = derive_camera(rec.cam[c], size.width, rec.root + "/" + layout::kCamDir[c] + "/sensor.yaml");
   // Baseline: x of the vector from cam0's optical centre to cam1's (body frame).
   s.baseline = rec.cam[1].T_BS[3] - rec.cam[0].T_BS[3];
   if (std::fabs(s.baseline) < 1e-4)

@@ -58,6 +58,13 @@ std::vector<double> lens_elevation_scales(const CameraSensor& c, int work_width)
 // so that a slow gyro does not look like a gyro gap at every frame.
 double gyro_gap_s(double imu_period_s);
 
+// Throws RecordingError, naming a sensor.yaml's resolution line, when `size`
+// is larger than a camera's sensor on either axis: frames are binned down,
+// never up. derive_settings checks it after taking a line-scan sensor's
+// height to 1; a size the user asked for is checked as given (run --height 2
+// on a line scan was worked at height 1, silently).
+void check_bins_down(const Recording& rec, WorkingSize size);
+
 // Full settings; throws RecordingError for a working size the sensors cannot
 // be binned to, or for cameras that do not share one resolution.
 EstimatorSettings derive_settings(const Recording& rec, WorkingSize size);
