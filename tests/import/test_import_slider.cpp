@@ -218,6 +218,9 @@ TEST(ImportSlider, AnExistingRecordingIsRefusedUnlessForced) {
 TEST(ImportSlider, CommandLineRefusesABadBaseline) {
   const char* argv[] = {"import-slider", "a", "b", "--baseline", "-1"};
   LONGS_EQUAL(2, import_slider_main(5, const_cast<char**>(argv)));
+  // Below the recording's 1 mm (was: imported, then refused by run's check).
+  const char* argv3[] = {"import-slider", "a", "b", "--baseline", "0.0005"};
+  LONGS_EQUAL(2, import_slider_main(5, const_cast<char**>(argv3)));
   const char* argv2[] = {"import-slider", "only-one"};
   LONGS_EQUAL(2, import_slider_main(2, const_cast<char**>(argv2)));
 }

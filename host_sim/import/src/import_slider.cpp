@@ -20,6 +20,7 @@
 #include "lumavel/host/sensor_yaml.hpp"
 #include "lumavel/host/slider_dataset.hpp"
 #include "lumavel/host/time_shift_pairing.hpp"
+#include "lumavel/units/config_fields.hpp"
 
 namespace lumavel::host {
 namespace {
@@ -242,10 +243,13 @@ void add_import_slider_command(cli::Tool& tool) {
       ->required()
       ->type_name("")->check(cli::path_name());
   c->add_option("OUT_REC", a->out, "the recording folder to write")->required()->type_name("")->check(cli::path_name());
-  char baseline_help[96];
-  std::snprintf(baseline_help, sizeof baseline_help, "h in metres, cam1 ahead of cam0, (0, 1] (default %g)",
-                kDefaultSliderBaseline);
-  c->add_option("--baseline", a->o.baseline, baseline_help)->type_name("H")->check(cli::positive_number_up_to(1));
+  // The baseline's range is the configuration's, which run holds a recording
+  // to (was: (0, 1], and 0.5 mm imported, then refused by run's check).
+  const config::FieldSpec& h = config::spec(config::Quantity::kBaseline);
+  char baseline_help[128];
+  std::snprintf(baseline_help, sizeof baseline_help, "h in metres, cam1 ahead of cam0, %s..%s (default %g)",
+                cli::number_text(h.lo).c_str(), cli::number_text(h.hi).c_str(), kDefaultSliderBaseline);
+  c->add_option("--baseline", a->o.baseline, baseline_help)->type_name("H")->check(cli::number_in(h.lo, h.hi));
   c->add_flag("--force", a->o.force, "replace an existing OUT_REC/mav0");
 }
 
