@@ -100,6 +100,18 @@ TEST(Cli, UsageErrorsExitTwo) {
   LONGS_EQUAL(2, r.code);
   STRCMP_CONTAINS("--width: must be a whole number in 16..2048 (above 160 only with --engine vo), not '4096'",
                   r.err.c_str());
+  // Steps the vo engine does not have (was: ignored, exit 0, without a word).
+  r = sim("run rec --engine vo --lens-columns");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("--lens-columns: the vo engine has no column tables", r.err.c_str());
+  r = sim("run rec --engine vo --photometric-balance");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("--photometric-balance: the vo engine balances no kernels", r.err.c_str());
+  r = sim("run rec --engine vo --elevation-band");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("--elevation-band: the vo engine sums no columns (it tracks features); the option is for --engine "
+                  "fixed or float",
+                  r.err.c_str());
   r = sim("run rec --engine vo --width 40 --height 11");  // the option's fault, not sensor.yaml's
   LONGS_EQUAL(2, r.code);
   STRCMP_CONTAINS("--height: the vo engine tracks 2-D features and needs 12 rows or more, not '11'", r.err.c_str());

@@ -236,6 +236,19 @@ int run(const RunArgs& a) {
     throw cli::UsageError("--height: must be a whole number in 1.." + std::to_string(kMaxWorkHeight) +
                           " (the firmware core's limit; --engine vo goes up to the sensor's height), not '" +
                           std::to_string(a.height) + "'");
+  // What the vo engine does not do, asked of it (was: taken, ignored without
+  // a word; --lens-columns even said the lens was corrected by column tables).
+  // The options that only turn a step off (--no-photometric-match, ...) ask
+  // nothing of it.
+  if (options.engine == EngineKind::kVo) {
+    const std::pair<bool, const char*> asked[] = {
+        {a.lens_columns, "--lens-columns: the vo engine has no column tables (it undistorts each frame, or takes the "
+                         "lens as pinhole with --ignore-distortion)"},
+        {a.photometric_balance, "--photometric-balance: the vo engine balances no kernels (it matches features)"},
+        {a.elevation_band, "--elevation-band: the vo engine sums no columns (it tracks features)"}};
+    for (const auto& [given, why] : asked)
+      if (given) throw cli::UsageError(std::string(why) + "; the option is for --engine fixed or float");
+  }
   if (options.engine == EngineKind::kVo && a.height > 0 && a.height < vo::kMinVoHeight)
     throw cli::UsageError("--height: the vo engine tracks 2-D features and needs " + std::to_string(vo::kMinVoHeight) +
                           " rows or more, not '" + std::to_string(a.height) + "'");
