@@ -141,6 +141,16 @@ TEST(Cli, UsageErrorsExitTwo) {
   LONGS_EQUAL(2, r.code);
   STRCMP_CONTAINS("--resolution: 8192x4096 is 33554432 pixels: lumavel bins frames of at most 16777216 pixels",
                   r.err.c_str());
+  // A recording's mav0 folder as the folder to write (was: rec/mav0/mav0 written, exit 0).
+  r = sim("render a.yaml rec/mav0/");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("OUT: rec/mav0 is a recording's mav0 folder (the recording is written into a mav0 folder inside the "
+                  "one given: this would make rec/mav0/mav0): give rec",
+                  r.err.c_str());
+  r = sim("import-slider data mav0");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("OUT_REC: mav0 is a recording's mav0 folder", r.err.c_str());
+  STRCMP_CONTAINS("give .", r.err.c_str());
   r = sim("calibrate rec --max-shift 0");
   LONGS_EQUAL(2, r.code);
   STRCMP_CONTAINS("--max-shift: must be a number in (0, 20], not '0'", r.err.c_str());

@@ -242,7 +242,7 @@ void add_import_slider_command(cli::Tool& tool) {
   c->add_option("DATA_DIR", a->data, "the dataset folder (images.txt, groundtruth.txt, calib.txt)")
       ->required()
       ->type_name("")->check(cli::path_name());
-  c->add_option("OUT_REC", a->out, "the recording folder to write")->required()->type_name("")->check(cli::path_name());
+  c->add_option("OUT_REC", a->out, "the recording folder to write")->required()->type_name("")->check(cli::recording_out());
   // The baseline's range is the configuration's, which run holds a recording
   // to (was: (0, 1], and 0.5 mm imported, then refused by run's check).
   const config::FieldSpec& h = config::spec(config::Quantity::kBaseline);

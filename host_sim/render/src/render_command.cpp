@@ -121,7 +121,7 @@ void add_render_command(cli::Tool& tool) {
   auto a = std::make_shared<RenderArgs>();
   CLI::App* c = tool.command("render", kDescription, [a] { return render_to_folder(*a); });
   c->add_option("SCENARIO", a->scenario, "the scenario file (.yaml)")->required()->type_name("")->check(cli::path_name());
-  c->add_option("OUT", a->out, "the recording folder to write (OUT/mav0)")->required()->type_name("")->check(cli::path_name());
+  c->add_option("OUT", a->out, "the recording folder to write (OUT/mav0)")->required()->type_name("")->check(cli::recording_out());
   c->add_option("--resolution", a->resolution, "camera resolution (the field of view is kept), e.g. 40x30")
       ->type_name("WxH")
       ->check(cli::size_wxh(8192, 8192));

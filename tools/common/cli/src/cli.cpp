@@ -1,5 +1,7 @@
 #include "lumavel/host/cli.hpp"
 
+#include "lumavel/host/path_check.hpp"
+
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -204,6 +206,11 @@ CLI::Validator positive_number_up_to(double hi) {
 CLI::Validator path_name() {
   return CLI::Validator([](std::string& s) { return s.empty() ? std::string("needs a path, not an empty one") : std::string(); },
                         "");
+}
+
+CLI::Validator recording_out() {
+  return CLI::Validator(
+      [](std::string& s) { return s.empty() ? std::string("needs a path, not an empty one") : host::why_inner_mav0(s); }, "");
 }
 
 CLI::Validator one_of(const std::vector<std::string>& words) {

@@ -149,6 +149,16 @@ std::string why_dash_is_not_an_output(const std::string& what, const std::string
          kind + " of that name)";
 }
 
+std::string why_inner_mav0(const std::string& out) {
+  std::string p = out;
+  while (p.size() > 1 && p.back() == '/') p.pop_back();
+  const size_t slash = p.find_last_of('/');
+  if (p.substr(slash == std::string::npos ? 0 : slash + 1) != "mav0") return "";
+  const std::string parent = slash == std::string::npos ? "." : (slash == 0 ? "/" : p.substr(0, slash));
+  return p + " is a recording's mav0 folder (the recording is written into a mav0 folder inside the one given: this "
+             "would make " + p + "/mav0): give " + parent;
+}
+
 std::string why_not_writable(const std::string& path, const std::string& what) {
   struct stat st {};
   if (path.empty()) return "an empty path, not a " + what;

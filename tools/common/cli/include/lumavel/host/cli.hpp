@@ -74,6 +74,9 @@ CLI::Validator positive_number_up_to(double hi);           // (0, hi]
 CLI::Validator one_of(const std::vector<std::string>& words);
 // A file or folder name: not empty (an empty shell variable must not mean the default).
 CLI::Validator path_name();
+// A recording folder to write (its frames go to OUT/mav0): a path name, and
+// not a mav0 folder itself (why_inner_mav0, path_check.hpp).
+CLI::Validator recording_out();
 // "WxH" with W in 1..max_w and H in 1..max_h.
 CLI::Validator size_wxh(int max_w, int max_h);
 // Parses "WxH" (both positive); false when the text is not of that form.

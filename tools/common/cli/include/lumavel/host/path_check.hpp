@@ -48,6 +48,11 @@ std::string why_not_writable(const std::string& path, const std::string& what = 
 // name (./- for a `kind` of that name)" (kind: "file", or "folder" for an
 // output folder such as render's OUT).
 std::string why_dash_is_not_an_output(const std::string& what, const std::string& kind = "file");
+// "" unless `out` (a recording folder to write, whose frames go to out/mav0)
+// names a mav0 folder itself, which would become out/mav0/mav0; otherwise the
+// reason, e.g. "rec/mav0 is a recording's mav0 folder (...: this would make
+// rec/mav0/mav0): give rec".
+std::string why_inner_mav0(const std::string& out);
 // How long an output that is a FIFO (named pipe) waits for a process to read
 // it (`run -o FIFO & reader FIFO` may start the reader a moment later).
 constexpr int kFifoReaderWaitMs = 2000;
