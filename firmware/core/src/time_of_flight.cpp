@@ -10,8 +10,9 @@ namespace {
 
 using namespace params;
 
-// Squared gates in Q16 (residuals are compared as squares: no root per segment).
+// A segment's end takes points past it by dd / kVertexSlackDiv (kTofVertexSlack).
 constexpr int64_t kVertexSlackDiv = fx::q_of(1 / kTofVertexSlack, 0);
+// Squared gates in Q16 (residuals are compared as squares: no root per segment).
 constexpr int64_t kPathResidualSqQ16 = fx::q_of(kTofMaxPathResidual * kTofMaxPathResidual, 16);
 constexpr int64_t kMotionResidualSqQ16 = fx::q_of(kTofMaxResidualVsMotion * kTofMaxResidualVsMotion, 16);
 constexpr int64_t kGateFramesQ16 = fx::q_of(kTofTrackGateFrames, 16);
