@@ -4,6 +4,7 @@
 
 #include "lumavel/core/fusion_params.hpp"
 #include "lumavel/core/imath.hpp"
+#include "lumavel/core/kernel_dot.hpp"
 
 namespace lumavel {
 namespace {
@@ -14,6 +15,9 @@ using namespace params;
 constexpr int64_t kVertexSlackDiv = fx::q_of(1 / kTofVertexSlack, 0);
 // Squared gates in Q16 (residuals are compared as squares: no root per segment).
 constexpr int64_t kPathResidualSqQ16 = fx::q_of(kTofMaxPathResidual * kTofMaxPathResidual, 16);
+constexpr int64_t kTauShiftQ16 = fx::q_of(kTofMaxTauShift, 16);
+constexpr int64_t kPathResidualLongQ16 = fx::q_of(kTofMaxPathResidualLong, 16);
+static_assert(kPathResidualLongQ16 <= (int64_t{1} << 18), "the window's gate squared stays below 2^20 (Q16)");
 constexpr int64_t kMotionResidualSqQ16 = fx::q_of(kTofMaxResidualVsMotion * kTofMaxResidualVsMotion, 16);
 constexpr int64_t kGateFramesQ16 = fx::q_of(kTofTrackGateFrames, 16);
 constexpr int64_t kGateFractionQ16 = fx::q_of(kTofTrackGateFraction, 16);
@@ -26,6 +30,18 @@ int64_t abs64(int64_t v) { return v < 0 ? -v : v; }
 int64_t clamp64(int64_t v, int64_t lo, int64_t hi) { return v < lo ? lo : (v > hi ? hi : v); }
 constexpr int64_t kDiffMaxQ24 = int64_t{1} << 28;  // two ValueQ28 differ by < 2^32, 2^28 in Q24
 static_assert(kMaxKernels <= 64, "the match's sums of squares (< 2^56 each) must stay below 2^62");
+
+// The window's gate (kTofMaxTauShift): res <= (c tau / span)^2 dd, the gate in
+// steps held to kTofMaxPathResidualLong. res and dd are Q48 sums of squares
+// (< 2^62); both are brought below 2^42 by one shift, so that the gate
+// squared (< 2^20, Q16) times dd fits 64 bits.
+bool within_window_gate(int64_t res, int64_t dd, int64_t tau_ns, int64_t span_ns) {
+  int64_t g = (kTauShiftQ16 * tau_ns) / span_ns;  // Q16 (tau <= kTofMaxTauNs < 2^30)
+  if (g > kPathResidualLongQ16) g = kPathResidualLongQ16;
+  const int64_t g2 = (g * g) >> 16;  // Q16
+  const int s = std::max(0, kdot::bit_length(static_cast<uint64_t>(dd)) - 42);
+  return (res >> s) <= ((g2 * (dd >> s)) >> 16);
+}
 
 // How far a tracked tau may move in one frame.
 int64_t gate_ns(int64_t tau_ns, int64_t frame_ns) {
@@ -61,7 +77,7 @@ const TofFrame& TimeOfFlight::at(uint16_t back) const {
 }
 
 bool TimeOfFlight::search(const TofTrackInput& in, int trail, int64_t want_ns, int64_t min_ns, int64_t max_ns,
-                          Candidate& out) const {
+                          bool window, Candidate& out) const {
   const int lead = 1 - trail;
   const TofFrame& now = at(0);
   const TofFrame& before = at(1);
@@ -124,11 +140,12 @@ bool TimeOfFlight::search(const TofTrackInput& in, int trail, int64_t want_ns, i
       res = ee - fx::shr_round(fr * ed, 16);
     }
     if (res < 0) res = 0;
-    if (res > (kPathResidualSqQ16 * (dd >> 16)) || res > (kMotionResidualSqQ16 * (motion >> 16))) continue;
+    if (res > (kMotionResidualSqQ16 * (motion >> 16))) continue;
     const int64_t span = static_cast<int64_t>(b.t_ns - a.t_ns);
     const int64_t t_lead = static_cast<int64_t>(a.t_ns) + ((span * fr) >> 16);
     const int64_t tau = static_cast<int64_t>(now.t_ns) - t_lead;
     if (tau <= 0) continue;
+    if (res > (kPathResidualSqQ16 * (dd >> 16)) && (!window || !within_window_gate(res, dd, tau, span))) continue;
     const int64_t stau = trail == 0 ? tau : -tau;
     const bool better = !found || (want_ns > 0 ? abs64(tau - want_ns) < abs64(abs64(out.stau_ns) - want_ns) : res < out.res);
     if (!better) continue;
@@ -162,9 +179,11 @@ TofResult TimeOfFlight::track(const TofTrackInput& in) {
     Candidate c{};
     const int trail = track_ns_ > 0 ? 0 : 1;
     const int64_t want = abs64(track_ns_), g = gate_ns(want, frame_ns);
-    if (search(in, trail, want, want - g, want + g, c) && abs64(abs64(c.stau_ns) - want) < g) {
+    const bool window = track_frames_ >= kTofWindowGateFrames;
+    if (search(in, trail, want, want - g, want + g, window, c) && abs64(abs64(c.stau_ns) - want) < g) {
       pick = c;
       have = true;
+      if (track_frames_ < 255) ++track_frames_;
     }
   }
   if (!have) {
@@ -198,7 +217,7 @@ TofResult TimeOfFlight::track(const TofTrackInput& in) {
         max_ns = std::min<int64_t>(max_ns, kTofMaxTauNs);
         if (min_ns >= max_ns) continue;  // no hint in this direction
         Candidate c{};
-        if (!search(in, trail, 0, min_ns, max_ns, c)) continue;
+        if (!search(in, trail, 0, min_ns, max_ns, false, c)) continue;
         const SpeedQ16 v = speed_of(in.baseline, c.stau_ns > 0 ? 1 : -1, abs64(c.stau_ns));
         bool agrees = !g;
         for (int64_t h : hints)
@@ -220,6 +239,7 @@ TofResult TimeOfFlight::track(const TofTrackInput& in) {
         pick = best;
         have = true;
         acquire_count_ = 0;
+        track_frames_ = 0;
       }
     } else {
       acquire_count_ = 0;

@@ -31,7 +31,7 @@ void FloatTimeOfFlight::push(const FloatTofFrame& frame) {
 const FloatTofFrame& FloatTimeOfFlight::at(size_t back) const { return ring_[ring_.size() - 1 - back]; }
 
 bool FloatTimeOfFlight::search(int trail, double max_rotation, double want_ns, double min_ns, double max_ns,
-                               Candidate& out) const {
+                               bool window, Candidate& out) const {
   const int lead = 1 - trail;
   const FloatTofFrame& now = at(0);
   const FloatTofFrame& before = at(1);
@@ -61,12 +61,14 @@ bool FloatTimeOfFlight::search(int trail, double max_rotation, double want_ns, d
     if (ed < -slack || ed - dd > slack) continue;
     const double fr = std::clamp(ed / dd, 0.0, 1.0);
     const double res = std::max(ed < 0 ? ee : (ed > dd ? ee - 2 * ed + dd : ee - fr * ed), 0.0);
-    if (res > kTofMaxPathResidual * kTofMaxPathResidual * dd ||
-        res > kTofMaxResidualVsMotion * kTofMaxResidualVsMotion * motion)
-      continue;
+    if (res > kTofMaxResidualVsMotion * kTofMaxResidualVsMotion * motion) continue;
     const double span = static_cast<double>(b.t_ns - a.t_ns);
     const double tau = static_cast<double>(now.t_ns) - (static_cast<double>(a.t_ns) + span * fr);
     if (tau <= 0) continue;
+    // The step's gate, or the window's where that is wider (the core's comment).
+    const double gate = !window ? kTofMaxPathResidual
+                                : std::max(kTofMaxPathResidual, std::min(kTofMaxTauShift * tau / span, kTofMaxPathResidualLong));
+    if (res > gate * gate * dd) continue;
     const double stau = trail == 0 ? tau : -tau;
     const bool better = !found || (want_ns > 0 ? std::fabs(tau - want_ns) < std::fabs(std::fabs(out.stau_ns) - want_ns)
                                                : res < out.res);
@@ -95,9 +97,11 @@ FloatTofResult FloatTimeOfFlight::track(double baseline, double max_rotation, do
     Candidate c;
     const int trail = track_ns_ > 0 ? 0 : 1;
     const double want = std::fabs(track_ns_), g = gate_ns(want, frame_ns);
-    if (search(trail, max_rotation, want, want - g, want + g, c) && std::fabs(std::fabs(c.stau_ns) - want) < g) {
+    const bool window = track_frames_ >= kTofWindowGateFrames;
+    if (search(trail, max_rotation, want, want - g, want + g, window, c) && std::fabs(std::fabs(c.stau_ns) - want) < g) {
       pick = c;
       have = true;
+      if (track_frames_ < 255) ++track_frames_;
     }
   }
   if (!have) {
@@ -124,7 +128,7 @@ FloatTofResult FloatTimeOfFlight::track(double baseline, double max_rotation, do
         max_ns = std::min(max_ns, kTofMaxTau * 1e9);
         if (min_ns >= max_ns) continue;
         Candidate c;
-        if (!search(trail, max_rotation, 0, min_ns, max_ns, c)) continue;
+        if (!search(trail, max_rotation, 0, min_ns, max_ns, false, c)) continue;
         const double v = (c.stau_ns > 0 ? baseline : -baseline) * 1e9 / std::fabs(c.stau_ns);
         bool agrees = !g;
         for (double h : hints) agrees = agrees || (guiding(h, trail) && std::fabs(v - h) <= kTofAcquireAgreement * std::fabs(h));
@@ -145,6 +149,7 @@ FloatTofResult FloatTimeOfFlight::track(double baseline, double max_rotation, do
         pick = best;
         have = true;
         acquire_count_ = 0;
+        track_frames_ = 0;
       }
     } else {
       acquire_count_ = 0;

@@ -13,6 +13,23 @@ namespace lumavel::params {
 // its frames; its residual distance from that path must be small against the
 // step between the two frames ...
 constexpr double kTofMaxPathResidual = 0.3;
+// ... or, for a track that has held on that gate for kTofWindowGateFrames,
+// against its window: the residual, were it all along the path, would move
+// tau by at most this fraction of tau (a segment's step in time is its span).
+// On a long window the lead's view changes little per frame (a slow pass, a
+// far scene) while the noise and the cameras' difference do not shrink with
+// it, so the step's gate alone dropped a held track on many frames; where tau
+// is a frame or two, the step's gate is the wider and stands.
+constexpr double kTofMaxTauShift = 0.1;
+// The window's gate in steps never passes this (beyond 2 the motion gate below
+// decided every candidate: the same figures); it bounds the integer products.
+constexpr double kTofMaxPathResidualLong = 4.0;
+// Frames a track must have held on the step's gate before the window's
+// applies. Never for an acquisition: a periodic near wall (the synthetic rig at
+// 0.13-0.17 m) offers matches at several taus, and with the window's gate
+// aliases were taken up and then held (7 of 16 runs 20-120 % off, against
+// 0.8-1.6 % with the step's gate; with it for any held track, 1 of 16).
+constexpr int kTofWindowGateFrames = 6;
 // ... and against the trail camera's own change since its previous frame
 // (so that a still or slowly changing view cannot match anything).
 constexpr double kTofMaxResidualVsMotion = 1.0;

@@ -84,14 +84,17 @@ class TimeOfFlight {
   const TofFrame& at(uint16_t back) const;  // 0 = newest
   // The best candidate of one direction on the segments whose time span
   // reaches [min_ns, max_ns]: the one nearest want_ns (> 0: tracking), else
-  // the one with the least residual.
-  bool search(const TofTrackInput& in, int trail, int64_t want_ns, int64_t min_ns, int64_t max_ns, Candidate& out) const;
+  // the one with the least residual. `window`: the window's gate may widen the
+  // step's (kTofMaxTauShift; an established track only).
+  bool search(const TofTrackInput& in, int trail, int64_t want_ns, int64_t min_ns, int64_t max_ns, bool window,
+              Candidate& out) const;
 
   TofFrame ring_[kTofFrames];
   uint16_t head_ = 0;   // next slot to write
   uint16_t count_ = 0;
   int64_t track_ns_ = 0;        // tracked signed tau
   uint8_t misses_ = 255;
+  uint8_t track_frames_ = 0;    // frames the track has held since it was acquired (saturating)
   uint8_t acquire_count_ = 0;
   int64_t acquire_ns_ = 0;
   uint64_t track_t_ns_ = 0;     // the newest frame's time when a track last held, or the history began

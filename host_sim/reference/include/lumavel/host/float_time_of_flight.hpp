@@ -37,11 +37,13 @@ class FloatTimeOfFlight {
     double stau_ns = 0, res = 0, sig_ns = 0, y_then = 0, turn = 0;
   };
   const FloatTofFrame& at(size_t back) const;
-  bool search(int trail, double max_rotation, double want_ns, double min_ns, double max_ns, Candidate& out) const;
+  bool search(int trail, double max_rotation, double want_ns, double min_ns, double max_ns, bool window,
+              Candidate& out) const;
 
   std::vector<FloatTofFrame> ring_;  // capacity kTofFrames, oldest first
   double track_ns_ = 0;
   int misses_ = 255;
+  int track_frames_ = 0;  // as the core (saturating at 255)
   int acquire_count_ = 0;
   double acquire_ns_ = 0;
   uint64_t track_t_ns_ = 0;  // the newest frame's time when a track last held, or the history began
