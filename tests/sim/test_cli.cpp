@@ -135,7 +135,7 @@ TEST(Cli, UsageErrorsExitTwo) {
   STRCMP_CONTAINS("--hid-linger: must be a number of seconds >= 0, or -1 (until interrupted), not '-2'", r.err.c_str());
   r = sim("render a.yaml out --resolution 40by30");
   LONGS_EQUAL(2, r.code);
-  STRCMP_CONTAINS("--resolution: must be WxH with W in 1..8192 and H in 1..8192 (e.g. 40x30), not '40by30'",
+  STRCMP_CONTAINS("--resolution: must be WxH with W in 1..16384 and H in 1..16384 (e.g. 40x30), not '40by30'",
                   r.err.c_str());
   r = sim("render a.yaml out --resolution 8192x4096");  // was: rendered, then refused by run's check
   LONGS_EQUAL(2, r.code);
@@ -181,7 +181,7 @@ TEST(Cli, AWholeNumberWithALeadingZeroIsRefused) {
                   r.err.c_str());
   r = sim("render a.yaml out --resolution 040x30");
   LONGS_EQUAL(2, r.code);
-  STRCMP_CONTAINS("--resolution: must be WxH with W in 1..8192 and H in 1..8192 (e.g. 40x30), written without a "
+  STRCMP_CONTAINS("--resolution: must be WxH with W in 1..16384 and H in 1..16384 (e.g. 40x30), written without a "
                   "leading zero (octal to some readers), not '040x30'",
                   r.err.c_str());
   r = sim("render a.yaml out --seed 010");
@@ -936,4 +936,14 @@ TEST(Cli, RenderRefusesARecordingThatRunWouldRefuse) {
   LONGS_EQUAL(1, r.code);
   STRCMP_CONTAINS("out/mav0 was written, but lumavel-sim run refuses it: out/mav0/cam0/sensor.yaml:", r.err.c_str());
   STRCMP_CONTAINS("(no baseline)", r.err.c_str());
+}
+
+// A scenario's duration_s and render --duration are one rule (was: the file
+// took 1e-3..1e6 s, the option (0, 1e6]: --duration 1e-9 was taken).
+TEST(Cli, RenderDurationIsTheScenariosRule) {
+  const std::string scenario = LUMAVEL_SOURCE_DIR "/host_sim/scenarios/paper_sim_aligned.yaml";
+  const Outcome r = sim("render '" + scenario + "' out --resolution 40x30 --duration 1e-9 -q");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("--duration: must be a number in [0.001, 1e+06], not '1e-9'", r.err.c_str());
+  CHECK(!exists(dir.path() + "/out/mav0"));
 }

@@ -15,7 +15,7 @@
 namespace lumavel::host {
 namespace {
 
-constexpr int kMaxSide = 16384;  // refuses absurd headers before allocating
+constexpr int kMaxSide = kMaxImageSide;  // refuses absurd headers before allocating
 // The largest file read as an image: twice the pixels of the largest image
 // (an uncompressed PNG or a PGM of it is a little over one byte a pixel). A
 // bigger file (a video, a disk image under a frame's name) is refused by its

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "lumavel/host/csv_table.hpp"
+#include "lumavel/host/image_io.hpp"
 #include "lumavel/host/path_check.hpp"
 #include "lumavel/host/recording_error.hpp"
 #include "lumavel/host/yaml_text.hpp"
@@ -273,9 +274,11 @@ CameraSensor read_camera_yaml(const std::string& path) {
   c.rate_hz = read_rate(root, path, c.line.rate_hz);
   const YAML::Node res = require(root, "resolution", path);
   const std::vector<double> r = numbers(res, "resolution", 2, path);
-  if (r[0] < 1 || r[1] < 1 || r[0] > 16384 || r[1] > 16384 || r[0] != std::floor(r[0]) || r[1] != std::floor(r[1]))
+  if (r[0] < 1 || r[1] < 1 || r[0] > kMaxImageSide || r[1] > kMaxImageSide || r[0] != std::floor(r[0]) ||
+      r[1] != std::floor(r[1]))
     throw recording_error_at(path, line_of(res), "resolution: [" + format_double(r[0]) + ", " + format_double(r[1]) +
-                                                     "]: expected [width, height] in whole pixels, 1..16384");
+                                                     "]: expected [width, height] in whole pixels, 1.." +
+                                                     std::to_string(kMaxImageSide));
   // (was: refused at frame 0, "cannot bin to the working resolution", no rule said)
   if (const std::string why = why_too_many_pixels(r[0], r[1]); !why.empty())
     throw recording_error_at(path, line_of(res),

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "lumavel/host/cli.hpp"
+#include "lumavel/host/image_io.hpp"
 #include "lumavel/host/path_check.hpp"
 #include "lumavel/host/recording.hpp"
 #include "lumavel/host/rig.hpp"
@@ -124,7 +125,7 @@ void add_render_command(cli::Tool& tool) {
   c->add_option("OUT", a->out, "the recording folder to write (OUT/mav0)")->required()->type_name("")->check(cli::recording_out());
   c->add_option("--resolution", a->resolution, "camera resolution (the field of view is kept), e.g. 40x30")
       ->type_name("WxH")
-      ->check(cli::size_wxh(8192, 8192));
+      ->check(cli::size_wxh(kMaxImageSide, kMaxImageSide));
   c->add_option("--exposure", a->ov.exposure_frames,
                 "exposure time as a fraction of the frame period, 0.." + cli::number_text(kMaxExposureFrames) +
                     " (0 = instant)")
@@ -145,9 +146,12 @@ void add_render_command(cli::Tool& tool) {
   c->add_option("--seed", a->ov.seed, "seed of pixel noise, fixed patterns, gyro noise and random frame drops, >= 0")
       ->type_name("N")
       ->check(cli::whole_number_in(0, 9007199254740992LL));
-  c->add_option("--duration", a->ov.duration_s, "length in seconds, (0, 1e6] (the last segment continues if longer)")
+  c->add_option("--duration", a->ov.duration_s,
+                "length in seconds, " + cli::number_text(render::kMinDurationS) + ".." +
+                    cli::number_text(render::kMaxDurationS) +
+                    " as the scenario's duration_s (the last segment continues if longer)")
       ->type_name("S")
-      ->check(cli::positive_number_up_to(1e6));
+      ->check(cli::number_in(render::kMinDurationS, render::kMaxDurationS));
   c->add_option("--threads", a->opt.threads, "worker threads, 1..256 (default 2)")
       ->type_name("N")
       ->check(cli::whole_number_in(1, 256));

@@ -3,6 +3,7 @@
 #include "lumavel/host/render/scenario_loader.hpp"
 
 #include "lumavel/host/decimal_text.hpp"
+#include "lumavel/host/image_io.hpp"
 #include "lumavel/host/lens_distortion.hpp"
 #include "lumavel/host/render/photometric_presets.hpp"
 #include "lumavel/host/render/view_renderer.hpp"
@@ -262,7 +263,7 @@ void read_camera(const Reader& r, const YAML::Node& n, Scenario& s) {
                              "noise_sigma", "distortion", "photometric"});
   CameraSpec& c = s.camera;
   if (n["resolution"]) {
-    const auto v = r.list(n["resolution"], "resolution", 2, 1, 8192);
+    const auto v = r.list(n["resolution"], "resolution", 2, 1, kMaxImageSide);
     if (v[0] != std::floor(v[0]) || v[1] != std::floor(v[1]))
       r.fail(n["resolution"], "'resolution' must be two whole numbers [width, height]");
     // (was: rendered, for hours at 8192x8192, then refused by run's check)
@@ -555,7 +556,7 @@ Scenario parse_scenario(const std::string& text, const std::string& name,
     Scenario s;
     s.file = name;
     if (root["description"]) s.description = r.text(root["description"], "description");
-    s.duration_s = r.req_num(root, "duration_s", 1e-3, 1e6, "scenario");
+    s.duration_s = r.req_num(root, "duration_s", kMinDurationS, kMaxDurationS, "scenario");
     const double seed = r.num(root, "seed", 1, 0, 9007199254740992.0);
     if (seed != std::floor(seed)) r.fail(root["seed"], "'seed' must be a whole number");
     s.seed = static_cast<uint64_t>(seed);

@@ -10,6 +10,12 @@
 
 namespace lumavel::host {
 
+// The largest width or height of a frame, in pixels: an image file's header
+// claiming more is refused before anything is allocated, and a sensor.yaml's
+// resolution, a scenario's and render --resolution are held to it (each side
+// 1..kMaxImageSide; the pixel count has its own limit, why_too_many_pixels).
+constexpr int kMaxImageSide = 16384;
+
 struct GrayImage {
   int width = 0;
   int height = 0;

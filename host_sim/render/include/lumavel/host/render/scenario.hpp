@@ -121,10 +121,15 @@ struct ImuSpec {
   double accel_noise_density = 0;    // m/s^2/sqrt(Hz)
 };
 
+// A scenario's duration_s, given in the file or by render --duration: one
+// rule for both (was: the file took [1e-3, 1e6] s, the option (0, 1e6] s).
+constexpr double kMinDurationS = 1e-3;
+constexpr double kMaxDurationS = 1e6;
+
 struct Scenario {
   std::string file;  // where it was read from (messages)
   std::string description;
-  double duration_s = 4;
+  double duration_s = 4;  // kMinDurationS..kMaxDurationS
   uint64_t seed = 1;
   int64_t start_ns = 1000000000;  // timestamp of scenario time 0
   double groundtruth_rate_hz = 200;
