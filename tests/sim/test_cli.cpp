@@ -924,8 +924,10 @@ TEST(Cli, ARenderThatFailsPartWayLeavesNoRecording) {
   CHECK(!exists(dir.path() + "/out/mav0"));
 }
 
-// A scenario that loads but renders a recording run refuses (here no
-// baseline) fails the render with run's reason, naming the sensor.yaml.
+// A scenario that loads but describes a recording run refuses (here no
+// baseline) fails the render with run's reason, naming the sensor.yaml, and
+// before a frame is rendered (was: the whole render, then 'out/mav0 was
+// written, but lumavel-sim run refuses it', the recording left behind).
 TEST(Cli, RenderRefusesARecordingThatRunWouldRefuse) {
   std::string s = fixture::read_text(LUMAVEL_SOURCE_DIR "/host_sim/scenarios/paper_sim_aligned.yaml");
   const size_t at = s.find("baseline_m:");
@@ -934,8 +936,43 @@ TEST(Cli, RenderRefusesARecordingThatRunWouldRefuse) {
   fixture::write_text(dir.path() + "/b0.yaml", s);
   const Outcome r = sim("render b0.yaml out --resolution 40x30 --duration 0.2 -q");
   LONGS_EQUAL(1, r.code);
-  STRCMP_CONTAINS("out/mav0 was written, but lumavel-sim run refuses it: out/mav0/cam0/sensor.yaml:", r.err.c_str());
-  STRCMP_CONTAINS("(no baseline)", r.err.c_str());
+  STRCMP_CONTAINS("b0.yaml: the recording it describes is one lumavel-sim run refuses (nothing rendered): "
+                  "out/mav0/cam0/sensor.yaml: T_BS: cam0 and cam1 are less than 0.1 mm apart along body x (no baseline)",
+                  r.err.c_str());
+  CHECK(!exists(dir.path() + "/out/mav0"));
+}
+
+// The same before the render for the frames and the gyro: a duration that
+// ends before the first gyro sample (offset_s 1.3 ms) rendered the frames,
+// then refused them, leaving out/mav0 behind; a gyro offset beyond the
+// duration likewise; a sensor narrower than the kernels need; a view whose
+// pixels come out more than 2:1 out of square.
+TEST(Cli, RenderRefusesBeforeRenderingWhatRunWouldRefuse) {
+  const std::string scenario = LUMAVEL_SOURCE_DIR "/host_sim/scenarios/paper_sim_aligned.yaml";
+  Outcome r = sim("render '" + scenario + "' out --resolution 40x30 --duration 0.001 -q");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("paper_sim_aligned.yaml: the recording it describes is one lumavel-sim run refuses (nothing "
+                  "rendered): out/mav0/imu0/data.csv:2: no gyro samples",
+                  r.err.c_str());
+  CHECK(!exists(dir.path() + "/out/mav0"));
+  std::string s = fixture::read_text(scenario);
+  const size_t at = s.find("  rate_hz: 200");
+  CHECK(at != std::string::npos);
+  s.insert(at, "  offset_s: 100\n");
+  fixture::write_text(dir.path() + "/late.yaml", s);
+  r = sim("render late.yaml out --resolution 40x30 -q");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("late.yaml: the recording it describes is one lumavel-sim run refuses (nothing rendered): "
+                  "out/mav0/imu0/data.csv:2: no gyro samples",
+                  r.err.c_str());
+  r = sim("render '" + scenario + "' out --resolution 4x3 -q");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("out/mav0/cam0/sensor.yaml: resolution: the sensor is 4 columns wide", r.err.c_str());
+  r = sim("render '" + scenario + "' out --resolution 16384x1 -q");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("(nothing rendered): out/mav0/cam0/sensor.yaml: intrinsics: fu = ", r.err.c_str());
+  STRCMP_CONTAINS("fv/fu must be 0.5..2", r.err.c_str());
+  CHECK(!exists(dir.path() + "/out/mav0"));
 }
 
 // A scenario's duration_s and render --duration are one rule (was: the file

@@ -212,6 +212,24 @@ void count_gaps(Recording& rec) {
   }
 }
 
+// Refuses a ground truth whose samples give V at none of the frames (in
+// another time unit, of another recording): present, it would be read as
+// "no frame has ground truth" (was: exit 0, no figures, the file unused).
+void check_groundtruth_coverage(const Recording& rec, const std::string& gt_csv, const std::string& cam_csv) {
+  std::vector<uint64_t> t;
+  t.reserve(rec.frames.size());
+  for (const FramePairEntry& f : rec.frames) t.push_back(f.t_ns);
+  const std::vector<double> v = true_forward_velocity(rec.groundtruth, t);
+  if (std::any_of(v.begin(), v.end(), [](double x) { return !std::isnan(x); })) return;
+  throw recording_error_in(gt_csv, "the ground-truth samples (t = " + std::to_string(rec.groundtruth.front().t_ns) +
+                                       " .. " + std::to_string(rec.groundtruth.back().t_ns) +
+                                       " ns) cover none of the frames of " + cam_csv + " (t = " +
+                                       std::to_string(t.front()) + " .. " + std::to_string(t.back()) +
+                                       " ns): no frame can be compared (remove the file for a run without ground truth)");
+}
+
+}  // namespace
+
 // Counts the frames whose interval the gyro's span does not hold; refuses a
 // gyro that covers none (stopped before the first frame, started after the
 // last, or 1000 s away): no heading change could be measured at all.
@@ -233,24 +251,6 @@ void check_gyro_coverage(Recording& rec, const std::string& imu_csv, const std::
                                           " (t = " + std::to_string(f.front().t_ns) + " .. " +
                                           std::to_string(f.back().t_ns) + " ns): no heading change can be measured");
 }
-
-// Refuses a ground truth whose samples give V at none of the frames (in
-// another time unit, of another recording): present, it would be read as
-// "no frame has ground truth" (was: exit 0, no figures, the file unused).
-void check_groundtruth_coverage(const Recording& rec, const std::string& gt_csv, const std::string& cam_csv) {
-  std::vector<uint64_t> t;
-  t.reserve(rec.frames.size());
-  for (const FramePairEntry& f : rec.frames) t.push_back(f.t_ns);
-  const std::vector<double> v = true_forward_velocity(rec.groundtruth, t);
-  if (std::any_of(v.begin(), v.end(), [](double x) { return !std::isnan(x); })) return;
-  throw recording_error_in(gt_csv, "the ground-truth samples (t = " + std::to_string(rec.groundtruth.front().t_ns) +
-                                       " .. " + std::to_string(rec.groundtruth.back().t_ns) +
-                                       " ns) cover none of the frames of " + cam_csv + " (t = " +
-                                       std::to_string(t.front()) + " .. " + std::to_string(t.back()) +
-                                       " ns): no frame can be compared (remove the file for a run without ground truth)");
-}
-
-}  // namespace
 
 Recording load_recording(const std::string& dir_arg) {
   Recording rec;

@@ -3,6 +3,9 @@
 namespace lumavel::host {
 
 RecordingError recording_error_at(const std::string& file, long line, const std::string& what) {
+  // Line 0: a value not read from a file (CameraSensor::Lines), e.g. the
+  // sensor.yaml a render is about to write: the file alone.
+  if (line <= 0) return recording_error_in(file, what);
   return RecordingError(file + ":" + std::to_string(line) + ": " + what);
 }
 

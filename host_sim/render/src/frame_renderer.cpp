@@ -36,20 +36,24 @@ FrameRenderer::FrameRenderer(const Scenario& s, const Scene& scene)
                        s.camera.height, frame_time(0), s.duration_s);
 }
 
-int64_t FrameRenderer::frame_stamp_ns(int i) const {
-  return s_.start_ns + static_cast<int64_t>(std::llround(s_.camera.first_frame_s * 1e9)) +
-         static_cast<int64_t>(i) * period_ns_;
+int64_t frame_stamp_ns(const Scenario& s, int i) {
+  return s.start_ns + static_cast<int64_t>(std::llround(s.camera.first_frame_s * 1e9)) +
+         static_cast<int64_t>(i) * static_cast<int64_t>(std::llround(1e9 / s.camera.rate_hz));
 }
+
+int frame_count(const Scenario& s) {
+  int n = 0;
+  while (static_cast<double>(frame_stamp_ns(s, n) - s.start_ns) * 1e-9 < s.duration_s) ++n;
+  return n;
+}
+
+int64_t FrameRenderer::frame_stamp_ns(int i) const { return render::frame_stamp_ns(s_, i); }
 
 double FrameRenderer::frame_time(int i) const {
   return static_cast<double>(frame_stamp_ns(i) - s_.start_ns) * 1e-9;
 }
 
-int FrameRenderer::frame_count() const {
-  int n = 0;
-  while (frame_time(n) < s_.duration_s) ++n;
-  return n;
-}
+int FrameRenderer::frame_count() const { return render::frame_count(s_); }
 
 // Enough sub-frames that no visible scene point moves more than 0.5 px
 // between two of them and that the blur profile errs by at most 0.5 % of an

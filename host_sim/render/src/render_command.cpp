@@ -15,10 +15,16 @@
 #include "lumavel/host/image_io.hpp"
 #include "lumavel/host/path_check.hpp"
 #include "lumavel/host/recording.hpp"
+#include "lumavel/host/recording_error.hpp"
+#include "lumavel/host/recording_layout.hpp"
 #include "lumavel/host/rig.hpp"
 #include "lumavel/host/rig_settings_check.hpp"
 #include "lumavel/host/sensor_yaml.hpp"
+#include "lumavel/host/render/frame_renderer.hpp"
 #include "lumavel/host/render/recording_renderer.hpp"
+#include "lumavel/host/render/sensor_synthesis.hpp"
+#include "lumavel/host/render/stereo_rig.hpp"
+#include "lumavel/host/render/trajectory.hpp"
 #include "lumavel/host/render/photometric_presets.hpp"
 #include "lumavel/host/render/scenario_loader.hpp"
 
@@ -33,6 +39,42 @@ const char* const kDescription =
     "documented in host_sim/scenarios/README.md. Progress goes to standard error:\n"
     "a bar on a terminal, otherwise a line every few seconds; at the end a summary\n"
     "(frames, drops, samples, background seen) goes to standard output.";
+
+// What run would refuse of the recording, checked before the first frame is
+// rendered on what the render is about to write: its frame times (drops
+// taken out), its gyro samples and its rig (sensor.yaml values), by run's own
+// rules. A scenario with every frame dropped, no gyro sample within its
+// duration (imu offset_s), no baseline or a view the core cannot take was
+// rendered whole, then refused (was: up to hours of frames for nothing; the
+// check of the written recording, check_runnable, still follows the render).
+void check_before_render(const render::Scenario& s, const std::string& out) {
+  Recording rec;
+  rec.root = out + "/mav0";
+  const render::StereoRig rig(s.camera);
+  for (int c = 0; c < 2; ++c) rec.cam[c] = render::camera_sensor(s, rig, c);
+  rec.imu = render::imu_sensor(s);
+  const int n = render::frame_count(s);
+  const std::vector<bool> drop = render::dropped_frames(s, n);
+  for (int i = 0; i < n; ++i)
+    if (!drop[static_cast<size_t>(i)]) rec.frames.push_back({static_cast<uint64_t>(render::frame_stamp_ns(s, i)), {}});
+  rec.imu_samples = render::synthesize_imu(s, render::Trajectory(s.trajectory));
+  rec.frame_period_s = 1.0 / s.camera.rate_hz;
+  rec.imu_period_s = 1.0 / s.imu.rate_hz;
+  const std::string cam_csv = rec.root + "/" + layout::kCamDir[0] + "/data.csv";
+  const std::string imu_csv = rec.root + "/" + layout::kImuDir + "/data.csv";
+  try {
+    if (rec.frames.empty())
+      throw recording_error_at(cam_csv, 2, "no frames (" + std::to_string(n) + " before duration_s, all dropped)");
+    for (int c = 0; c < 2; ++c)
+      check_intrinsics(rec.cam[c], rec.root + "/" + layout::kCamDir[c] + "/sensor.yaml", 0);
+    if (rec.imu_samples.empty()) throw recording_error_at(imu_csv, 2, "no gyro samples");
+    check_gyro_coverage(rec, imu_csv, cam_csv);
+    check_rig_settings(rec, derive_settings(rec, default_working_size(rec)));
+  } catch (const RecordingError& e) {
+    throw render::ScenarioError(s.file + ": the recording it describes is one lumavel-sim run refuses (nothing "
+                                "rendered): " + e.what());
+  }
+}
 
 struct RenderArgs {
   std::string scenario, out;
@@ -56,6 +98,7 @@ int render_to_folder(RenderArgs& a) {
   render::apply_overrides(s, a.ov);
   // 10^10 frames hung counting them; 3e9 ended, after 25 s, in 'std::bad_alloc'.
   render::check_render_size(s);
+  check_before_render(s, a.out);
   const std::string mav0 = a.out + "/mav0";
   if (std::filesystem::exists(mav0)) {
     if (!a.force) throw std::runtime_error(mav0 + " already exists (use --force to replace it)");

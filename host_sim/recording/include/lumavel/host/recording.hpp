@@ -65,6 +65,14 @@ bool has_gaps(const GapReport& g);
 // line or frame of the first problem.
 Recording load_recording(const std::string& dir);
 
+// Counts the frames whose interval the gyro's samples do not hold (into
+// rec.gaps.frames_beyond_gyro); throws RecordingError naming `imu_csv` when
+// they hold none (stopped before the first frame, started after the last):
+// no heading change could be measured. Needs rec.frames, rec.imu_samples
+// (neither empty) and rec.imu_period_s; load_recording runs it, and render
+// on the recording it is about to write.
+void check_gyro_coverage(Recording& rec, const std::string& imu_csv, const std::string& cam_csv);
+
 // Whether writing `path` would overwrite what the recording is read from: a
 // file inside its folder (root), or one of its frames (data.csv may name
 // frames elsewhere). Outputs there are refused before a run.

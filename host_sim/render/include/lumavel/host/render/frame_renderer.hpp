@@ -24,6 +24,13 @@ struct FrameStats {
   double background_fraction = 0;
 };
 
+// Frame i's timestamp as written in the recording (start_ns + first_frame_s
+// + i periods, the period rounded to nanoseconds), and how many frames a
+// render of `s` makes (those mid-exposure before duration_s): the renderer's
+// and the checks before a render's one rule.
+int64_t frame_stamp_ns(const Scenario& s, int i);
+int frame_count(const Scenario& s);
+
 class FrameRenderer {
  public:
   FrameRenderer(const Scenario& s, const Scene& scene);
