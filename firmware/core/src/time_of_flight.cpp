@@ -159,7 +159,12 @@ bool TimeOfFlight::search(const TofTrackInput& in, int trail, int64_t want_ns, i
   }
   if (found) {
     // Timing uncertainty: the residual over the segment's step, in frames, times the step.
-    const uint32_t sig_q16 = fx::isqrt32(static_cast<uint32_t>(fx::div_q(out.res, best_dd, 32)));
+    // (res / dd in Q32 up to half a step squared; beyond, where the window's gate
+    // took the match, in Q16: at most kTofMaxPathResidualLong^2.)
+    bool wide = false;
+    const int32_t ratio_q32 = fx::div_q(out.res, best_dd, 32, &wide);
+    const uint32_t sig_q16 = wide ? fx::isqrt32(static_cast<uint32_t>(fx::div_q(out.res, best_dd, 16))) << 8
+                                  : fx::isqrt32(static_cast<uint32_t>(ratio_q32));
     out.sig_ns = (best_span * int64_t{sig_q16}) >> 16;
   }
   return found;
