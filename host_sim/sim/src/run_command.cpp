@@ -363,14 +363,14 @@ int run(const RunArgs& a) {
     if (hid_sink) hid_sink(e);
   };
 
-  OutputFile out(a.output == "-" ? std::string() : a.output);
+  OutputFile out(a.output == "-" ? std::string() : a.output, "the CSV");
   // The plot is opened before the run (a folder that does not exist fails
   // now, not after it) and both outputs are committed together: never a CSV
   // without the plot that was asked for.
   const std::string plot = a.plot.empty() ? default_plot_path(a) : a.plot;
   const bool want_plot = !rec.groundtruth.empty() || !a.plot.empty();
   std::unique_ptr<OutputFile> plot_out;
-  if (want_plot) plot_out = std::make_unique<OutputFile>(plot_to_stdout ? std::string() : plot);
+  if (want_plot) plot_out = std::make_unique<OutputFile>(plot_to_stdout ? std::string() : plot, "the plot");
 
   std::unique_ptr<cli::Progress> bar;
   if (!a.quiet) bar = std::make_unique<cli::Progress>(static_cast<long>(rec.frames.size()), "run");
@@ -392,8 +392,10 @@ int run(const RunArgs& a) {
     const std::string svg = track_svg(result.track, recording_name(a.rec) + ": V_xb, " + engine_name(options.engine) +
                                                         " engine, " + std::to_string(result.width) + "x" +
                                                         std::to_string(result.height));
-    if (std::fwrite(svg.data(), 1, svg.size(), plot_out->get()) != svg.size())
-      throw std::runtime_error((plot_to_stdout ? std::string("standard output") : plot) + ": cannot write the plot");
+    plot_out->write(svg);
+    // Both outputs checked before either is moved into place: a CSV that
+    // could not be written left the plot behind as if the run had succeeded.
+    out.check();
     plot_out->commit();
   }
   out.commit();

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -101,6 +102,22 @@ std::string Tool::path_of(const CLI::App* sub) const {
   return path;
 }
 
+namespace {
+
+// "" when all that was written to standard output went out; otherwise
+// "standard output: write error: REASON" (the reason of the flush that
+// failed; stdio keeps only a flag for a failure inside an earlier write).
+std::string stdout_write_error() {
+  std::cout.flush();
+  errno = 0;
+  const bool flushed = std::fflush(stdout) == 0;
+  const int err = errno;
+  if (flushed && std::cout && !std::ferror(stdout)) return "";
+  return std::string("standard output: write error") + (!flushed && err != 0 ? ": " + std::string(std::strerror(err)) : "");
+}
+
+}  // namespace
+
 int Tool::run(int argc, const char* const* argv) {
   // The deepest command named so far: messages and help hints are its own.
   auto deepest = [this] {
@@ -122,8 +139,8 @@ int Tool::run(int argc, const char* const* argv) {
     // As a command's output: help lost on its way (a full disk, a closed
     // standard output) was exit 0, nothing said.
     std::cout.flush();
-    if (!std::cout || std::fflush(stdout) != 0 || std::ferror(stdout)) {
-      std::fprintf(stderr, "%s: error: standard output: write error\n", path_of(deepest()).c_str());
+    if (const std::string why = stdout_write_error(); !why.empty()) {
+      std::fprintf(stderr, "%s: error: %s\n", path_of(deepest()).c_str(), why.c_str());
       return kExitFailure;
     }
     return status;
@@ -145,7 +162,7 @@ int Tool::run(int argc, const char* const* argv) {
     try {
       const int status = action();
       // Output lost on its way (a full disk) is a failure, not exit 0.
-      if (std::fflush(stdout) != 0 || std::ferror(stdout)) throw std::runtime_error("standard output: write error");
+      if (const std::string why = stdout_write_error(); !why.empty()) throw std::runtime_error(why);
       return status;
     } catch (const UsageError& e) {
       const std::string who = path_of(sub);
