@@ -11,6 +11,7 @@
 #include "lumavel/host/calibrate.hpp"
 #include "lumavel/host/cli.hpp"
 #include "lumavel/host/device_setup_from_rig.hpp"
+#include "lumavel/host/output_file.hpp"
 #include "lumavel/host/path_check.hpp"
 #include "lumavel/host/progress.hpp"
 #include "lumavel/host/rig.hpp"
@@ -144,12 +145,9 @@ int calibrate(CalibrateArgs& a) {
   const DeviceSetup setup = device_setup_from_recording(rec, write_size, c.misalignment);
   const std::string text = "# lumavel device configuration for " + a.rec + " (lumavel-sim calibrate --write)\n" +
                            "# send with: lumavel-read config set --file " + a.write_path + "\n" + format_setup(setup);
-  std::string why;
-  std::FILE* out = open_for_writing(a.write_path, "wb", why);  // a FIFO nobody reads: refused, not waited on
-  if (!out) throw std::runtime_error(a.write_path + ": cannot write the configuration file: " + why);
-  const bool written = std::fwrite(text.data(), 1, text.size(), out) == text.size();
-  if (std::fclose(out) != 0 || !written)
-    throw std::runtime_error(a.write_path + ": cannot write the configuration file: " + std::strerror(errno));
+  // A FIFO nobody reads: refused, not waited on. A file that cannot be
+  // written whole is not left half-written, to be sent to a board.
+  write_file(a.write_path, text, "the configuration file");
   std::printf("wrote %s (%dx%d working, lens tables: %s); send to a board: lumavel-read config set --file %s\n",
               a.write_path.c_str(), setup.config.width, setup.config.height,
               setup.config.lens == 0 ? "none, pinhole" : setup.config.lens == 3 ? "both cameras" : "one camera",

@@ -55,9 +55,8 @@ RecordingWriter::~RecordingWriter() {
 
 void RecordingWriter::open_stream(Stream& s, const std::string& dir, const std::string& head) {
   s.path = dir + "/data.csv";
-  s.out.open(s.path, std::ios::out | std::ios::trunc);
-  if (!s.out) throw recording_error_in(s.path, "cannot create");
-  s.out << head << '\n';
+  s.out = std::make_unique<OutputFile>(s.path, "the table");
+  s.out->write(head + '\n');
 }
 
 void RecordingWriter::check_order(Stream& s, uint64_t t_ns) {
@@ -89,7 +88,7 @@ void RecordingWriter::add_frame_pair_written(uint64_t t_ns) {
   for (int c = 0; c < 2; ++c) {
     check_order(cam_csv_[c], t_ns);
     const std::string name = std::to_string(t_ns) + (format_ == ImageFormat::kPng ? ".png" : ".pgm");
-    cam_csv_[c].out << t_ns << ',' << name << '\n';
+    cam_csv_[c].out->write(std::to_string(t_ns) + ',' + name + '\n');
   }
 }
 
@@ -98,11 +97,11 @@ void RecordingWriter::add_imu(uint64_t t_ns, const double w[3], const double a[3
   std::string row = std::to_string(t_ns);
   for (int k = 0; k < 3; ++k) row += "," + format_double(w[k]);
   for (int k = 0; k < 3; ++k) row += "," + format_double(a[k]);
-  imu_csv_.out << row << '\n';
+  imu_csv_.out->write(row + '\n');
 }
 
 void RecordingWriter::add_groundtruth(const GroundTruthSample& g) {
-  if (!gt_csv_.out.is_open()) {
+  if (!gt_csv_.out) {
     const std::string dir = root_ + "/" + layout::kGroundTruthDir;
     make_dirs(dir);
     // EuRoC spells this header "#timestamp, p_RS_R_x [m], ..." (comma-space).
@@ -116,7 +115,7 @@ void RecordingWriter::add_groundtruth(const GroundTruthSample& g) {
   const int sizes[5] = {3, 4, 3, 3, 3};
   for (int k = 0; k < 5; ++k)
     for (int i = 0; i < sizes[k]; ++i) row += "," + format_double(groups[k][i]);
-  gt_csv_.out << row << '\n';
+  gt_csv_.out->write(row + '\n');
 }
 
 void RecordingWriter::finish() {
@@ -124,9 +123,7 @@ void RecordingWriter::finish() {
   finished_ = true;
   Stream* streams[4] = {&cam_csv_[0], &cam_csv_[1], &imu_csv_, &gt_csv_};
   for (Stream* s : streams) {
-    if (!s->out.is_open()) continue;
-    s->out.close();
-    if (!s->out) throw recording_error_in(s->path, "write error");
+    if (s->out) s->out->commit();
   }
 }
 

@@ -14,6 +14,7 @@
 
 #include "lumavel/host/csv_table.hpp"
 #include "lumavel/host/image_io.hpp"
+#include "lumavel/host/output_file.hpp"
 #include "lumavel/host/path_check.hpp"
 #include "lumavel/host/recording_error.hpp"
 #include "lumavel/host/yaml_text.hpp"
@@ -243,12 +244,7 @@ std::string pose_text(const Pose& p) {
   return s + "]\n";
 }
 
-void write_text(const std::string& path, const std::string& text) {
-  std::ofstream out(path);
-  out << text;
-  out.close();
-  if (!out) throw recording_error_in(path, "cannot write");
-}
+void write_text(const std::string& path, const std::string& text) { write_file(path, text, "the sensor.yaml"); }
 
 }  // namespace
 

@@ -6,6 +6,7 @@
 #include <set>
 #include <sstream>
 
+#include "lumavel/host/output_file.hpp"
 #include "lumavel/host/render/recording_renderer.hpp"
 #include "lumavel/host/render/scenario_loader.hpp"
 
@@ -56,7 +57,9 @@ CachedRender render_cached(const std::string& scenario_path, const std::string& 
   render::RenderOptions ro;
   ro.threads = threads;
   const render::RenderSummary sum = render::render_recording(s, dir, ro);
-  std::ofstream(stamp_path(dir)) << stamp;
+  // Without its stamp a render is done again next time; a stamp that cannot
+  // be written is a failing disk, said now rather than ignored.
+  write_file(stamp_path(dir), stamp, "the render's stamp");
   std::lock_guard<std::mutex> lock(g_mu);
   g_rendered_here.insert(dir);
   ++g_tally.rendered;

@@ -13,6 +13,7 @@
 
 #include "lumavel/core/status.hpp"
 #include "lumavel/host/cli.hpp"
+#include "lumavel/host/output_file.hpp"
 #include "lumavel/host/path_check.hpp"
 #include "lumavel/host/recording.hpp"
 #include "lumavel/host/render/frame_renderer.hpp"
@@ -285,12 +286,8 @@ int run(const Options& o) {
   info.machine = machine;
   // A FIFO nobody reads is refused after a short wait, as run's outputs are
   // (an ofstream waited in open() for ever, the studies done).
-  std::string cannot;
-  std::FILE* out = open_for_writing(o.doc, "w", cannot);
-  if (out == nullptr) throw std::runtime_error(shown_path(o.doc) + " (--doc): cannot write the page: " + cannot);
-  const std::string page = results_markdown(results, sections, info);
-  const bool written = std::fwrite(page.data(), 1, page.size(), out) == page.size();
-  if (std::fclose(out) != 0 || !written) throw std::runtime_error(shown_path(o.doc) + " (--doc): write error");
+  // A page that cannot be written whole leaves the earlier one in place.
+  write_file(o.doc, results_markdown(results, sections, info), "the page (--doc)");
   std::fprintf(stderr, "wrote %s (%s)\n", o.doc.c_str(), duration_text(info.seconds).c_str());
   return 0;
 }

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "lumavel/core/status.hpp"
+#include "lumavel/host/output_file.hpp"
 #include "svg_axis.hpp"
 
 namespace lumavel::host {
@@ -416,11 +417,7 @@ std::string track_svg(const std::vector<TrackPoint>& track, const std::string& t
 }
 
 void write_track_svg(const std::string& path, const std::vector<TrackPoint>& track, const std::string& title) {
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error(path + ": cannot create the plot: " + std::strerror(errno));
-  out << track_svg(track, title);
-  out.close();
-  if (!out) throw std::runtime_error(path + ": cannot write the plot: " + std::strerror(errno));
+  write_file(path, track_svg(track, title), "the plot");
 }
 
 }  // namespace lumavel::host

@@ -3,9 +3,10 @@
 // Rows are appended as they come; timestamps must increase per stream.
 #pragma once
 #include <cstdint>
-#include <fstream>
+#include <memory>
 #include <string>
 
+#include "lumavel/host/output_file.hpp"
 #include "lumavel/host/recording.hpp"
 
 namespace lumavel::host {
@@ -33,7 +34,9 @@ class RecordingWriter {
   void add_imu(uint64_t t_ns, const double w_rad_s[3], const double a_m_s2[3]);
   void add_groundtruth(const GroundTruthSample& g);  // creates the folder on first use
 
-  // Flushes and closes every data.csv; throws RecordingError on a write error.
+  // Flushes and closes every data.csv (each written under a temporary name
+  // and moved into place here); throws std::runtime_error "FILE: write
+  // error: REASON" on a write error (OutputFile), as add_* may.
   void finish();
 
   const std::string& root() const { return root_; }  // REC/mav0
@@ -41,7 +44,7 @@ class RecordingWriter {
  private:
   struct Stream {
     std::string path;
-    std::ofstream out;
+    std::unique_ptr<OutputFile> out;
     uint64_t last_t = 0;
     bool any = false;
   };
