@@ -56,6 +56,16 @@ rc=$?
 [ $rc -eq 1 ] || fail "stream -o FIFO nobody reads: exit $rc, expected 1: $(cat fifo.err)"
 grep -q "nobody.fifo: cannot create the CSV: is a FIFO (named pipe) that no process reads" fifo.err \
   || fail "stream -o FIFO: wrong message: $(cat fifo.err)"
+# stream -o /dev/full: the CSV header that cannot be written is the error,
+# before any device is looked for (was: exit 3 'no device', the loss unsaid).
+timeout 30 "$READ" stream --timeout 1 -o /dev/full > /dev/null 2> full.err
+rc=$?
+[ $rc -eq 1 ] || fail "stream -o /dev/full: exit $rc, expected 1: $(cat full.err)"
+grep -q "^lumavel-read stream: error: /dev/full: write error: No space left on device$" full.err \
+  || fail "stream -o /dev/full: wrong message: $(cat full.err)"
+grep -q "no lumavel device" full.err && fail "stream -o /dev/full looked for a device: $(cat full.err)"
+"$READ" replay run.hidrep -o /dev/full > /dev/null 2> rfull.err && fail "replay -o /dev/full exited 0"
+grep -q "/dev/full: write error: No space left on device" rfull.err || fail "replay -o /dev/full: $(cat rfull.err)"
 # `config set --file` checks the file before looking for a device: errors
 # name the file, the line and the key, exit 1, nothing sent.
 printf 'width=40\n# a comment\ntau_us=fast\n' > bad.cfg

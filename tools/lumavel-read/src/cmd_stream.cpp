@@ -32,10 +32,15 @@ void on_signal(int) { g_stop = 1; }
 // writes under a temporary name moved into place at the end, so that a
 // refused or failed replay leaves no file behind.
 struct Outputs {
-  std::unique_ptr<host::OutputFile> file;  // replay
-  std::unique_ptr<std::FILE, int (*)(std::FILE*)> growing{nullptr, std::fclose};  // stream
+  std::unique_ptr<host::OutputFile> file;  // -o FILE: in place (stream) or moved into place (replay)
   std::FILE* csv = nullptr;
   bool live = false;
+  // A CSV file that could not be written (a full disk, /dev/full) throws
+  // "FILE: write error: REASON" (was: stream went on, and ended in exit 3 'no
+  // device' or 0, the loss unsaid).
+  void check() const {
+    if (file) file->check();
+  }
 };
 
 void open_outputs(const StreamOptions& o, bool is_stream, Outputs& out) {
@@ -43,16 +48,10 @@ void open_outputs(const StreamOptions& o, bool is_stream, Outputs& out) {
   const bool tty = ::isatty(STDOUT_FILENO) != 0;
   const int forced = o.live ? 1 : o.no_live ? 0 : -1;
   if (!o.output.empty() && o.output != "-") {
-    if (is_stream) {
-      // A FIFO nobody reads is refused after a short wait (fopen waited for ever).
-      std::string why;
-      out.growing.reset(host::open_for_writing(o.output, "w", why));
-      if (!out.growing) throw std::runtime_error(o.output + ": cannot create the CSV: " + why);
-      out.csv = out.growing.get();
-    } else {
-      out.file = std::make_unique<host::OutputFile>(o.output);
-      out.csv = out.file->get();
-    }
+    // A FIFO nobody reads is refused after a short wait (fopen waited for ever).
+    out.file = std::make_unique<host::OutputFile>(
+        o.output, "the CSV", is_stream ? host::OutputFile::Placement::kInPlace : host::OutputFile::Placement::kReplaced);
+    out.csv = out.file->get();
     out.live = forced == -1 ? tty : forced == 1;
   } else {
     const bool csv_to_stdout = !allow_live || !tty || o.csv_on_tty || forced == 0;
@@ -71,6 +70,7 @@ int cmd_stream(const Common& c, const StreamOptions& o) {
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
   Sink sink(out.csv, out.live);
+  out.check();  // the header written before any device is looked for
   using Clock = std::chrono::steady_clock;
   auto last_data = Clock::now();
   auto timed_out = [&] {
@@ -110,6 +110,7 @@ int cmd_stream(const Common& c, const StreamOptions& o) {
           continue;
         }
         if (sink.take(buf, n, "from " + dev->path())) last_data = Clock::now();
+        if (out.csv != nullptr && std::ferror(out.csv)) out.check();
       }
       if (timed_out()) {
         std::fprintf(stderr, "%sno report from %s for %.1f s: giving up\n", out.live ? "\n" : "",
@@ -128,6 +129,7 @@ int cmd_stream(const Common& c, const StreamOptions& o) {
     }
   }
   sink.finish();
+  out.check();
   if (status == kExitOk && sink.malformed() > 0) status = kExitFailure;
   return status;
 }
