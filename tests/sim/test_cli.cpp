@@ -546,7 +546,7 @@ TEST(Cli, ReproducePageToAFifoNobodyReadsIsRefused) {
   CHECK(::mkfifo((dir.path() + "/page.md").c_str(), 0600) == 0);
   const Outcome r = sim("reproduce --only 'Real recording' --out out_r --doc page.md", 120);
   LONGS_EQUAL(1, r.code);
-  STRCMP_CONTAINS("lumavel-sim reproduce: error: page.md (--doc): cannot write the page: is a FIFO (named pipe) that "
+  STRCMP_CONTAINS("lumavel-sim reproduce: error: page.md: cannot create the page (--doc): is a FIFO (named pipe) that "
                   "no process reads (none came within 2 s)",
                   r.err.c_str());
 }
@@ -832,6 +832,36 @@ TEST(Cli, AReportFileThatCannotBeWrittenFailsTheRun) {
   const Outcome r = sim("run rec --quiet -o est.csv --hid file:/dev/full");
   LONGS_EQUAL(1, r.code);
   STRCMP_CONTAINS("/dev/full: cannot write the report file: No space left on device", r.err.c_str());
+}
+
+// An output that cannot be written says why (was: '/dev/full: write error'
+// and '/dev/full: cannot write the plot', no reason), and a CSV that cannot
+// be written leaves no plot behind (was: the plot moved into place, exit 1).
+TEST(Cli, AnOutputThatCannotBeWrittenSaysWhyAndLeavesNothing) {
+  rec();
+  Outcome r = sim("run rec --quiet -o /dev/full --plot p.svg");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("lumavel-sim run: error: /dev/full: write error: No space left on device\n", r.err.c_str());
+  CHECK(!exists(dir.path() + "/p.svg"));
+  r = sim("run rec --quiet -o est.csv --plot /dev/full");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("lumavel-sim run: error: /dev/full: write error: No space left on device\n", r.err.c_str());
+  CHECK(!exists(dir.path() + "/est.csv"));
+}
+
+// A recording that cannot be written names the file and the reason (was:
+// 'out/mav0/imu0/data.csv: write error', without it). Files of at most
+// 2 KiB (ulimit -f 2, SIGXFSZ ignored: writes then fail with EFBIG).
+TEST(Cli, ARecordingThatCannotBeWrittenSaysWhy) {
+  const std::string cmd = "cd '" + dir.path() + "' && sh -c \"trap '' XFSZ; ulimit -f 2; exec '" LUMAVEL_SIM_EXE
+                          "' render '" LUMAVEL_SOURCE_DIR "/host_sim/scenarios/paper_sim_aligned.yaml' out "
+                          "--resolution 40x30 --duration 0.3 -q\" 2>'" + dir.path() + "/stderr.txt'";
+  const int status = std::system(cmd.c_str());
+  CHECK(WIFEXITED(status));
+  LONGS_EQUAL(1, WEXITSTATUS(status));
+  STRCMP_CONTAINS("lumavel-sim render: error: out/mav0/imu0/data.csv: write error: File too large\n",
+                  fixture::read_text(dir.path() + "/stderr.txt").c_str());
+  CHECK(!exists(dir.path() + "/out/mav0"));
 }
 
 // A --hid-config file that is not a stored configuration is refused before
