@@ -562,9 +562,10 @@ std::vector<Case> slider_cases() {
   // As a recording's frame named by two rows (was: exit 0, the repeated frame read as a standstill).
   refused("image named twice", [=](const std::string& d) { line5(d + "/images.txt", [](const std::string& l) { return l.substr(0, l.find(' ')) + " images/frame_00000003.png"; }); },
           "images.txt", ":5: filename 'images/frame_00000003.png' is also the frame of line 4");
-  // Only the focal lengths' ratio was checked: written, exit 0, and run refused the recording.
+  // Only the focal lengths' ratio was checked: written, exit 0, and run refused the recording; then
+  // refused after the import, the recording left behind; now before anything is written.
   refused("calib fx fy 1e300", [=](const std::string& d) { write_text(d + "/calib.txt", "1e300 1e300 23.5 17.5 0 0 0 0 0\n"); },
-          "imported/mav0 was written, but lumavel-sim run refuses it", "cam0/sensor.yaml:18: intrinsics (at the working resolution): focal length fu");
+          "the recording it makes is one lumavel-sim run refuses (nothing written)", "cam0/sensor.yaml: intrinsics (at the working resolution): focal length fu");
   // The folder itself (was: '.../nowhere/images.txt: does not exist', as if only the file were missing).
   c.push_back({"import: dataset folder missing", "import", nullptr, Expect::kRefused, "/nowhere: does not exist", "", [](const std::string& d) { return d + "/nowhere"; }});
   c.push_back({"import: dataset folder a file", "import", nullptr, Expect::kRefused, "calib.txt: is a file, not a dataset folder", "", [](const std::string& d) { return d + "/calib.txt"; }});

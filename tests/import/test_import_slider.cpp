@@ -215,6 +215,26 @@ TEST(ImportSlider, AnExistingRecordingIsRefusedUnlessForced) {
   CHECK(std::filesystem::exists(tmp.path() + "/rec/mav0/data/images.txt"));
 }
 
+// What run would refuse of the recording is refused before anything is
+// written, by run's own checks (was: imported whole, then 'rec/mav0 was
+// written, but lumavel-sim run refuses it', the recording left behind).
+TEST(ImportSlider, WhatRunWouldRefuseIsRefusedBeforeWriting) {
+  fixture::TempDir tmp;
+  const std::string d = tmp.path() + "/data";
+  write_dataset(d);
+  fixture::write_text(d + "/calib.txt", "1e300 1e300 23.5 17.5 0 0 0 0 0\n");
+  try {
+    import_slider(d, tmp.path() + "/rec");
+    FAIL("a focal length of 1e300 px was imported");
+  } catch (const RecordingError& e) {
+    STRCMP_CONTAINS((d + ": the recording it makes is one lumavel-sim run refuses (nothing written): " + tmp.path() +
+                     "/rec/mav0/cam0/sensor.yaml: intrinsics (at the working resolution): ")
+                        .c_str(),
+                    e.what());
+  }
+  CHECK_FALSE(std::filesystem::exists(tmp.path() + "/rec"));
+}
+
 TEST(ImportSlider, CommandLineRefusesABadBaseline) {
   const char* argv[] = {"import-slider", "a", "b", "--baseline", "-1"};
   LONGS_EQUAL(2, import_slider_main(5, const_cast<char**>(argv)));

@@ -14,6 +14,7 @@
 #include "lumavel/host/groundtruth.hpp"
 #include "lumavel/host/image_io.hpp"
 #include "lumavel/host/path_check.hpp"
+#include "lumavel/host/recording_layout.hpp"
 #include "lumavel/host/recording_writer.hpp"
 #include "lumavel/host/rig.hpp"
 #include "lumavel/host/rig_settings_check.hpp"
@@ -91,6 +92,44 @@ std::vector<GroundTruthSample> body_groundtruth(const std::vector<SliderPose>& p
   return out;
 }
 
+// The gyro's stamps: every imu period from the one at or before the first
+// frame to the one after the last.
+std::vector<uint64_t> imu_stamps(uint64_t t_first, uint64_t t_last, double rate_hz) {
+  const uint64_t period = to_ns(1.0 / rate_hz);
+  std::vector<uint64_t> t;
+  for (uint64_t s = t_first / period * period; s < t_last + period; s += period) t.push_back(s);
+  return t;
+}
+
+// What `run` would refuse of the recording about to be written, by run's own
+// checks (check_gyro_coverage, derive_settings, check_rig_settings) on the
+// values the sensor.yaml files and tables will hold, before anything is
+// written (was: imported whole, then 'OUT/mav0 was written, but lumavel-sim
+// run refuses it', the recording left behind). The check of the written
+// recording, check_runnable, still follows.
+void check_before_import(const std::string& data_dir, const std::string& out_rec, const CameraSensor& cam0,
+                         const CameraSensor& cam1, const ImuSensor& imu, const std::vector<uint64_t>& frame_t,
+                         const std::vector<GroundTruthSample>& truth) {
+  Recording rec;
+  rec.root = out_rec + "/mav0";
+  rec.cam[0] = cam0;
+  rec.cam[1] = cam1;
+  rec.imu = imu;
+  for (uint64_t t : frame_t) rec.frames.push_back({t, {}});
+  for (uint64_t t : imu_stamps(frame_t.front(), frame_t.back(), imu.rate_hz)) rec.imu_samples.push_back({t, {}, {}});
+  rec.groundtruth = truth;
+  set_periods(rec);
+  try {
+    for (int c = 0; c < 2; ++c) check_intrinsics(rec.cam[c], rec.root + "/" + layout::kCamDir[c] + "/sensor.yaml", 0);
+    check_gyro_coverage(rec, rec.root + "/" + layout::kImuDir + "/data.csv",
+                        rec.root + "/" + layout::kCamDir[0] + "/data.csv");
+    check_rig_settings(rec, derive_settings(rec, default_working_size(rec)));
+  } catch (const RecordingError& e) {
+    throw RecordingError(shown_path(data_dir) + ": the recording it makes is one lumavel-sim run refuses (nothing "
+                         "written): " + e.what());
+  }
+}
+
 }  // namespace
 
 ImportSliderSummary import_slider(const std::string& data_dir, const std::string& out_rec,
@@ -152,6 +191,9 @@ ImportSliderSummary import_slider(const std::string& data_dir, const std::string
   cam0.comment = "slider camera (Event-Camera Dataset), imported by lumavel-sim import-slider";
   cam1.comment = "cam0's frames time-shifted to the slider position x + " + std::to_string(h) +
                  " m (pixelwise blend of the two bracketing frames, weighted by position)";
+  std::vector<uint64_t> frame_t;
+  for (const ShiftedPair& p : pairs) frame_t.push_back(to_ns(d.frames[p.cam0].t));
+  check_before_import(data_dir, out_rec, cam0, cam1, imu, frame_t, truth);
   // Written over, an earlier recording kept its frames beside the new ones in
   // cam0/data and cam1/data and was lost without a word: refused, as render
   // refuses it, unless --force (then it is replaced whole).
@@ -188,11 +230,8 @@ ImportSliderSummary import_slider(const std::string& data_dir, const std::string
     sum.pairs = pairs.size();
 
     // Zero gyro (and gravity only) at imu_rate_hz, covering every frame.
-    const uint64_t period = to_ns(1.0 / options.imu_rate_hz);
-    const uint64_t t_first = to_ns(d.frames[pairs.front().cam0].t);
-    const uint64_t t_last = to_ns(d.frames[pairs.back().cam0].t);
     const double zero[3] = {0, 0, 0}, gravity[3] = {0, 0, 9.81};
-    for (uint64_t t = t_first / period * period; t < t_last + period; t += period) {
+    for (uint64_t t : imu_stamps(frame_t.front(), frame_t.back(), options.imu_rate_hz)) {
       out.add_imu(t, zero, gravity);
       ++sum.imu_samples;
     }

@@ -230,6 +230,16 @@ void check_groundtruth_coverage(const Recording& rec, const std::string& gt_csv,
 
 }  // namespace
 
+void set_periods(Recording& rec) {
+  std::vector<uint64_t> t;
+  t.reserve(rec.frames.size());
+  for (const FramePairEntry& f : rec.frames) t.push_back(f.t_ns);
+  rec.frame_period_s = rec.frames.size() >= 2 ? median_interval_s(t) : 1.0 / rec.cam[0].rate_hz;
+  t.clear();
+  for (const ImuSample& s : rec.imu_samples) t.push_back(s.t_ns);
+  rec.imu_period_s = rec.imu_samples.size() >= 2 ? median_interval_s(t) : 1.0 / rec.imu.rate_hz;
+}
+
 // Counts the frames whose interval the gyro's span does not hold; refuses a
 // gyro that covers none (stopped before the first frame, started after the
 // last, or 1000 s away): no heading change could be measured at all.
@@ -293,13 +303,7 @@ Recording load_recording(const std::string& dir_arg) {
 
   for (int c = 0; c < 2; ++c) check_first_frame(rec.frames.front().path[c], c, rec.cam[c], yaml[c]);
 
-  std::vector<uint64_t> t;
-  t.reserve(rec.frames.size());
-  for (const FramePairEntry& f : rec.frames) t.push_back(f.t_ns);
-  rec.frame_period_s = rec.frames.size() >= 2 ? median_interval_s(t) : 1.0 / rec.cam[0].rate_hz;
-  t.clear();
-  for (const ImuSample& s : rec.imu_samples) t.push_back(s.t_ns);
-  rec.imu_period_s = rec.imu_samples.size() >= 2 ? median_interval_s(t) : 1.0 / rec.imu.rate_hz;
+  set_periods(rec);
   count_gaps(rec);
   check_gyro_coverage(rec, imu_csv, c0.csv);
   if (!rec.groundtruth.empty()) check_groundtruth_coverage(rec, gt_csv, c0.csv);

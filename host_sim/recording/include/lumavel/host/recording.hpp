@@ -65,6 +65,11 @@ bool has_gaps(const GapReport& g);
 // line or frame of the first problem.
 Recording load_recording(const std::string& dir);
 
+// Sets rec.frame_period_s and rec.imu_period_s as load_recording does: the
+// median interval of rec.frames and of rec.imu_samples (1 / rate_hz for a
+// single one). For a recording about to be written (import-slider).
+void set_periods(Recording& rec);
+
 // Counts the frames whose interval the gyro's samples do not hold (into
 // rec.gaps.frames_beyond_gyro); throws RecordingError naming `imu_csv` when
 // they hold none (stopped before the first frame, started after the last):
