@@ -20,6 +20,7 @@ set(_rec ${PROJECT_SOURCE_DIR}/host_sim/recording)
 set(_srcs ${_rec}/src/csv_table.cpp ${_rec}/src/sensor_yaml.cpp ${_rec}/src/image_io.cpp
           ${_rec}/src/recording_error.cpp ${PROJECT_SOURCE_DIR}/tools/common/cli/src/path_check.cpp
           ${PROJECT_SOURCE_DIR}/tools/common/cli/src/decimal_text.cpp ${PROJECT_SOURCE_DIR}/tools/common/cli/src/line_ends.cpp
+          ${PROJECT_SOURCE_DIR}/tools/common/cli/src/output_file.cpp
           ${CMAKE_CURRENT_SOURCE_DIR}/fuzz_recording_reader.cpp)
 file(GLOB _hdrs ${_rec}/include/lumavel/host/*.hpp)
 set(_bin ${CMAKE_CURRENT_BINARY_DIR}/fuzz_recording_reader)
