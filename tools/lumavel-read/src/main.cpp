@@ -44,7 +44,11 @@ cli::Action with_device_errors(const std::string& command, std::function<int()> 
 }
 
 void add_stream_options(CLI::App* c, StreamOptions& o, bool live_options) {
-  c->add_option("-o,--output", o.output, "write the CSV to FILE (nothing is left behind if it\ncannot be written)")
+  // stream writes its CSV in place, so that it can be followed as it grows: a
+  // write error ends it with exit 1 and leaves the rows written until then.
+  c->add_option("-o,--output", o.output,
+                live_options ? "write the CSV to FILE as it comes (a write error ends the stream\nwith exit 1; the rows before it stay)"
+                             : "write the CSV to FILE (nothing is left behind if it\ncannot be written)")
       ->type_name("FILE")
       ->check(cli::path_name());
   // 0 is the default's "no limit" inside: given, it asked for no measurement
