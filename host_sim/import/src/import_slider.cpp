@@ -14,7 +14,6 @@
 #include "lumavel/host/groundtruth.hpp"
 #include "lumavel/host/image_io.hpp"
 #include "lumavel/host/path_check.hpp"
-#include "lumavel/host/recording_layout.hpp"
 #include "lumavel/host/recording_writer.hpp"
 #include "lumavel/host/rig.hpp"
 #include "lumavel/host/rig_settings_check.hpp"
@@ -102,9 +101,8 @@ std::vector<uint64_t> imu_stamps(uint64_t t_first, uint64_t t_last, double rate_
 }
 
 // What `run` would refuse of the recording about to be written, by run's own
-// checks (check_gyro_coverage, derive_settings, check_rig_settings) on the
-// values the sensor.yaml files and tables will hold, before anything is
-// written (was: imported whole, then 'OUT/mav0 was written, but lumavel-sim
+// checks (check_runnable_unwritten) on the values the sensor.yaml files and
+// tables will hold, before anything is written (was: imported whole, then 'OUT/mav0 was written, but lumavel-sim
 // run refuses it', the recording left behind). The check of the written
 // recording, check_runnable, still follows.
 void check_before_import(const std::string& data_dir, const std::string& out_rec, const CameraSensor& cam0,
@@ -120,10 +118,7 @@ void check_before_import(const std::string& data_dir, const std::string& out_rec
   rec.groundtruth = truth;
   set_periods(rec);
   try {
-    for (int c = 0; c < 2; ++c) check_intrinsics(rec.cam[c], rec.root + "/" + layout::kCamDir[c] + "/sensor.yaml", 0);
-    check_gyro_coverage(rec, rec.root + "/" + layout::kImuDir + "/data.csv",
-                        rec.root + "/" + layout::kCamDir[0] + "/data.csv");
-    check_rig_settings(rec, derive_settings(rec, default_working_size(rec)));
+    check_runnable_unwritten(rec);
   } catch (const RecordingError& e) {
     throw RecordingError(shown_path(data_dir) + ": the recording it makes is one lumavel-sim run refuses (nothing "
                          "written): " + e.what());

@@ -4,8 +4,10 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "lumavel/host/recording_error.hpp"
 #include "lumavel/host/recording_layout.hpp"
 #include "lumavel/host/rig.hpp"
+#include "lumavel/host/sensor_yaml.hpp"
 
 namespace lumavel::host {
 
@@ -79,6 +81,15 @@ void check_rig_settings(const Recording& rec, const EstimatorSettings& s) {
     const std::string where = e.setting() == "kernels" ? kernels_source(rec, s) : setting_source(rec, e.setting());
     throw RecordingError(where + ": " + e.what());
   }
+}
+
+void check_runnable_unwritten(Recording& rec) {
+  const std::string cam_csv = rec.root + "/" + layout::kCamDir[0] + "/data.csv";
+  const std::string imu_csv = rec.root + "/" + layout::kImuDir + "/data.csv";
+  for (int c = 0; c < 2; ++c) check_intrinsics(rec.cam[c], rec.root + "/" + layout::kCamDir[c] + "/sensor.yaml", 0);
+  if (rec.imu_samples.empty()) throw recording_error_at(imu_csv, 2, "no gyro samples");
+  check_gyro_coverage(rec, imu_csv, cam_csv);
+  check_rig_settings(rec, derive_settings(rec, default_working_size(rec)));
 }
 
 void check_runnable(const std::string& out) {

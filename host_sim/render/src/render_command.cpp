@@ -40,7 +40,8 @@ const char* const kDescription =
     "a bar on a terminal, otherwise a line every few seconds; at the end a summary\n"
     "(frames, drops, samples, background seen) goes to standard output.";
 
-// What run would refuse of the recording, checked before the first frame is
+// What run would refuse of the recording (check_runnable_unwritten, with the
+// frames' own message first), checked before the first frame is
 // rendered on what the render is about to write: its frame times (drops
 // taken out), its gyro samples and its rig (sensor.yaml values), by run's own
 // rules. A scenario with every frame dropped, no gyro sample within its
@@ -60,16 +61,11 @@ void check_before_render(const render::Scenario& s, const std::string& out) {
   rec.imu_samples = render::synthesize_imu(s, render::Trajectory(s.trajectory));
   rec.frame_period_s = 1.0 / s.camera.rate_hz;
   rec.imu_period_s = 1.0 / s.imu.rate_hz;
-  const std::string cam_csv = rec.root + "/" + layout::kCamDir[0] + "/data.csv";
-  const std::string imu_csv = rec.root + "/" + layout::kImuDir + "/data.csv";
   try {
     if (rec.frames.empty())
-      throw recording_error_at(cam_csv, 2, "no frames (" + std::to_string(n) + " before duration_s, all dropped)");
-    for (int c = 0; c < 2; ++c)
-      check_intrinsics(rec.cam[c], rec.root + "/" + layout::kCamDir[c] + "/sensor.yaml", 0);
-    if (rec.imu_samples.empty()) throw recording_error_at(imu_csv, 2, "no gyro samples");
-    check_gyro_coverage(rec, imu_csv, cam_csv);
-    check_rig_settings(rec, derive_settings(rec, default_working_size(rec)));
+      throw recording_error_at(rec.root + "/" + layout::kCamDir[0] + "/data.csv", 2,
+                               "no frames (" + std::to_string(n) + " before duration_s, all dropped)");
+    check_runnable_unwritten(rec);
   } catch (const RecordingError& e) {
     throw render::ScenarioError(s.file + ": the recording it describes is one lumavel-sim run refuses (nothing "
                                 "rendered): " + e.what());

@@ -24,4 +24,12 @@ void check_rig_settings(const Recording& rec, const EstimatorSettings& s);
 // reason, when `run` at its default working size would.
 void check_runnable(const std::string& out);
 
+// The same rules before anything is written, on the recording about to be
+// written (render, import-slider): `rec` holds its cameras, frame and gyro
+// times and periods, at least one frame, and rec.root the mav0 folder it
+// will be written to (for the messages). Checks the intrinsics, that there
+// are gyro samples and that they cover the frames, and the rig's settings;
+// throws RecordingError "FILE: rule" as run would on reading it.
+void check_runnable_unwritten(Recording& rec);
+
 }  // namespace lumavel::host
