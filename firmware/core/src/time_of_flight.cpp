@@ -77,8 +77,10 @@ const TofFrame& TimeOfFlight::at(uint16_t back) const {
 }
 
 bool TimeOfFlight::search(const TofTrackInput& in, int trail, int64_t want_ns, int64_t min_ns, int64_t max_ns,
-                          bool window, Candidate& out) const {
+                          Candidate& out) const {
   const int lead = 1 - trail;
+  // Never for an acquisition (kTofWindowGateFrames: a periodic scene's aliases).
+  const bool window = want_ns > 0 && track_frames_ >= kTofWindowGateFrames;
   const TofFrame& now = at(0);
   const TofFrame& before = at(1);
   // The trail camera's own change since its previous frame, Q48.
@@ -184,8 +186,7 @@ TofResult TimeOfFlight::track(const TofTrackInput& in) {
     Candidate c{};
     const int trail = track_ns_ > 0 ? 0 : 1;
     const int64_t want = abs64(track_ns_), g = gate_ns(want, frame_ns);
-    const bool window = track_frames_ >= kTofWindowGateFrames;
-    if (search(in, trail, want, want - g, want + g, window, c) && abs64(abs64(c.stau_ns) - want) < g) {
+    if (search(in, trail, want, want - g, want + g, c) && abs64(abs64(c.stau_ns) - want) < g) {
       pick = c;
       have = true;
       if (track_frames_ < 255) ++track_frames_;
@@ -222,7 +223,7 @@ TofResult TimeOfFlight::track(const TofTrackInput& in) {
         max_ns = std::min<int64_t>(max_ns, kTofMaxTauNs);
         if (min_ns >= max_ns) continue;  // no hint in this direction
         Candidate c{};
-        if (!search(in, trail, 0, min_ns, max_ns, false, c)) continue;
+        if (!search(in, trail, 0, min_ns, max_ns, c)) continue;
         const SpeedQ16 v = speed_of(in.baseline, c.stau_ns > 0 ? 1 : -1, abs64(c.stau_ns));
         bool agrees = !g;
         for (int64_t h : hints)

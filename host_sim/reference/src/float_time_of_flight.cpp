@@ -31,8 +31,9 @@ void FloatTimeOfFlight::push(const FloatTofFrame& frame) {
 const FloatTofFrame& FloatTimeOfFlight::at(size_t back) const { return ring_[ring_.size() - 1 - back]; }
 
 bool FloatTimeOfFlight::search(int trail, double max_rotation, double want_ns, double min_ns, double max_ns,
-                               bool window, Candidate& out) const {
+                               Candidate& out) const {
   const int lead = 1 - trail;
+  const bool window = want_ns > 0 && track_frames_ >= kTofWindowGateFrames;  // (the core's comment)
   const FloatTofFrame& now = at(0);
   const FloatTofFrame& before = at(1);
   const double motion = (now.f[trail] - before.f[trail]).squaredNorm();
@@ -97,8 +98,7 @@ FloatTofResult FloatTimeOfFlight::track(double baseline, double max_rotation, do
     Candidate c;
     const int trail = track_ns_ > 0 ? 0 : 1;
     const double want = std::fabs(track_ns_), g = gate_ns(want, frame_ns);
-    const bool window = track_frames_ >= kTofWindowGateFrames;
-    if (search(trail, max_rotation, want, want - g, want + g, window, c) && std::fabs(std::fabs(c.stau_ns) - want) < g) {
+    if (search(trail, max_rotation, want, want - g, want + g, c) && std::fabs(std::fabs(c.stau_ns) - want) < g) {
       pick = c;
       have = true;
       if (track_frames_ < 255) ++track_frames_;
@@ -128,7 +128,7 @@ FloatTofResult FloatTimeOfFlight::track(double baseline, double max_rotation, do
         max_ns = std::min(max_ns, kTofMaxTau * 1e9);
         if (min_ns >= max_ns) continue;
         Candidate c;
-        if (!search(trail, max_rotation, 0, min_ns, max_ns, false, c)) continue;
+        if (!search(trail, max_rotation, 0, min_ns, max_ns, c)) continue;
         const double v = (c.stau_ns > 0 ? baseline : -baseline) * 1e9 / std::fabs(c.stau_ns);
         bool agrees = !g;
         for (double h : hints) agrees = agrees || (guiding(h, trail) && std::fabs(v - h) <= kTofAcquireAgreement * std::fabs(h));

@@ -84,10 +84,9 @@ class TimeOfFlight {
   const TofFrame& at(uint16_t back) const;  // 0 = newest
   // The best candidate of one direction on the segments whose time span
   // reaches [min_ns, max_ns]: the one nearest want_ns (> 0: tracking), else
-  // the one with the least residual. `window`: the window's gate may widen the
-  // step's (kTofMaxTauShift; an established track only).
-  bool search(const TofTrackInput& in, int trail, int64_t want_ns, int64_t min_ns, int64_t max_ns, bool window,
-              Candidate& out) const;
+  // the one with the least residual. Tracking a track that has held
+  // kTofWindowGateFrames, the window's gate may widen the step's (kTofMaxTauShift).
+  bool search(const TofTrackInput& in, int trail, int64_t want_ns, int64_t min_ns, int64_t max_ns, Candidate& out) const;
 
   TofFrame ring_[kTofFrames];
   uint16_t head_ = 0;   // next slot to write

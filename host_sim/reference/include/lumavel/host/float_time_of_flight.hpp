@@ -37,8 +37,7 @@ class FloatTimeOfFlight {
     double stau_ns = 0, res = 0, sig_ns = 0, y_then = 0, turn = 0;
   };
   const FloatTofFrame& at(size_t back) const;
-  bool search(int trail, double max_rotation, double want_ns, double min_ns, double max_ns, bool window,
-              Candidate& out) const;
+  bool search(int trail, double max_rotation, double want_ns, double min_ns, double max_ns, Candidate& out) const;
 
   std::vector<FloatTofFrame> ring_;  // capacity kTofFrames, oldest first
   double track_ns_ = 0;
