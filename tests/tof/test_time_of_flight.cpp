@@ -303,6 +303,73 @@ TEST(TimeOfFlight, ALostTrackIsTakenUpWhereTheHintsAreWrong) {
   }
 }
 
+// An acquisition among clutter: the trail camera's view matches the lead's
+// path only on some frames (here a third), the others offering no candidate
+// at all. A run of consistent frames bridges up to kTofAcquireGapFrames such
+// frames in a row (two here: taken up on the third matching frame); three in
+// a row end it (never taken up). Both engines alike.
+TEST(TimeOfFlight, AnAcquisitionBridgesFramesWithoutACandidate) {
+  const double h = 0.08, v = 0.7, dt = 1 / kRate;
+  const double wavelength[4] = {0.13, 0.21, 0.34, 0.55};
+  auto scene = [&](int k, double s) { return 0.05 * std::sin(2 * M_PI * s / wavelength[k] + k); };
+  // First frame with a time of flight (-1: none), and its |h/tau / V - 1|, per engine.
+  auto first_track = [&](int period, double* err) {
+    TimeOfFlight fixed;
+    host::FloatTimeOfFlight dbl;
+    fixed.reset();
+    dbl.reset();
+    int first[2] = {-1, -1};
+    for (int i = 0; i < kRate; ++i) {
+      const double t = i * dt, x0 = v * t;
+      // Off the lead's path on all but every period-th frame: no candidate.
+      const double off = i % period == 0 ? 0 : 0.2;
+      const uint64_t t_ns = static_cast<uint64_t>(std::llround(t * 1e9)) + 1000000000;
+      TofFrame& slot = fixed.push();
+      slot = TofFrame{};
+      slot.t_ns = t_ns;
+      host::FloatTofFrame f;
+      f.t_ns = t_ns;
+      for (int c = 0; c < 2; ++c) {
+        f.f[c].resize(4);
+        f.r[c] = Eigen::VectorXd::Zero(4);
+        for (int k = 0; k < 4; ++k) {
+          const double value = scene(k, x0 + c * h) + (c == 0 ? off : 0);
+          f.f[c][k] = value;
+          slot.f[c][k] = static_cast<ValueQ28>(std::llround(std::ldexp(value, 28)));
+        }
+      }
+      dbl.push(f);
+      TofTrackInput in{};
+      in.baseline = static_cast<LengthQ24>(std::llround(std::ldexp(h, 24)));
+      in.max_rotation = static_cast<AngleQ28>(std::llround(std::ldexp(0.01, 28)));
+      in.v_fused = in.v_direct = static_cast<SpeedQ16>(std::llround(std::ldexp(v, 16)));
+      in.count = 4;
+      const TofResult a = fixed.track(in);
+      const host::FloatTofResult b = dbl.track(h, 0.01, v, v);
+      const bool ok[2] = {a.ok, b.ok};
+      const double got[2] = {std::ldexp(a.v, -16), b.v};
+      for (int e = 0; e < 2; ++e)
+        if (first[e] < 0 && ok[e]) {
+          first[e] = i;
+          err[e] = std::fabs(got[e] / v - 1);
+        }
+    }
+    CHECK_EQUAL(first[0], first[1]);
+    return first[0];
+  };
+  // The trail passes the lead's first frame after h / v (7 frames); from
+  // then on every matching frame is a candidate.
+  const int reach = static_cast<int>(std::ceil(h / v / dt));
+  double err[2] = {1, 1}, none[2] = {0, 0};
+  const int bridged = first_track(3, err);
+  const int broken = first_track(4, none);
+  std::printf("\n  a match on every 3rd frame: a track from frame %d (%.4f / %.4f off), on every 4th: %d", bridged, err[0],
+              err[1], broken);
+  CHECK(bridged >= reach && bridged <= reach + 3 * 3);
+  CHECK(err[0] < 0.02 && err[1] < 0.02);
+  CHECK_EQUAL(-1, broken);
+}
+
 // Every fifth frame lost: the history keeps the true timestamps, the time of
 // flight stays right.
 TEST(TimeOfFlight, DroppedFramesKeepTheTimeOfFlight) {

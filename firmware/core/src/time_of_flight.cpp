@@ -237,6 +237,7 @@ TofResult TimeOfFlight::track(const TofTrackInput& in) {
       unguided = pass == 1;
     }
     if (any) {
+      acquire_gap_ = 0;
       const bool same = acquire_count_ > 0 && (best.stau_ns > 0) == (acquire_ns_ > 0) &&
                         abs64(abs64(best.stau_ns) - abs64(acquire_ns_)) < gate_ns(acquire_ns_, frame_ns);
       acquire_count_ = same ? static_cast<uint8_t>(acquire_count_ + 1) : 1;
@@ -247,6 +248,8 @@ TofResult TimeOfFlight::track(const TofTrackInput& in) {
         acquire_count_ = 0;
         track_frames_ = 0;
       }
+    } else if (acquire_gap_ < kTofAcquireGapFrames) {
+      ++acquire_gap_;  // (kTofAcquireGapFrames: the run stands)
     } else {
       acquire_count_ = 0;
     }

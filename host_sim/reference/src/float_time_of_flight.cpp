@@ -141,6 +141,7 @@ FloatTofResult FloatTimeOfFlight::track(double baseline, double max_rotation, do
       unguided = pass == 1;
     }
     if (any) {
+      acquire_gap_ = 0;
       const bool same = acquire_count_ > 0 && (best.stau_ns > 0) == (acquire_ns_ > 0) &&
                         std::fabs(std::fabs(best.stau_ns) - std::fabs(acquire_ns_)) < gate_ns(acquire_ns_, frame_ns);
       acquire_count_ = same ? acquire_count_ + 1 : 1;
@@ -151,6 +152,8 @@ FloatTofResult FloatTimeOfFlight::track(double baseline, double max_rotation, do
         acquire_count_ = 0;
         track_frames_ = 0;
       }
+    } else if (acquire_gap_ < kTofAcquireGapFrames) {
+      ++acquire_gap_;
     } else {
       acquire_count_ = 0;
     }

@@ -52,6 +52,12 @@ constexpr double kTofTrackGateFraction = 0.3;
 // needed to take up a new one.
 constexpr int kTofTrackMisses = 5;
 constexpr int kTofAcquireFrames = 3;
+// Frames with no candidate at all that such a run bridges, in a row: among
+// clutter and between cameras that differ, the match comes and goes frame by
+// frame, and a frame without one says nothing against the run (a candidate at
+// another tau still ends it). Near clutter with mismatched cameras acquired
+// 0.3 s later without it (docs/design.md, "Search").
+constexpr int kTofAcquireGapFrames = 2;
 // A new track must agree with the fused velocity to this fraction (a periodic
 // scene offers matches at wrong times too), unless the rig is this slow (m/s).
 constexpr double kTofAcquireAgreement = 0.3;

@@ -95,6 +95,7 @@ class TimeOfFlight {
   uint8_t misses_ = 255;
   uint8_t track_frames_ = 0;    // frames the track has held since it was acquired (saturating)
   uint8_t acquire_count_ = 0;
+  uint8_t acquire_gap_ = 0;     // frames in a row without a candidate since the run's last
   int64_t acquire_ns_ = 0;
   uint64_t track_t_ns_ = 0;     // the newest frame's time when a track last held, or the history began
 };

@@ -44,6 +44,7 @@ class FloatTimeOfFlight {
   int misses_ = 255;
   int track_frames_ = 0;  // as the core (saturating at 255)
   int acquire_count_ = 0;
+  int acquire_gap_ = 0;
   double acquire_ns_ = 0;
   uint64_t track_t_ns_ = 0;  // the newest frame's time when a track last held, or the history began
 };
