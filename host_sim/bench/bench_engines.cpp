@@ -1,6 +1,6 @@
 // Compute time per frame of lumavel's two engines and of the keypoint
-// stereo VO on the same recordings and the same binned frames. Frames are
-// decoded and binned first, so only the engine is timed (push_gyro and
+// stereo VO on the same recordings, each fed the binned frames `run` feeds it.
+// Frames are decoded and binned first, so only the engine is timed (push_gyro and
 // step, one thread): wall clock, the best of the repeats (the run least
 // disturbed by other load on a shared machine), and the thread's CPU time.
 // Prints a table; figures, never a test.
@@ -31,10 +31,15 @@ struct Frames {
   std::vector<size_t> gyro_end;  // imu samples pushed before frame i: [0, gyro_end[i])
 };
 
-// Decoded and binned as run_recording does, gyro samples split the same way.
-Frames load_frames(const Recording& rec, int w, int h) {
+// Decoded, processed and binned as run_recording does for `kind` (the clip
+// ceiling; undistorted for lumavel's engines where the lens asks for it),
+// gyro samples split the same way.
+Frames load_frames(const Recording& rec, EngineKind kind, int w, int h) {
   Frames f;
-  FileStereoCamera camera(rec, w, h, 2);
+  RunOptions o;
+  o.engine = kind;
+  o.size = {w, h};
+  FileStereoCamera camera(rec, w, h, 2, 16, frame_processing(rec, o));
   const size_t n = static_cast<size_t>(w) * static_cast<size_t>(h);
   std::vector<uint8_t> b0(n), b1(n);
   lumavel::hal::StereoImage img{0, {b0.data(), b1.data()}, 0, 0};
@@ -148,10 +153,10 @@ int main(int argc, char** argv) {
       const Recording rec = load_recording(path);
       for (const auto& [w, h] : sizes) {
         if (w > rec.cam[0].width || h > rec.cam[0].height) continue;
-        const Frames f = load_frames(rec, w, h);
+        const Frames f = load_frames(rec, EngineKind::kFixed, w, h);
         const Timing fx = time_engine(rec, f, EngineKind::kFixed, w, h, repeat);
         const Timing fl = time_engine(rec, f, EngineKind::kFloat, w, h, repeat);
-        const Timing vo = time_engine(rec, f, EngineKind::kVo, w, h, repeat);
+        const Timing vo = time_engine(rec, load_frames(rec, EngineKind::kVo, w, h), EngineKind::kVo, w, h, repeat);
         char e[64] = "- | -";
         if (fx.e_percent >= 0) std::snprintf(e, sizeof e, "%.2f %% | %.2f %%", fx.e_percent, vo.e_percent);
         std::printf("| %s | %dx%d | %zu | %.1f | %.1f | %.0f | %.0f | %.0f | %s |\n", name_of(path).c_str(), w, h,
