@@ -128,7 +128,7 @@ FusionOutput VelocityFusion::update(const FusionInput& in) {
   int64_t target = vd;
   if (use_tof) {
     // z + A tau / 2: A tau_us < 2^40, times 2^40 / 2e6 (< 2^20) < 2^60
-    const int64_t moved = fx::shr_round(move_rate() * tau_us * kHalfPerMillionQ40, 40);
+    const int64_t moved = shown_move(in, fx::shr_round(move_rate() * tau_us * kHalfPerMillionQ40, 40), tau_us);
     const int64_t zc = int64_t{tof.v} + moved;
     const int64_t inflated = (int64_t{tof.sig} * fx::isqrt32(static_cast<uint32_t>(tof_inflation_))) >> 8;  // sig sqrt(n), Q16
     const int64_t rel = inflated > kTofFloorQ16 ? inflated : kTofFloorQ16;
@@ -209,15 +209,35 @@ FusionOutput VelocityFusion::update(const FusionInput& in) {
   return out;
 }
 
+int64_t VelocityFusion::clean_share() const {
+  // 1 up to the clean residual, 0 from kFusionMoveAccelResidual, linear between (and 0
+  // while the differential stands failed against the time of flight: its residual misses that).
+  if (failed_ || residual_ >= kMoveAccelResidualQ16) return 0;
+  if (residual_ > kScaleMaxResidualQ16) return ((kMoveAccelResidualQ16 - residual_) * kMoveBlendSlopeQ16) >> 16;  // < 2^13 x 2^20
+  return kOneQ16;
+}
+
 int64_t VelocityFusion::move_rate() const {
-  // The faster rate's share: 1 up to the clean residual, 0 from kFusionMoveAccelResidual
-  // (and while the differential stands failed against the time of flight: its residual misses that).
-  int64_t share = kOneQ16;
-  if (failed_ || residual_ >= kMoveAccelResidualQ16)
-    share = 0;
-  else if (residual_ > kScaleMaxResidualQ16)
-    share = ((kMoveAccelResidualQ16 - residual_) * kMoveBlendSlopeQ16) >> 16;  // < 2^13 x 2^20
-  return accel_ + ((share * (int64_t{move_accel_} - accel_)) >> 16);
+  // The faster rate in the measure that the differential is clean.
+  return accel_ + ((clean_share() * (int64_t{move_accel_} - accel_)) >> 16);
+}
+
+int64_t VelocityFusion::shown_move(const FusionInput& in, int64_t moved, int64_t tau_us) const {
+  // In the measure that the differential is clean (clean_share, as the
+  // move's rate), the move is held to what the observer shows, as the lag
+  // term is: its lag 2 (V_half - V) = tau_obs A on a ramp, so tau / 2 of that
+  // rate is (V_half - V) tau / tau_obs. A outlasts a change of acceleration
+  // by its smoothing (a start: the window, all after it, moved on by a rate
+  // that had passed); the shown lag does not. Among clutter the shown lag is
+  // noise and the move stands. (Continuous in the residual and in both
+  // values, so that the twin's last bits cannot switch it.)
+  const int64_t share = clean_share();
+  if (share == 0 || in.observer_tau_us == 0) return moved;
+  // |V_half - V| held to kLagMaxQ16 (2^23), tau_us < 2^20: < 2^43
+  const int64_t half_lag = clamp64(int64_t{half_} - in.v_differential, -kLagMaxQ16, kLagMaxQ16);
+  const int64_t cap = fx::div_trunc(half_lag * tau_us, in.observer_tau_us);
+  const int64_t held = (cap > 0) != (moved > 0) ? 0 : (abs64(cap) < abs64(moved) ? cap : moved);
+  return moved + ((share * (held - moved)) >> 16);  // |moved| < 2^18 (kFusionAccelMax kTofMaxTau / 2)
 }
 
 int64_t VelocityFusion::lag_compensation(const FusionInput& in, int64_t dt_us, int64_t out_tau_us) {

@@ -71,7 +71,7 @@ FloatFusionOutput FloatVelocityFusion::update(const FloatFusionInput& in) {
   const double sd2 = sd * sd + scale_var_ * held * held;
   double target = vd;
   if (use_tof) {
-    const double moved = move_rate() * tof.tau_ns * 1e-9 / 2;
+    const double moved = shown_move(in, move_rate() * tof.tau_ns * 1e-9 / 2, tof.tau_ns * 1e-9);
     const double zc = tof.v + moved;
     const double rel = std::max(tof.sig * std::sqrt(tof_inflation_), kFusionTofFloor);
     const double st = rel * std::fabs(tof.v) + kFusionSpeedFloor;
@@ -132,11 +132,20 @@ FloatFusionOutput FloatVelocityFusion::update(const FloatFusionInput& in) {
 
 // The observer's lag on a ramp, added back where it stands out of its noise
 // and no further than the observer shows it (the core's comments).
-double FloatVelocityFusion::move_rate() const {
-  if (failed_) return accel_;  // (the core's comment)
-  const double share = std::clamp((kFusionMoveAccelResidual - residual_) /
-                                      (kFusionMoveAccelResidual - kFusionScaleMaxResidual), 0.0, 1.0);
-  return accel_ + share * (move_accel_ - accel_);
+double FloatVelocityFusion::clean_share() const {
+  if (failed_) return 0;  // (the core's comment)
+  return std::clamp((kFusionMoveAccelResidual - residual_) / (kFusionMoveAccelResidual - kFusionScaleMaxResidual), 0.0, 1.0);
+}
+
+double FloatVelocityFusion::move_rate() const { return accel_ + clean_share() * (move_accel_ - accel_); }
+
+double FloatVelocityFusion::shown_move(const FloatFusionInput& in, double moved, double tau) const {
+  // Held to what the observer shows in the measure that the differential is clean (the core's comment).
+  const double share = clean_share();
+  if (share <= 0 || in.observer_tau <= 0) return moved;
+  const double cap = std::clamp(half_ - in.v_differential, -128.0, 128.0) * tau / in.observer_tau;
+  const double held = (cap > 0) != (moved > 0) ? 0 : (std::fabs(cap) < std::fabs(moved) ? cap : moved);
+  return moved + share * (held - moved);
 }
 
 double FloatVelocityFusion::lag_compensation(const FloatFusionInput& in, double dt, double out_tau) {

@@ -109,6 +109,10 @@ class VelocityFusion {
   int32_t coast_frames_ = -1;      // ... in frames since (-1: none to coast on)
   // The rate the window is moved to the present by (kFusionMoveAccelTau, fusion_params.hpp).
   int64_t move_rate() const;
+  // How clean the differential is for the move: 1 to 0 over kFusionScaleMaxResidual..kFusionMoveAccelResidual.
+  int64_t clean_share() const;
+  // That move (A tau / 2, Q16), held where the differential is clean to what the observer shows.
+  int64_t shown_move(const FusionInput& in, int64_t moved, int64_t tau_us) const;
   // The observer's lag on a ramp, with what the output's smoothing (time constant out_tau_us) adds to it.
   int64_t lag_compensation(const FusionInput& in, int64_t dt_us, int64_t out_tau_us);
   void learn_scale(const FusionInput& in, int64_t dt_us, int64_t q_res, int64_t q_change, int64_t q_short, int64_t q_turn);

@@ -60,6 +60,8 @@ class FloatVelocityFusion {
   int64_t coast_us_ = 0;                // ... how long ago (us) ...
   int coast_frames_ = -1;               // ... in frames (-1: none to coast on)
   double move_rate() const;
+  double clean_share() const;
+  double shown_move(const FloatFusionInput& in, double moved, double tau) const;
   double lag_compensation(const FloatFusionInput& in, double dt, double out_tau);
 };
 
