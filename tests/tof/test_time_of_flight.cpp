@@ -440,6 +440,72 @@ TEST(TimeOfFlight, TurningIsDeRotatedOrRefused) {
   }
 }
 
+// A steady turn, from kernel outputs of a 1-D scene 1 m away: a camera at x
+// with heading theta sees the scene at x + D theta, so F = s(x + D theta)
+// and dF/dtheta = D s'. The lead's heading is interpolated along the matched
+// segment. With the segment's mean heading for both of its frames, a turn of
+// w over a frame moved the match by (fr - 1/2) w dt of yaw, D (fr - 1/2) w dt
+// of path: here tau is 9.1 frames, the match 0.9 of the way along its segment,
+// and h / tau read 0.73 % off on average (1.2 % worst); now 0.09 % (0.5 %),
+// against 0.006 % without the turn (both engines alike).
+TEST(TimeOfFlight, ATurnIsTakenOffAlongTheSegment) {
+  const double h = 0.08, v = 0.5275, w = 0.1, depth = 1.0, dt = 1 / kRate;
+  const double wavelength[4] = {1.65, 2.1, 2.7, 3.9};
+  auto s = [&](int k, double u) { return 0.05 * std::sin(2 * M_PI * u / wavelength[k] + k); };
+  auto ds = [&](int k, double u) { return 0.05 * 2 * M_PI / wavelength[k] * std::cos(2 * M_PI * u / wavelength[k] + k); };
+  TimeOfFlight fixed;
+  host::FloatTimeOfFlight dbl;
+  fixed.reset();
+  dbl.reset();
+  double sum[2] = {0, 0}, worst[2] = {0, 0};
+  int n[2] = {0, 0};
+  for (int i = 0; i < 2 * kRate; ++i) {
+    const double t = i * dt, th = w * t;
+    const uint64_t t_ns = static_cast<uint64_t>(std::llround(t * 1e9)) + 1000000000;
+    TofFrame& slot = fixed.push();
+    slot = TofFrame{};
+    slot.t_ns = t_ns;
+    slot.heading = std::llround(std::ldexp(th, 28));
+    host::FloatTofFrame f;
+    f.t_ns = t_ns;
+    f.heading = th;
+    for (int c = 0; c < 2; ++c) {
+      f.f[c].resize(4);
+      f.r[c].resize(4);
+      for (int k = 0; k < 4; ++k) {
+        const double u = v * t + c * h + depth * th;
+        f.f[c][k] = s(k, u);
+        f.r[c][k] = depth * ds(k, u);
+        slot.f[c][k] = static_cast<ValueQ28>(std::llround(std::ldexp(f.f[c][k], 28)));
+        slot.r[c][k] = static_cast<SlopeQ20>(std::llround(std::ldexp(f.r[c][k], 20)));
+      }
+    }
+    dbl.push(f);
+    TofTrackInput in{};
+    in.baseline = static_cast<LengthQ24>(std::llround(std::ldexp(h, 24)));
+    in.max_rotation = static_cast<AngleQ28>(std::llround(std::ldexp(0.05, 28)));
+    in.v_fused = in.v_direct = static_cast<SpeedQ16>(std::llround(std::ldexp(v, 16)));
+    in.count = 4;
+    const TofResult a = fixed.track(in);
+    const host::FloatTofResult b = dbl.track(h, 0.05, v, v);
+    const bool ok[2] = {a.ok, b.ok};
+    const double got[2] = {std::ldexp(a.v, -16), b.v};
+    for (int e = 0; e < 2; ++e)
+      if (ok[e]) {
+        const double err = std::fabs(got[e] / v - 1);
+        sum[e] += err;
+        worst[e] = std::max(worst[e], err);
+        ++n[e];
+      }
+  }
+  for (int e = 0; e < 2; ++e) {
+    std::printf("\n  turning at %.1f rad/s, %s: a time of flight on %d frames, mean |h/tau / V - 1| %.5f, worst %.5f", w,
+                e == 0 ? "fixed" : "float", n[e], n[e] ? sum[e] / n[e] : 0.0, worst[e]);
+    CHECK(n[e] > kRate);
+    CHECK(sum[e] / n[e] < 0.002);
+  }
+}
+
 // Texture lost for a second while moving (V held), then back: the
 // differential's integral stood still over the hold, so a window reaching
 // into it must not teach the scale. It did: the scale fell to 0.83 and V

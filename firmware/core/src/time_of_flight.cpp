@@ -108,18 +108,29 @@ bool TimeOfFlight::search(const TofTrackInput& in, int trail, int64_t want_ns, i
       if (nearest >= abs64(abs64(out.stau_ns) - want_ns)) continue;
     }
     if (abs64(dth) > in.max_rotation) continue;
-    // dth <= max_rotation < 2^31 in Q28; the differences below, in Q24, are
-    // held to the +-2^28 that two ValueQ28 can differ by, so that each product
-    // is one 32 x 32 -> 64 multiply and each sum of kMaxKernels terms < 2^62.
-    const int32_t dth32 = static_cast<int32_t>(dth);
+    // The lead's heading along the segment is interpolated with the point on
+    // it: each of its frames is turned to the trail's heading, and the segment
+    // runs between the turned frames. (With the segment's mean heading for
+    // both, a turn of w over a frame moved the match by (fr - 1/2) w dt of
+    // yaw, read as distance: h / tau 0.4-0.7 % off on the paper's 15 m arc.)
+    // A frame step that turned more than twice max_rotation is not
+    // interpolated; so both angles stay below 2^30 in Q28 (max_rotation <
+    // 2^28) and each product below is one 32 x 32 -> 64 multiply; the
+    // differences, in Q24, are held to the +-2^28 that two ValueQ28 can
+    // differ by, so that each sum of kMaxKernels products stays below 2^62.
+    const int64_t step_turn = b.heading - a.heading;
+    if (abs64(step_turn) > 2 * int64_t{in.max_rotation}) continue;
+    const auto dth_a = static_cast<int32_t>(now.heading - a.heading);
+    const auto dth_ab = static_cast<int32_t>(step_turn);
     int64_t ee = 0, ed = 0, dd = 0;  // Q48
     for (uint8_t k = 0; k < in.count; ++k) {
-      // The trail's outputs rotated back to the lead's heading: F - dtheta * mean(dF/dtheta).
+      // Turned by dtheta: F + dtheta * mean(dF/dtheta) (trail now, lead on the segment).
       const int32_t rb = static_cast<int32_t>(
           (int64_t{now.r[trail][k]} + (int64_t{a.r[lead][k]} + b.r[lead][k]) / 2) / 2);  // Q20
-      const int64_t tv = int64_t{now.f[trail][k]} - fx::shr_round(int64_t{dth32} * rb, fx::kSlopeFrac);  // Q28
+      const int64_t tv = int64_t{now.f[trail][k]} - fx::shr_round(int64_t{dth_a} * rb, fx::kSlopeFrac);  // Q28
       const int32_t e = static_cast<int32_t>(clamp64(fx::shr_round(tv - a.f[lead][k], 4), -kDiffMaxQ24, kDiffMaxQ24));
-      const int32_t d = static_cast<int32_t>(fx::shr_round(int64_t{b.f[lead][k]} - a.f[lead][k], 4));
+      const int64_t step = int64_t{b.f[lead][k]} - a.f[lead][k] - fx::shr_round(int64_t{dth_ab} * rb, fx::kSlopeFrac);
+      const int32_t d = static_cast<int32_t>(clamp64(fx::shr_round(step, 4), -kDiffMaxQ24, kDiffMaxQ24));
       ee += int64_t{e} * e;
       ed += int64_t{e} * d;
       dd += int64_t{d} * d;

@@ -52,9 +52,12 @@ bool FloatTimeOfFlight::search(int trail, double max_rotation, double want_ns, d
     }
     const double dth = now.heading - (a.heading + b.heading) / 2;
     if (std::fabs(dth) > max_rotation) continue;
+    // The lead's frames each turned to the trail's heading (the core's comment).
+    const double step_turn = b.heading - a.heading;
+    if (std::fabs(step_turn) > 2 * max_rotation) continue;
     const Eigen::VectorXd rb = (now.r[trail] + (a.r[lead] + b.r[lead]) / 2) / 2;
-    const Eigen::VectorXd e = now.f[trail] - dth * rb - a.f[lead];
-    const Eigen::VectorXd d = b.f[lead] - a.f[lead];
+    const Eigen::VectorXd e = now.f[trail] - (now.heading - a.heading) * rb - a.f[lead];
+    const Eigen::VectorXd d = b.f[lead] - a.f[lead] - step_turn * rb;
     const double ee = e.squaredNorm(), ed = e.dot(d), dd = d.squaredNorm();
     if (dd <= 0) continue;
     // The closest point, or the segment's end just beyond it (the core's comment).
