@@ -1,7 +1,7 @@
 # What every cross toolchain file of the tree shares (arm-none-eabi.cmake,
 # riscv64-unknown-elf.cmake include it): a bare-metal Generic system, the GNU
 # tools by their prefix, the board's CPU flags and LUMAVEL_EXTRA_FLAGS in
-# LUMAVEL_BOARD_FLAGS, -Os, and finding programs on the host only.
+# LUMAVEL_BOARD_FLAGS, the board's optimisation, and finding programs on the host only.
 # Set LUMAVEL_TOOL_PREFIX (e.g. arm-none-eabi-) and CMAKE_SYSTEM_PROCESSOR first.
 set(CMAKE_SYSTEM_NAME Generic)
 # Bare metal: try_compile cannot link an executable without a board's startup.
@@ -28,10 +28,18 @@ if(LUMAVEL_EXTRA_FLAGS)
   string(APPEND LUMAVEL_BOARD_FLAGS " ${LUMAVEL_EXTRA_FLAGS}")
 endif()
 
-# Size first; the link drops unused sections and writes no libc start files.
+# The link drops unused sections and writes no libc start files.
 set(CMAKE_ASM_FLAGS_INIT "${LUMAVEL_BOARD_FLAGS}")
-set(CMAKE_C_FLAGS_RELEASE_INIT "-Os")
-set(CMAKE_CXX_FLAGS_RELEASE_INIT "-Os")
+# Optimisation, the board's choice (board.cmake: LUMAVEL_BOARD_OPT): -Os where
+# the flash is the limit (the blue pill, the 8 KiB part), -O3 otherwise (the
+# QEMU images whose instructions per frame docs/benchmarks.md counts). Set as
+# the Release flags themselves: CMake appends its own -O3 to a *_RELEASE_INIT
+# value, which is how an "-Os" here was built at -O3 until 2026-12-07.
+if(NOT LUMAVEL_BOARD_OPT)
+  set(LUMAVEL_BOARD_OPT -O3)
+endif()
+set(CMAKE_C_FLAGS_RELEASE "${LUMAVEL_BOARD_OPT} -DNDEBUG" CACHE STRING "the board's optimisation (LUMAVEL_BOARD_OPT)" FORCE)
+set(CMAKE_CXX_FLAGS_RELEASE "${LUMAVEL_BOARD_OPT} -DNDEBUG" CACHE STRING "the board's optimisation (LUMAVEL_BOARD_OPT)" FORCE)
 set(CMAKE_C_FLAGS_MINSIZEREL_INIT "-Os")
 set(CMAKE_CXX_FLAGS_MINSIZEREL_INIT "-Os")
 

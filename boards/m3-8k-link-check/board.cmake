@@ -6,3 +6,5 @@
 # and a 2 KiB stack fit. Read by cmake/arm-none-eabi.cmake before the
 # compilers are set up.
 set(LUMAVEL_BOARD_FLAGS "-mcpu=cortex-m3 -mthumb -mfloat-abi=soft -DLUMAVEL_MAX_COLS=40 -DLUMAVEL_MAX_ROWS=30 -DLUMAVEL_MAX_KERNELS=3 -DLUMAVEL_TOF_FRAMES=12 -DLUMAVEL_MATCH_FRAMES=0")
+# A part that small has little flash too: size first.
+set(LUMAVEL_BOARD_OPT -Os)
