@@ -250,7 +250,7 @@ TEST(TimeOfFlight, AStartIsTakenUpWhileTheFusedSpeedLags) {
 // frames, and kept; never before that time. Without the rule no track at all.
 TEST(TimeOfFlight, ALostTrackIsTakenUpWhereTheHintsAreWrong) {
   const double h = 0.08, v = 0.7, hint = 0.25, dt = 1 / kRate;
-  const double wavelength[4] = {0.13, 0.21, 0.34, 0.55};
+  const double wavelength[4] = {0.3, 0.4, 0.55, 0.7};
   auto scene = [&](int k, double s) { return 0.05 * std::sin(2 * M_PI * s / wavelength[k] + k); };
   TimeOfFlight fixed;
   host::FloatTimeOfFlight dbl;
@@ -310,7 +310,7 @@ TEST(TimeOfFlight, ALostTrackIsTakenUpWhereTheHintsAreWrong) {
 // a row end it (never taken up). Both engines alike.
 TEST(TimeOfFlight, AnAcquisitionBridgesFramesWithoutACandidate) {
   const double h = 0.08, v = 0.7, dt = 1 / kRate;
-  const double wavelength[4] = {0.13, 0.21, 0.34, 0.55};
+  const double wavelength[4] = {0.3, 0.4, 0.55, 0.7};
   auto scene = [&](int k, double s) { return 0.05 * std::sin(2 * M_PI * s / wavelength[k] + k); };
   // First frame with a time of flight (-1: none), and its |h/tau / V - 1|, per engine.
   auto first_track = [&](int period, double* err) {
@@ -437,6 +437,63 @@ TEST(TimeOfFlight, TurningIsDeRotatedOrRefused) {
     print("turning, wall at 0.8 m", kind, s);
     CHECK(s.tof_err < 0.03);
     CHECK(s.e_fused < 0.03);
+  }
+}
+
+// A bent path: kernel outputs of a 1-D scene passed at a steady speed, tau
+// 9.5 frames (every match halfway along its segment, where the chord's
+// fraction and the time differ most). The fraction is moved by the path's
+// second difference (kTofChordMaxShift): mean |h/tau / V - 1| 0.118 % -> 0.026 %
+// (0.260 -> 0.096 % with wavelengths of 0.13-0.55 m, 0.078 -> 0.015 % with
+// 0.55-1.3 m); no bias either way.
+TEST(TimeOfFlight, ABentPathIsTimedAlongItsBend) {
+  const double h = 0.08, v = h / (9.5 / kRate), dt = 1 / kRate;
+  const double wavelength[4] = {0.3, 0.4, 0.55, 0.7};
+  auto s = [&](int k, double u) { return 0.05 * std::sin(2 * M_PI * u / wavelength[k] + k); };
+  TimeOfFlight fixed;
+  host::FloatTimeOfFlight dbl;
+  fixed.reset();
+  dbl.reset();
+  double sum[2] = {0, 0}, bias[2] = {0, 0};
+  int n[2] = {0, 0};
+  for (int i = 0; i < 2 * kRate; ++i) {
+    const double t = i * dt;
+    const uint64_t t_ns = static_cast<uint64_t>(std::llround(t * 1e9)) + 1000000000;
+    TofFrame& slot = fixed.push();
+    slot = TofFrame{};
+    slot.t_ns = t_ns;
+    host::FloatTofFrame f;
+    f.t_ns = t_ns;
+    for (int c = 0; c < 2; ++c) {
+      f.f[c].resize(4);
+      f.r[c] = Eigen::VectorXd::Zero(4);
+      for (int k = 0; k < 4; ++k) {
+        f.f[c][k] = s(k, v * t + c * h);
+        slot.f[c][k] = static_cast<ValueQ28>(std::llround(std::ldexp(f.f[c][k], 28)));
+      }
+    }
+    dbl.push(f);
+    TofTrackInput in{};
+    in.baseline = static_cast<LengthQ24>(std::llround(std::ldexp(h, 24)));
+    in.max_rotation = static_cast<AngleQ28>(std::llround(std::ldexp(0.01, 28)));
+    in.v_fused = in.v_direct = static_cast<SpeedQ16>(std::llround(std::ldexp(v, 16)));
+    in.count = 4;
+    const TofResult a = fixed.track(in);
+    const host::FloatTofResult b = dbl.track(h, 0.01, v, v);
+    const bool ok[2] = {a.ok, b.ok};
+    const double got[2] = {std::ldexp(a.v, -16), b.v};
+    for (int e = 0; e < 2; ++e)
+      if (ok[e]) {
+        sum[e] += std::fabs(got[e] / v - 1);
+        bias[e] += got[e] / v - 1;
+        ++n[e];
+      }
+  }
+  for (int e = 0; e < 2; ++e) {
+    std::printf("\n  a bent path, %s: a time of flight on %d frames, mean |h/tau / V - 1| %.5f, mean %+.5f",
+                e == 0 ? "fixed" : "float", n[e], n[e] ? sum[e] / n[e] : 0.0, n[e] ? bias[e] / n[e] : 0.0);
+    CHECK(n[e] > kRate);
+    CHECK(sum[e] / n[e] < 0.0006);
   }
 }
 

@@ -30,6 +30,13 @@ constexpr double kTofMaxPathResidualLong = 4.0;
 // aliases were taken up and then held (7 of 16 runs 20-120 % off, against
 // 0.8-1.6 % with the step's gate; with it for any held track, 1 of 16).
 constexpr int kTofWindowGateFrames = 6;
+// The lead's path bends between its frames: a point on the chord between two
+// of them stands for a later or earlier time than its fraction along it. That
+// fraction is moved by the path's second difference (docs/design.md,
+// "Search"), by at most this share of the segment's span: in clutter, and
+// where one camera's auto-exposure steps, the second difference is noise
+// (unheld: near clutter with per-camera auto-exposure +11 %).
+constexpr double kTofChordMaxShift = 0.02;
 // ... and against the trail camera's own change since its previous frame
 // (so that a still or slowly changing view cannot match anything).
 constexpr double kTofMaxResidualVsMotion = 1.0;

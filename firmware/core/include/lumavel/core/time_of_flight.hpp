@@ -87,6 +87,9 @@ class TimeOfFlight {
   // the one with the least residual. Tracking a track that has held
   // kTofWindowGateFrames, the window's gate may widen the step's (kTofMaxTauShift).
   bool search(const TofTrackInput& in, int trail, int64_t want_ns, int64_t min_ns, int64_t max_ns, Candidate& out) const;
+  // The time, as a fraction of segment back's span (Q16), of the point at fr
+  // along its chord d (Q24 per kernel, |d|^2 = dd, Q48): kTofChordMaxShift.
+  int64_t chord_time(int lead, uint16_t back, uint8_t count, const int32_t* d, int64_t dd, int64_t fr) const;
 
   TofFrame ring_[kTofFrames];
   uint16_t head_ = 0;   // next slot to write

@@ -38,6 +38,7 @@ class FloatTimeOfFlight {
   };
   const FloatTofFrame& at(size_t back) const;
   bool search(int trail, double max_rotation, double want_ns, double min_ns, double max_ns, Candidate& out) const;
+  double chord_time(int lead, size_t back, const Eigen::VectorXd& d, double dd, double fr) const;  // (the core's)
 
   std::vector<FloatTofFrame> ring_;  // capacity kTofFrames, oldest first
   double track_ns_ = 0;
