@@ -343,6 +343,24 @@ TEST(BadInput, SensorYamlIndentedWithATabSaysSo) {
                   load_error().c_str());
 }
 
+// yaml-cpp ends lines at LF and CR LF only: a sensor.yaml of CR-only line
+// ends was one long line to it, a comment when it starts with '#' (was:
+// 'empty file'), as the CSV tables refuse it; CR LF still loads.
+TEST(BadInput, SensorYamlWithCarriageReturnOnlyLineEnds) {
+  const std::string y = m + "cam0/sensor.yaml";
+  const std::string text = fixture::read_text(y);
+  CHECK(text.rfind("#", 0) == 0);
+  std::string cr = text, crlf;
+  for (char& c : cr)
+    if (c == '\n') c = '\r';
+  for (char c : text) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+  fixture::write_text(y, cr);
+  STRCMP_CONTAINS((y + ":1: a carriage return (CR) inside the line, at character ").c_str(), load_error().c_str());
+  STRCMP_CONTAINS("lines must end with LF or CR LF (CR-only line ends?)", load_error().c_str());
+  fixture::write_text(y, crlf);
+  STRCMP_EQUAL("(no error)", load_error().c_str());
+}
+
 TEST(BadInput, SensorYamlWrongType) {
   const std::string y = m + "imu0/sensor.yaml";
   fixture::write_text(y, "sensor_type: camera\nrate_hz: 500\n");

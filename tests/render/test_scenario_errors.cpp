@@ -148,6 +148,21 @@ TEST(ScenarioErrors, ATabInTheIndentationIsNamed) {
   STRCMP_EQUAL("(accepted)", error_of(replace(kGood, "  rate_hz: 60", "  rate_hz:\t60")).c_str());
 }
 
+// yaml-cpp ends lines at LF and CR LF only: CR-only line ends made one long
+// line of the file (was: 'bad.yaml:1: YAML syntax: illegal map value', and
+// with a first '#' comment line 'empty file'); CR LF is read.
+TEST(ScenarioErrors, CarriageReturnOnlyLineEndsAreNamed) {
+  std::string cr = kGood, crlf;
+  for (char& c : cr)
+    if (c == '\n') c = '\r';
+  for (const char c : std::string(kGood)) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+  STRCMP_CONTAINS("bad.yaml:1: a carriage return (CR) inside the line, at character 14: lines must end with LF or CR LF",
+                  error_of(cr).c_str());
+  STRCMP_CONTAINS("bad.yaml:1: a carriage return (CR) inside the line, at character 13:",
+                  error_of("# a scenario\r" + cr).c_str());
+  STRCMP_EQUAL("(accepted)", error_of(crlf).c_str());
+}
+
 TEST(ScenarioErrors, MissingFileIsNamed) {
   try {
     load_scenario("/nonexistent/scenario.yaml");

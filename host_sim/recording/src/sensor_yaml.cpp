@@ -67,6 +67,8 @@ YAML::Node load_yaml(const std::string& path) {
   // OpenCV-style "%YAML:1.0" first lines are not YAML 1.2 directives; blank
   // them (keeping line numbers) so such files still load.
   if (text.rfind("%YAML:", 0) == 0) text[0] = '#';
+  if (const yaml_text::BadLine bad = yaml_text::why_bad_line(text); bad.line != 0)
+    throw recording_error_at(path, bad.line, bad.why);
   try {
     // A second document (a '---' line after some content) would be ignored,
     // silently: refused like a repeated key. (Scanned in the text: yaml-cpp's

@@ -522,6 +522,8 @@ void read_drops(const Reader& r, const YAML::Node& n, Scenario& s) {
 Scenario parse_scenario(const std::string& text, const std::string& name,
                         const std::string& base_dir) {
   const Reader r(name);
+  if (const yaml_text::BadLine bad = yaml_text::why_bad_line(text); bad.line != 0)
+    throw ScenarioError(name + ":" + std::to_string(bad.line) + ": " + bad.why);
   // YAML::Load reads the first document only: whatever follows a '---' (or a
   // '...' end marker) after some content was ignored, silently, and the
   // render made from the first part. Refused, as in a sensor.yaml (scanned

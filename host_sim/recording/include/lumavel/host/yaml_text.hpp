@@ -1,10 +1,12 @@
 // The text of a YAML file line by line, for what yaml-cpp's single-document
 // Load does not say (a second document after '---', text after a '...' end
-// marker): the sensor.yaml reader and the scenario loader scan for those in
-// the text (yaml-cpp's LoadAll can loop on malformed input).
+// marker, CR-only line ends): the sensor.yaml reader and the scenario loader
+// scan for those in the text (yaml-cpp's LoadAll can loop on malformed input).
 #pragma once
 #include <algorithm>
 #include <string>
+
+#include "lumavel/host/line_ends.hpp"
 
 namespace lumavel::host::yaml_text {
 
@@ -53,6 +55,23 @@ inline NotOneDocument why_not_one_document(const std::string& text) {
         out = {n, "text after the end of the document ('...' at line " + std::to_string(ended_at) + ")"};
       content = true;
     }
+  });
+  return out;
+}
+
+// The first line that holds a carriage return before more text, with
+// why_cr_inside_line's reason. yaml-cpp ends lines at LF and CR LF only: a
+// file of CR-only line ends is one long line to it, read as a comment
+// ("empty file") when it starts with '#', as nonsense otherwise.
+struct BadLine {
+  long line;  // 0: none
+  std::string why;
+};
+inline BadLine why_bad_line(const std::string& text) {
+  BadLine out{0, ""};
+  for_each_line(text, [&](long n, const std::string& l) {
+    if (out.line == 0)
+      if (std::string why = why_cr_inside_line(l); !why.empty()) out = {n, why};
   });
   return out;
 }
