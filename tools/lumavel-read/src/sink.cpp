@@ -24,7 +24,18 @@ void Sink::finish() {
 
 bool Sink::take(const uint8_t* buf, size_t len, const std::string& where) {
   if (len == 0) return false;
-  if (buf[0] == proto::kReportFeatureChunk) return false;  // a late mailbox reply: not data
+  if (buf[0] == proto::kReportFeatureChunk) {
+    // On a live link, a late mailbox reply: not data. A report file holds
+    // the measurements its run sent and nothing else (nobody asks through a
+    // file): there it is a damaged record (was: skipped unsaid, exit 0, the
+    // measurement it replaced missing from the CSV).
+    if (!from_file_) return false;
+    ++malformed_;
+    std::fprintf(stderr, "malformed report %s (id 0x%02x, %zu bytes): a mailbox reply, which a report file never "
+                         "holds (its run writes measurements only): a damaged record\n",
+                 where.c_str(), buf[0], len);
+    return false;
+  }
   proto::Measurement m{};
   const proto::DecodeResult r = proto::decode_measurement(buf, len, m);
   if (!r.ok()) {
