@@ -265,6 +265,15 @@ TEST(ImportSlider, DamagedDatasetsAreRefusedNamingTheLine) {
        "images.txt:5: time -5 s is outside 0..9.2e9 s"},
       {[&] { line5("groundtruth.txt", [](const std::string& l) { return "1e300" + l.substr(l.find(' ')); }); },
        "groundtruth.txt:5: time 1e+300 s is outside 0..9.2e9 s"},
+      // Times 0.1 ns apart became one timestamp twice (was: refused by the
+      // writer, naming the recording's cam0/data.csv, not this line).
+      {[&] { line5("images.txt", [](const std::string& l) { return "0.1300000001" + l.substr(l.find(' ')); }); },
+       "images.txt:5: time 0.1300000001 s is not after line 4's, 0.13 s, to the nanosecond (the recording's "
+       "timestamps are whole nanoseconds)"},
+      {[&] { line5("groundtruth.txt", [](const std::string& l) { return "0.0300000004" + l.substr(l.find(' ')); }); },
+       "groundtruth.txt:5: time 0.0300000004 s is not after line 4's, 0.03 s, to the nanosecond"},
+      {[&] { line5("images.txt", [](const std::string& l) { return "0.1" + l.substr(l.find(' ')); }); },
+       "images.txt:5: time 0.1 s is not after line 4's, 0.13 s"},
       // Extra fields were ignored.
       {[&] { line5("groundtruth.txt", [](const std::string& l) { return l + " 7"; }); },
        "groundtruth.txt:5: unexpected extra field '7' (expected t x y z qx qy qz qw)"},

@@ -39,8 +39,6 @@ void to_body_axes(const double p[3], double out[3]) {
   out[2] = -p[1];
 }
 
-uint64_t to_ns(double t_s) { return static_cast<uint64_t>(std::llround(t_s * 1e9)); }
-
 double median_interval(const std::vector<SliderFrame>& f) {
   std::vector<double> dt;
   for (size_t i = 1; i < f.size(); ++i) dt.push_back(f[i].t - f[i - 1].t);
@@ -72,7 +70,7 @@ std::vector<GroundTruthSample> body_groundtruth(const std::vector<SliderPose>& p
   const size_t n = poses.size();
   std::vector<GroundTruthSample> out(n);
   for (size_t k = 0; k < n; ++k) {
-    out[k].t_ns = to_ns(poses[k].t);
+    out[k].t_ns = slider_time_ns(poses[k].t);
     to_body_axes(poses[k].p, out[k].p);
     out[k].p[0] += 0.5 * h;
   }
@@ -94,7 +92,7 @@ std::vector<GroundTruthSample> body_groundtruth(const std::vector<SliderPose>& p
 // The gyro's stamps: every imu period from the one at or before the first
 // frame to the one after the last.
 std::vector<uint64_t> imu_stamps(uint64_t t_first, uint64_t t_last, double rate_hz) {
-  const uint64_t period = to_ns(1.0 / rate_hz);
+  const uint64_t period = slider_time_ns(1.0 / rate_hz);
   std::vector<uint64_t> t;
   for (uint64_t s = t_first / period * period; s < t_last + period; s += period) t.push_back(s);
   return t;
@@ -187,7 +185,7 @@ ImportSliderSummary import_slider(const std::string& data_dir, const std::string
   cam1.comment = "cam0's frames time-shifted to the slider position x + " + std::to_string(h) +
                  " m (pixelwise blend of the two bracketing frames, weighted by position)";
   std::vector<uint64_t> frame_t;
-  for (const ShiftedPair& p : pairs) frame_t.push_back(to_ns(d.frames[p.cam0].t));
+  for (const ShiftedPair& p : pairs) frame_t.push_back(slider_time_ns(d.frames[p.cam0].t));
   check_before_import(data_dir, out_rec, cam0, cam1, imu, frame_t, truth);
   // Written over, an earlier recording kept its frames beside the new ones in
   // cam0/data and cam1/data and was lost without a word: refused, as render
@@ -219,7 +217,7 @@ ImportSliderSummary import_slider(const std::string& data_dir, const std::string
       const GrayImage& a = image(p.before);
       const GrayImage& b = image(p.before + 1);
       blend_gray(a.px.data(), b.px.data(), p.w, shifted.size(), shifted.data());
-      out.add_frame_pair(to_ns(d.frames[p.cam0].t), image(p.cam0).px.data(), shifted.data());
+      out.add_frame_pair(slider_time_ns(d.frames[p.cam0].t), image(p.cam0).px.data(), shifted.data());
       sum.max_blend_gap_m = std::max(sum.max_blend_gap_m, x[p.before + 1] - x[p.before]);
     }
     sum.pairs = pairs.size();

@@ -62,8 +62,16 @@ void no_more_fields(std::istringstream& s, const std::string& path, long line, c
                              "unexpected extra field '" + shown_path(extra) + "' (expected " + expected + ")");
 }
 
-void check_increasing(double prev, double t, bool any, const std::string& path, long line) {
-  if (any && !(t > prev)) throw recording_error_at(path, line, "timestamp does not increase");
+// Compared as the recording's nanoseconds: times less than 1 ns apart
+// became one timestamp twice, refused by the writer naming the recording's
+// table, not this file's line (was: 'OUT/mav0/cam0/data.csv: timestamp
+// 10000000 is not after the previous one').
+void check_increasing(double prev, long prev_line, double t, const std::string& path, long line) {
+  if (prev_line == 0 || slider_time_ns(t) > slider_time_ns(prev)) return;
+  throw recording_error_at(path, line,
+                           "time " + format_double(t) + " s is not after line " + std::to_string(prev_line) + "'s, " +
+                               format_double(prev) + " s" +
+                               (t > prev ? ", to the nanosecond (the recording's timestamps are whole nanoseconds)" : ""));
 }
 
 }  // namespace
@@ -90,7 +98,8 @@ SliderDataset read_slider_dataset(const std::string& dir) {
     f.path = file.front() == '/' ? file : dir + "/" + file;
     if (const std::string why = named.why_repeated(file, line, f.path); !why.empty())
       throw recording_error_at(images, line, why);
-    check_increasing(d.frames.empty() ? 0 : d.frames.back().t, f.t, !d.frames.empty(), images, line);
+    check_increasing(d.frames.empty() ? 0 : d.frames.back().t, d.frames.empty() ? 0 : d.frames.back().line, f.t, images,
+                     line);
     d.frames.push_back(f);
   });
   if (d.frames.size() < 2) throw recording_error_in(images, "fewer than two frames");
@@ -112,7 +121,7 @@ SliderDataset read_slider_dataset(const std::string& dir) {
     const double n = std::sqrt(p.q[0] * p.q[0] + p.q[1] * p.q[1] + p.q[2] * p.q[2] + p.q[3] * p.q[3]);
     if (const std::string why = why_not_unit_quaternion(n); !why.empty())
       throw recording_error_at(gt, line, "qx qy qz qw " + why);
-    check_increasing(d.poses.empty() ? 0 : d.poses.back().t, p.t, !d.poses.empty(), gt, line);
+    check_increasing(d.poses.empty() ? 0 : d.poses.back().t, d.poses.empty() ? 0 : d.poses.back().line, p.t, gt, line);
     d.poses.push_back(p);
   });
   if (d.poses.size() < 2) throw recording_error_in(gt, "fewer than two ground-truth samples");

@@ -3,10 +3,17 @@
 // (t x y z qx qy qz qw) and calib.txt (fx fy cx cy k1 k2 p1 p2 k3). Read as
 // they are; errors name the file and the line.
 #pragma once
+#include <cmath>
+#include <cstdint>
 #include <string>
 #include <vector>
 
 namespace lumavel::host {
+
+// A dataset time (s) as the nanoseconds of the recording made from it, to
+// the nearest: the one conversion, so that times the reader finds
+// increasing are increasing where they are written.
+inline uint64_t slider_time_ns(double t_s) { return static_cast<uint64_t>(std::llround(t_s * 1e9)); }
 
 struct SliderFrame {
   double t = 0;      // s
@@ -27,8 +34,8 @@ struct SliderCalib {
 };
 
 struct SliderDataset {
-  std::vector<SliderFrame> frames;  // times strictly increasing
-  std::vector<SliderPose> poses;    // times strictly increasing
+  std::vector<SliderFrame> frames;  // times strictly increasing, to the nanosecond
+  std::vector<SliderPose> poses;    // times strictly increasing, to the nanosecond
   SliderCalib calib;
 };
 
