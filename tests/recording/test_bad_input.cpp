@@ -5,6 +5,7 @@
 
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -359,6 +360,21 @@ TEST(BadInput, SensorYamlWithCarriageReturnOnlyLineEnds) {
   STRCMP_CONTAINS("lines must end with LF or CR LF (CR-only line ends?)", load_error().c_str());
   fixture::write_text(y, crlf);
   STRCMP_EQUAL("(no error)", load_error().c_str());
+}
+
+// A NUL byte in a value was taken by yaml-cpp for an escape (was:
+// 'sensor.yaml:16: YAML syntax error: unknown escape character: ' and a
+// line break, at the line after).
+TEST(BadInput, SensorYamlWithANulByteNamesItsLine) {
+  const std::string y = m + "cam0/sensor.yaml";
+  std::string t = fixture::read_text(y);
+  const size_t at = t.find("rate_hz: ");
+  const long line = static_cast<long>(std::count(t.begin(), t.begin() + static_cast<long>(at), '\n')) + 1;
+  t.insert(t.find('\n', at), std::string("\0", 1));
+  fixture::write_text(y, t);
+  const std::string e = load_error();
+  STRCMP_CONTAINS((y + ":" + std::to_string(line) + ": a NUL byte at character ").c_str(), e.c_str());
+  STRCMP_CONTAINS(": a YAML file is text (a binary or damaged file?)", e.c_str());
 }
 
 TEST(BadInput, SensorYamlWrongType) {

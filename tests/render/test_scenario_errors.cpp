@@ -163,6 +163,13 @@ TEST(ScenarioErrors, CarriageReturnOnlyLineEndsAreNamed) {
   STRCMP_EQUAL("(accepted)", error_of(crlf).c_str());
 }
 
+// A NUL byte was taken by yaml-cpp for an escape (was: 'bad.yaml:4: YAML
+// syntax: unknown escape character: j').
+TEST(ScenarioErrors, ANulByteNamesItsLine) {
+  STRCMP_EQUAL("bad.yaml:4: a NUL byte at character 14: a YAML file is text (a binary or damaged file?)",
+               error_of(replace(kGood, "  rate_hz: 60", std::string("  rate_hz: 60\0junk", 18))).c_str());
+}
+
 TEST(ScenarioErrors, MissingFileIsNamed) {
   try {
     load_scenario("/nonexistent/scenario.yaml");

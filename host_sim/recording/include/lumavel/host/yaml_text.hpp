@@ -59,10 +59,11 @@ inline NotOneDocument why_not_one_document(const std::string& text) {
   return out;
 }
 
-// The first line that holds a carriage return before more text, with
-// why_cr_inside_line's reason. yaml-cpp ends lines at LF and CR LF only: a
-// file of CR-only line ends is one long line to it, read as a comment
-// ("empty file") when it starts with '#', as nonsense otherwise.
+// The first line that yaml-cpp would misread, and why: a carriage return
+// before more text (why_cr_inside_line's reason; yaml-cpp ends lines at LF
+// and CR LF only, so a file of CR-only line ends is one long line to it, read
+// as a comment, "empty file", when it starts with '#'), or a NUL byte (taken
+// for an escape: "unknown escape character: j", at the line after).
 struct BadLine {
   long line;  // 0: none
   std::string why;
@@ -70,8 +71,10 @@ struct BadLine {
 inline BadLine why_bad_line(const std::string& text) {
   BadLine out{0, ""};
   for_each_line(text, [&](long n, const std::string& l) {
-    if (out.line == 0)
-      if (std::string why = why_cr_inside_line(l); !why.empty()) out = {n, why};
+    if (out.line != 0) return;
+    if (std::string why = why_cr_inside_line(l); !why.empty()) out = {n, why};
+    else if (const size_t nul = l.find('\0'); nul != std::string::npos)
+      out = {n, "a NUL byte at character " + std::to_string(nul + 1) + ": a YAML file is text (a binary or damaged file?)"};
   });
   return out;
 }
