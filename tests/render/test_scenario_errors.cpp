@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cstdio>
 #include <cstdlib>
 
 #include <string>
@@ -113,6 +114,25 @@ TEST(ScenarioErrors, MissingPhotoFile) {
       error_of(replace(kGood, "{type: uniform, value: 90}", "{type: photo, file: /nonexistent/x.png, size_m: [1, 1]}"));
   STRCMP_CONTAINS("bad.yaml:13:", e.c_str());
   STRCMP_CONTAINS("/nonexistent/x.png", e.c_str());
+}
+
+// "p.pgm\0junk" (a YAML escape) named p.pgm to the system (was: that photo
+// rendered, exit 0), as a NUL in a recording table's file name is refused.
+TEST(ScenarioErrors, APhotoNameWithANulByteIsRefused) {
+  char dir[] = "/tmp/lumavel_photo_nul_XXXXXX";
+  CHECK(mkdtemp(dir) != nullptr);
+  const std::string photo = std::string(dir) + "/p.pgm";
+  std::FILE* f = std::fopen(photo.c_str(), "wb");
+  std::fputs("P5\n2 2\n255\n\x10\x80\x40\xf0", f);
+  std::fclose(f);
+  const std::string e = error_of(replace(kGood, "{type: uniform, value: 90}",
+                                         "{type: photo, file: \"" + photo + "\\0junk\", size_m: [1, 1]}"));
+  std::remove(photo.c_str());
+  rmdir(dir);
+  STRCMP_EQUAL(("bad.yaml:13: photo file name '" + photo + "' is followed by a NUL byte inside the name (character " +
+                std::to_string(photo.size() + 1) + "): the system would read the name only up to it")
+                   .c_str(),
+               e.c_str());
 }
 
 TEST(ScenarioErrors, BadPlaneGeometry) {

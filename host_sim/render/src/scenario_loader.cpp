@@ -399,6 +399,8 @@ void read_pattern(const Reader& r, const YAML::Node& n, PatternSpec& p,
     p.kind = PatternKind::Photo;
     const YAML::Node f = n["file"];
     if (!f || !f.IsScalar()) r.fail(n, "photo pattern needs 'file'");
+    // "a.png\0junk" (a YAML escape) would open a.png (was: rendered, exit 0).
+    if (const std::string why = why_nul_in_name(f.Scalar()); !why.empty()) r.fail(f, "photo file name " + why);
     p.file = resolve_path(f.Scalar(), base_dir);
     p.file_at = r.at(f);
     if (const std::string why = why_not_a_file(p.file); !why.empty()) r.fail(f, "photo '" + p.file + "' " + why);

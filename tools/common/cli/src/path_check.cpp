@@ -61,7 +61,7 @@ std::string why_nul_in_name(const std::string& name) {
   const size_t nul = name.find('\0');
   if (nul == std::string::npos) return "";
   return "'" + shown_path(name.substr(0, nul)) + "' is followed by a NUL byte inside the name (character " +
-         std::to_string(nul + 1) + "): a damaged row";
+         std::to_string(nul + 1) + "): the system would read the name only up to it";
 }
 
 std::string FrameNames::why_repeated(const std::string& name, long line, const std::string& path) {

@@ -78,9 +78,9 @@ bool path_present(const std::string& path);
 // True when `path` is `folder` or lies inside it, symlinks resolved (what a
 // remove_all of `folder` would take with it).
 bool lies_inside(const std::string& path, const std::string& folder);
-// "" when the file name `name` (from a table) has no NUL byte; otherwise
-// "'a.png' is followed by a NUL byte inside the name (character 6): a damaged
-// row" - the system would read the name up to the NUL and open a.png.
+// "" when the file name `name` (from a table or a scenario) has no NUL byte;
+// otherwise "'a.png' is followed by a NUL byte inside the name (character
+// 6): the system would read the name only up to it" (and open a.png).
 std::string why_nul_in_name(const std::string& name);
 // The frame files named by the rows of a table (a cam*/data.csv, a slider
 // dataset's images.txt): each row names its own image, a repeated one would
