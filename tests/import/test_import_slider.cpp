@@ -162,6 +162,33 @@ TEST(ImportSlider, AFileAsTheRecordingFolderIsRefused) {
   }
 }
 
+// A dangling link as OUT_REC, or as OUT_REC/mav0, was taken for nothing there
+// (was: 'OUT_REC/mav0/cam0/data: cannot create folder: File exists').
+TEST(ImportSlider, ADanglingLinkAsTheRecordingFolderIsSaid) {
+  fixture::TempDir tmp;
+  write_dataset(tmp.path() + "/data");
+  std::filesystem::create_symlink(tmp.path() + "/moved", tmp.path() + "/out");
+  ImportSliderOptions o;
+  o.baseline = 0.02;
+  try {
+    import_slider(tmp.path() + "/data", tmp.path() + "/out", o);
+    FAIL("a dangling link was taken as the recording folder");
+  } catch (const RecordingError& e) {
+    STRCMP_CONTAINS(("out: is a symbolic link to " + tmp.path() + "/moved, which does not exist").c_str(), e.what());
+  }
+  std::filesystem::create_directory(tmp.path() + "/rec");
+  std::filesystem::create_symlink(tmp.path() + "/moved", tmp.path() + "/rec/mav0");
+  try {
+    import_slider(tmp.path() + "/data", tmp.path() + "/rec", o);
+    FAIL("a dangling mav0 was taken for none");
+  } catch (const RecordingError& e) {
+    STRCMP_CONTAINS("rec/mav0: already exists (use --force to replace it)", e.what());
+  }
+  o.force = true;
+  import_slider(tmp.path() + "/data", tmp.path() + "/rec", o);  // the link replaced by the recording
+  CHECK(std::filesystem::is_directory(tmp.path() + "/rec/mav0/cam0/data"));
+}
+
 // The frames are read as they are written: a damaged late frame left the
 // pairs before it as a recording, which 'run' then refused blaming the gyro
 // file the import had not written ("imu0/data.csv:2: no gyro samples").

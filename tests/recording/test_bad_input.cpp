@@ -568,6 +568,16 @@ TEST(BadInput, HugeFieldIsShownShortened) {
   CHECK(e.size() < 600);
 }
 
+// A ground truth that is a link to a moved file was taken for none (was:
+// 'no ground truth', no figures, exit 0), as a folder there is not.
+TEST(BadInput, GroundTruthThatIsADanglingLinkIsNotIgnored) {
+  const std::string gt = m + "state_groundtruth_estimate0/data.csv";
+  std::filesystem::remove(gt);
+  std::filesystem::create_symlink(dir.path() + "/moved.csv", gt);
+  STRCMP_EQUAL((gt + ": is a symbolic link to " + dir.path() + "/moved.csv, which does not exist").c_str(),
+               load_error().c_str());
+}
+
 // A ground truth that is there with a header only was taken for "no ground
 // truth": a run without error figures and exit 0.
 TEST(BadInput, GroundTruthWithoutSamples) {

@@ -587,6 +587,35 @@ TEST(Cli, PlotDashIsStandardOutput) {
   }
 }
 
+// A symbolic link whose target is not there is written through: refused
+// before the run when that target cannot be made (was: passed the check,
+// then 'gone.csv: cannot create the CSV: No such file or directory'); one
+// whose target can be made is written through as before.
+TEST(Cli, AnOutputThatIsADanglingLinkIsJudgedByItsTarget) {
+  rec();
+  std::filesystem::create_symlink("nowhere/x.csv", dir.path() + "/gone.csv");
+  Outcome r = sim("run rec -o gone.csv");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("lumavel-sim run: error: gone.csv (-o): is a symbolic link to nowhere/x.csv, which cannot be created: "
+                  "its folder nowhere does not exist",
+                  r.err.c_str());
+  CHECK(r.err.find("frame pairs") == std::string::npos);  // refused before the run
+  std::filesystem::create_symlink("made.csv", dir.path() + "/link.csv");
+  r = sim("run rec -q -o link.csv");
+  LONGS_EQUAL(0, r.code);
+  CHECK(fixture::read_text(dir.path() + "/made.csv").rfind("timestamp_ns,", 0) == 0);
+  // render's OUT/mav0 a dangling link: there, as an OUT/mav0 folder is (was:
+  // 'out/mav0/cam0/data: cannot create folder: File exists', --force or not).
+  std::filesystem::create_directory(dir.path() + "/out");
+  std::filesystem::create_symlink("moved", dir.path() + "/out/mav0");
+  const std::string render = "render '" LUMAVEL_SOURCE_DIR "/host_sim/scenarios/paper_sim_aligned.yaml' out --resolution 40x30 --duration 0.1 -q";
+  r = sim(render);
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("lumavel-sim render: error: out/mav0 already exists (use --force to replace it)", r.err.c_str());
+  LONGS_EQUAL(0, sim(render + " --force").code);
+  CHECK(std::filesystem::is_directory(dir.path() + "/out/mav0/cam0/data"));
+}
+
 // An output that cannot be written is refused before the work that fills it
 // (a 30 s calibration, a run), naming the option, the path and the reason.
 TEST(Cli, UnwritableOutputsAreRefusedBeforeTheWork) {

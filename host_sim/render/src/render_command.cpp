@@ -96,7 +96,8 @@ int render_to_folder(RenderArgs& a) {
   render::check_render_size(s);
   check_before_render(s, a.out);
   const std::string mav0 = a.out + "/mav0";
-  if (std::filesystem::exists(mav0)) {
+  std::error_code not_there;  // (symlink_status: a dangling link is there too, the writer cannot make mav0 on it)
+  if (std::filesystem::exists(std::filesystem::symlink_status(mav0, not_there))) {
     if (!a.force) throw std::runtime_error(mav0 + " already exists (use --force to replace it)");
     // --force deleted the scenario and its photos with the old recording when
     // they lay inside it: the scenario silently (already read), a photo with

@@ -16,10 +16,29 @@
 namespace lumavel::host {
 namespace {
 
-// The reason stat() failed, in words.
-std::string stat_failure(int err) {
+// Where the symbolic link `path` leads, through any links after it, when
+// nothing is there (a dangling link); "" when `path` is no symbolic link.
+std::string dangling_link_target(const std::string& path) {
+  namespace fs = std::filesystem;
+  struct stat st {};
+  fs::path p = path;
+  for (int hops = 0; ::lstat(p.c_str(), &st) == 0 && S_ISLNK(st.st_mode); ++hops) {
+    std::error_code ec;
+    const fs::path to = fs::read_symlink(p, ec);
+    if (ec || hops == 40) return "";  // unreadable, or a loop (stat says ELOOP for that)
+    p = to.is_absolute() ? to : p.parent_path() / to;
+  }
+  return p == fs::path(path) ? "" : p.lexically_normal().string();
+}
+
+// The reason stat() of `path` failed with `err`, in words.
+std::string stat_failure(const std::string& path, int err) {
   switch (err) {
-    case ENOENT: return "does not exist";
+    case ENOENT: {
+      // A link to a moved file is something there, not nothing: said as what it is.
+      const std::string to = dangling_link_target(path);
+      return to.empty() ? "does not exist" : "is a symbolic link to " + shown_path(to) + ", which does not exist";
+    }
     case ENOTDIR: return "does not exist (a part of the path before it is a file, not a folder)";
     case ELOOP: return "is a loop of symbolic links (or the path has too many of them)";
     case ENAMETOOLONG:
@@ -112,7 +131,7 @@ CharDevice char_device_of(const std::string& path) {
 std::string why_not_a_device(const std::string& path, const std::string& what, const std::string& subsystem,
                              const std::string& name) {
   struct stat st {};
-  if (::stat(path.c_str(), &st) != 0) return stat_failure(errno);
+  if (::stat(path.c_str(), &st) != 0) return stat_failure(path, errno);
   if (S_ISCHR(st.st_mode)) {
     const CharDevice d = char_device_of(path);
     const bool other = (!subsystem.empty() && !d.subsystem.empty() && d.subsystem != subsystem) ||
@@ -129,7 +148,7 @@ std::string why_not_a_device(const std::string& path, const std::string& what, c
 std::string why_not_a_file(const std::string& path, const std::string& what) {
   struct stat st {};
   if (path.empty()) return "an empty path, not a " + what;
-  if (::stat(path.c_str(), &st) != 0) return stat_failure(errno);
+  if (::stat(path.c_str(), &st) != 0) return stat_failure(path, errno);
   if (S_ISREG(st.st_mode)) return {};
   if (S_ISDIR(st.st_mode)) return "is a folder, not a " + what;
   return std::string("is ") + special_kind(st.st_mode) + ", not a " + what;
@@ -138,7 +157,7 @@ std::string why_not_a_file(const std::string& path, const std::string& what) {
 std::string why_not_a_folder(const std::string& path, const std::string& what) {
   struct stat st {};
   if (path.empty()) return "an empty path, not a " + what;
-  if (::stat(path.c_str(), &st) != 0) return stat_failure(errno);
+  if (::stat(path.c_str(), &st) != 0) return stat_failure(path, errno);
   if (S_ISDIR(st.st_mode)) return {};
   if (S_ISREG(st.st_mode)) return "is a file, not a " + what;
   return std::string("is ") + special_kind(st.st_mode) + ", not a " + what;
@@ -166,7 +185,14 @@ std::string why_not_writable(const std::string& path, const std::string& what) {
   // elsewhere a file named '-' was made, unsaid.
   if (path == "-") return why_dash_is_not_an_output(what);
   if (::stat(path.c_str(), &st) == 0) return S_ISDIR(st.st_mode) ? "is a folder, not a " + what : std::string();
-  if (errno != ENOENT) return stat_failure(errno);
+  if (errno != ENOENT) return stat_failure(path, errno);
+  // A dangling symbolic link is written through: its target must be creatable
+  // (was: passed, then 'cannot create the CSV: No such file or directory', or
+  // for an output folder 'cannot create folder: File exists').
+  if (const std::string to = dangling_link_target(path); !to.empty()) {
+    const std::string why = why_not_writable(to, what);
+    return why.empty() ? why : "is a symbolic link to " + shown_path(to) + ", which " + why;
+  }
   const size_t slash = path.find_last_of('/');
   const std::string folder = slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
   if (const std::string why = why_not_a_folder(folder); !why.empty())
@@ -213,7 +239,9 @@ std::FILE* open_for_writing(const std::string& path, const char* mode, std::stri
 
 bool path_present(const std::string& path) {
   struct stat st {};
-  if (::stat(path.c_str(), &st) == 0) return true;
+  // lstat: a dangling symbolic link is something there (a ground truth that
+  // is a link to a moved file was taken for no ground truth, exit 0).
+  if (::lstat(path.c_str(), &st) == 0) return true;
   return errno != ENOENT;
 }
 

@@ -14,7 +14,8 @@ namespace lumavel::host {
 // "" when `path` (symlinks followed) is a regular file; otherwise the reason,
 // with `what` the kind of file expected, e.g. "does not exist", "is a folder,
 // not a configuration file", "is a FIFO (named pipe), not a configuration
-// file", "is a loop of symbolic links".
+// file", "is a loop of symbolic links", "is a symbolic link to /gone/x.csv,
+// which does not exist".
 std::string why_not_a_file(const std::string& path, const std::string& what = "file");
 // What the kernel says a character device node is, from sysfs
 // (/sys/dev/char/MAJ:MIN): its subsystem ("hidraw", "hidg", "misc", "mem",
@@ -39,7 +40,9 @@ std::string why_not_a_folder(const std::string& path, const std::string& what = 
 // "" when a `what` can be written at `path`: an existing file or special file
 // (written in place), or a new name in a folder that can be written to;
 // otherwise the reason, e.g. "is a folder, not a plot file", "cannot be
-// created: its folder out does not exist", or for "-" (standard output,
+// created: its folder out does not exist", "is a symbolic link to
+// /gone/x.csv, which cannot be created: its folder /gone does not exist"
+// (a dangling link is written through), or for "-" (standard output,
 // which the callers that can write there take before asking) "'-' stands for
 // standard output, where no plot file is written: ...".
 std::string why_not_writable(const std::string& path, const std::string& what = "file");
@@ -73,7 +76,8 @@ constexpr unsigned long long kMaxTextFileBytes = 1ull << 20;
 // a file holds, e.g. "a sensor.yaml holds a few keys".
 std::string why_too_big_for_text(const std::string& path, const std::string& holds);
 // False only when nothing is at `path` (an optional input that is absent):
-// anything else there, readable or not, is for why_not_a_file to judge.
+// anything else there, readable or not, a dangling symbolic link included,
+// is for why_not_a_file to judge.
 bool path_present(const std::string& path);
 // True when `path` is `folder` or lies inside it, symlinks resolved (what a
 // remove_all of `folder` would take with it).
