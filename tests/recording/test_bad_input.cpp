@@ -568,6 +568,33 @@ TEST(BadInput, HugeFieldIsShownShortened) {
   CHECK(e.size() < 600);
 }
 
+// What a file holds goes into a message as a field does (shown_path): a NUL
+// in a header column cut the message short, its rule lost (was: "first
+// column is '#tim"), an escape sequence in a value went to the terminal as
+// it was, and a 1 MB header or value went out whole.
+TEST(BadInput, HeaderAndYamlTextInMessagesAreShownLikeFields) {
+  const std::string csv = m + "imu0/data.csv";
+  std::vector<std::string> l = fixture::read_lines(csv);
+  l[0] = std::string("#tim\0estamp [ns]", 16) + l[0].substr(l[0].find(','));
+  fixture::write_lines(csv, l);
+  STRCMP_CONTAINS((csv + ":1: first column is '#tim\\x00estamp [ns]', expected '#timestamp [ns]'").c_str(),
+                  load_error().c_str());
+  l[0] = "#timestamp [ns]," + std::string(1 << 20, 'x');
+  fixture::write_lines(csv, l);
+  std::string e = load_error();
+  STRCMP_CONTAINS(":1: header column 1 is 'xxx", e.c_str());
+  STRCMP_CONTAINS("(1048576 characters)', expected 'w_RS_S_x [rad s^-1]'", e.c_str());
+  CHECK(e.size() < 600);
+  fixture::write_recording(rec, o);
+  const std::string y = m + "cam0/sensor.yaml";
+  fixture::replace_in(y, "camera_model: pinhole", "camera_model: pin\x1b[2Jhole");
+  STRCMP_CONTAINS("camera_model 'pin\\x1B[2Jhole' is not supported (pinhole)", load_error().c_str());
+  fixture::replace_in(y, "camera_model: pin\x1b[2Jhole", "camera_model: " + std::string(300000, 'p'));
+  e = load_error();
+  STRCMP_CONTAINS("(300000 characters)' is not supported (pinhole)", e.c_str());
+  CHECK(e.size() < 600);
+}
+
 // A ground truth that is a link to a moved file was taken for none (was:
 // 'no ground truth', no figures, exit 0), as a folder there is not.
 TEST(BadInput, GroundTruthThatIsADanglingLinkIsNotIgnored) {

@@ -103,6 +103,17 @@ TEST(ScenarioErrors, UnknownWord) {
   STRCMP_CONTAINS("spiral", e.c_str());
 }
 
+// A YAML escape ("left\0x", "\e[2J") went into the message as it was: cut
+// short at the NUL (was: "'look' = 'left"), an escape sequence sent to the
+// terminal; a 1 MB word went out whole.
+TEST(ScenarioErrors, ValuesInMessagesAreShownLikeFields) {
+  STRCMP_EQUAL("bad.yaml:7: 'type' = 'spi\\x00ral\\x1B[2J' is not one of: straight, arc",
+               error_of(replace(kGood, "type: straight", "type: \"spi\\0ral\\e[2J\"")).c_str());
+  const std::string e = error_of(replace(kGood, "type: straight", "type: " + std::string(300000, 's')));
+  STRCMP_CONTAINS("(300000 characters)' is not one of: straight, arc", e.c_str());
+  CHECK(e.size() < 600);
+}
+
 TEST(ScenarioErrors, ArcNeedsRadiusAndTurn) {
   const std::string e = error_of(replace(kGood, "type: straight", "type: arc"));
   STRCMP_CONTAINS("bad.yaml:7:", e.c_str());

@@ -123,17 +123,17 @@ void for_each_csv_row(const std::string& path, const std::vector<std::string>& c
     throw recording_error_at(path, 1,
                              "missing header line: expected '#timestamp [ns]," + join(columns) + "'");
   if (header[0] != "#timestamp [ns]" && header[0] != "#timestamp")
-    throw recording_error_at(path, 1, "first column is '" + header[0] + "', expected '#timestamp [ns]'");
+    throw recording_error_at(path, 1, "first column is '" + shown(header[0]) + "', expected '#timestamp [ns]'");
   for (size_t i = 0; i < columns.size(); ++i) {
     if (i + 1 >= header.size())
       throw recording_error_at(path, 1, "missing column '" + columns[i] + "' in the header");
     if (header[i + 1] != columns[i])
       throw recording_error_at(path, 1,
-                               "header column " + std::to_string(i + 1) + " is '" + header[i + 1] +
+                               "header column " + std::to_string(i + 1) + " is '" + shown(header[i + 1]) +
                                    "', expected '" + columns[i] + "'");
   }
   if (header.size() > columns.size() + 1)
-    throw recording_error_at(path, 1, "unexpected extra column '" + header[columns.size() + 1] + "' in the header");
+    throw recording_error_at(path, 1, "unexpected extra column '" + shown(header[columns.size() + 1]) + "' in the header");
 
   CsvRow row;
   bool any = false;

@@ -49,7 +49,7 @@ void check_unique_keys(const YAML::Node& map, const std::string& path, const std
     const auto [at, fresh] = seen.emplace(key, line_of(kv.first));
     if (!fresh)
       throw recording_error_at(path, line_of(kv.first),
-                               "key '" + key + "' is given again (first at line " + std::to_string(at->second) +
+                               "key '" + shown_path(key) + "' is given again (first at line " + std::to_string(at->second) +
                                    "): one value per key");
     if (depth == 0 && kv.second.IsMap()) check_unique_keys(kv.second, path, key + ".", depth + 1);
   }
@@ -116,10 +116,10 @@ double number(const YAML::Node& n, const std::string& what, const std::string& p
     v = n.as<double>();
   } catch (const YAML::Exception&) {
     throw recording_error_at(path, line_of(n), what + ": expected a number" +
-                                                   (n.IsScalar() ? ", got '" + n.Scalar() + "'" : std::string()));
+                                                   (n.IsScalar() ? ", got '" + shown_path(n.Scalar()) + "'" : std::string()));
   }
   if (!std::isfinite(v))
-    throw recording_error_at(path, line_of(n), what + ": value is not finite, got '" + n.Scalar() + "'");
+    throw recording_error_at(path, line_of(n), what + ": value is not finite, got '" + shown_path(n.Scalar()) + "'");
   return v;
 }
 
@@ -143,7 +143,7 @@ void check_sensor_type(const YAML::Node& root, const char* want, const std::stri
   const YAML::Node n = require(root, "sensor_type", path);
   const std::string got = text_of(n, "sensor_type", path);
   if (got != want)
-    throw recording_error_at(path, line_of(n), "sensor_type is '" + got + "', expected '" + want + "'");
+    throw recording_error_at(path, line_of(n), "sensor_type is '" + shown_path(got) + "', expected '" + want + "'");
 }
 
 Pose read_pose(const YAML::Node& root, const std::string& path) {
@@ -286,7 +286,7 @@ CameraSensor read_camera_yaml(const std::string& path) {
   c.height = static_cast<int>(r[1]);
   const YAML::Node model = require(root, "camera_model", path);
   if (text_of(model, "camera_model", path) != "pinhole")
-    throw recording_error_at(path, line_of(model), "camera_model '" + model.Scalar() + "' is not supported (pinhole)");
+    throw recording_error_at(path, line_of(model), "camera_model '" + shown_path(model.Scalar()) + "' is not supported (pinhole)");
   const YAML::Node in = require(root, "intrinsics", path);
   const std::vector<double> k = numbers(in, "intrinsics", 4, path);
   c.line.intrinsics = line_of(in);
@@ -302,7 +302,7 @@ CameraSensor read_camera_yaml(const std::string& path) {
   c.distortion_model = text_of(dm, "distortion_model", path);
   if (c.distortion_model != "radial-tangential")
     throw recording_error_at(path, line_of(dm),
-                             "distortion_model '" + c.distortion_model + "' is not supported (radial-tangential)");
+                             "distortion_model '" + shown_path(c.distortion_model) + "' is not supported (radial-tangential)");
   const YAML::Node dc = require(root, "distortion_coefficients", path);
   c.distortion = numbers(dc, "distortion_coefficients", 4, path);
   c.line.distortion = line_of(dc);

@@ -58,7 +58,7 @@ class Reader {
         const std::string key = kv.first.Scalar();
         const int line = kv.first.Mark().line + 1;
         if (const auto at = seen.find(key); at != seen.end())
-          fail(kv.first, "key '" + key + "' is given again (first at line " + std::to_string(at->second) +
+          fail(kv.first, "key '" + shown_path(key) + "' is given again (first at line " + std::to_string(at->second) +
                              "): one value per key");
         seen.emplace(key, line);
         check_unique_keys(kv.second, budget, limit);
@@ -96,7 +96,7 @@ class Reader {
       if (!ok) {
         std::string list;
         for (const char* a : allowed) list += std::string(list.empty() ? "" : ", ") + a;
-        fail(kv.first, "unknown key '" + key + "' in '" + where + "' (allowed: " + list + ")");
+        fail(kv.first, "unknown key '" + shown_path(key) + "' in '" + where + "' (allowed: " + list + ")");
       }
     }
   }
@@ -107,7 +107,7 @@ class Reader {
     try {
       v = n.as<double>();
     } catch (const YAML::Exception&) {
-      fail(n, "'" + key + "' must be a number, got '" + n.Scalar() + "'");
+      fail(n, "'" + key + "' must be a number, got '" + shown_path(n.Scalar()) + "'");
     }
     if (!std::isfinite(v)) fail(n, "'" + key + "' must be finite");
     if (v < lo || v > hi) {
@@ -152,7 +152,7 @@ class Reader {
       if (v == a) return v;
       list += std::string(list.empty() ? "" : ", ") + a;
     }
-    fail(n, std::string("'") + key + "' = '" + v + "' is not one of: " + list);
+    fail(n, std::string("'") + key + "' = '" + shown_path(v) + "' is not one of: " + list);
   }
 
   // A text value (description, a plane's name): a list or a map there threw
@@ -249,7 +249,7 @@ void read_photometric(const Reader& r, const YAML::Node& n, CameraSpec& c) {
   if (const YAML::Node pn = n["preset"]) {
     if (!pn.IsScalar()) r.fail(pn, "'preset' must be a word");
     const PhotometricPreset* p = find_photometric_preset(pn.Scalar());
-    if (!p) r.fail(pn, "'preset' = '" + pn.Scalar() + "' is not one of: " + photometric_preset_names());
+    if (!p) r.fail(pn, "'preset' = '" + shown_path(pn.Scalar()) + "' is not one of: " + photometric_preset_names());
     c.photometric = p->cams;
     c.photometric_preset = p->name;
   }
@@ -403,7 +403,7 @@ void read_pattern(const Reader& r, const YAML::Node& n, PatternSpec& p,
     if (const std::string why = why_nul_in_name(f.Scalar()); !why.empty()) r.fail(f, "photo file name " + why);
     p.file = resolve_path(f.Scalar(), base_dir);
     p.file_at = r.at(f);
-    if (const std::string why = why_not_a_file(p.file); !why.empty()) r.fail(f, "photo '" + p.file + "' " + why);
+    if (const std::string why = why_not_a_file(p.file); !why.empty()) r.fail(f, "photo '" + shown_path(p.file) + "' " + why);
     if (!std::ifstream(p.file)) r.fail(f, "cannot open photo '" + p.file + "'");
     if (!n["size_m"]) r.fail(n, "photo pattern needs 'size_m: [width, height]'");
     const auto v = r.list(n["size_m"], "size_m", 2, 1e-4, 1e6);
@@ -575,7 +575,7 @@ Scenario parse_scenario(const std::string& text, const std::string& name,
         r.fail(n, std::string("'start_ns' must be a whole number of nanoseconds in 0..4e18 (timestamps must stay "
                               "within signed 64 bits)") +
                       (w.problem == WholeText::Problem::kLeadingZero ? ", written without a leading zero" : "") +
-                      ", not '" + (n.IsScalar() ? n.Scalar() : std::string("?")) + "'");
+                      ", not '" + (n.IsScalar() ? shown_path(n.Scalar()) : std::string("?")) + "'");
       s.start_ns = v;
     }
     s.groundtruth_rate_hz = r.num(root, "groundtruth_rate_hz", 200, 1, 100000);
