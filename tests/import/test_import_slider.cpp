@@ -308,6 +308,11 @@ TEST(ImportSlider, DamagedDatasetsAreRefusedNamingTheLine) {
        "calib.txt:1: unexpected extra field '9'"},
       {[&] { line5("groundtruth.txt", [](const std::string& l) { return l.substr(0, l.size() - 3) + "0.0"; }); },
        "groundtruth.txt:5: qx qy qz qw is not a unit quaternion (norm 0)"},
+      // A camera that turns: the turn was written as none (was: exit 0).
+      {[&] { line5("groundtruth.txt", [](const std::string& l) { return l.substr(0, l.rfind(" 0.0 0.0 0.0 1.0")) + " 0.0 0.043619 0.0 0.999048"; }); },
+       "groundtruth.txt:5: the camera is turned 5 deg from the dataset's axes (qx qy qz qw = 0 0.043619 0 0.999048): "
+       "the import takes the positions as camera axes and makes cam1 from cam0's frames by time shift with a zero gyro, "
+       "which holds for a slider that does not turn: at most 1.1458 deg (a pixel at fx = 50 px)"},
       // The recording's physical bounds (was: exit 0, a speed of 2.5e301 m/s written).
       {[&] { line5("groundtruth.txt", [](const std::string& l) { const size_t a = l.find(' ') + 1; return l.substr(0, a) + "1e300" + l.substr(l.find(' ', a)); }); },
        "groundtruth.txt:5: x: 1e+300 m is beyond +-1e+07 m"},
