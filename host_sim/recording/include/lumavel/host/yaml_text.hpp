@@ -1,7 +1,8 @@
 // The text of a YAML file line by line, for what yaml-cpp's single-document
 // Load does not say (a second document after '---', text after a '...' end
-// marker, CR-only line ends): the sensor.yaml reader and the scenario loader
-// scan for those in the text (yaml-cpp's LoadAll can loop on malformed input).
+// marker, CR-only line ends, NUL bytes): the sensor.yaml reader and the
+// scenario loader scan for those in the text (yaml-cpp's LoadAll can loop on
+// malformed input).
 #pragma once
 #include <algorithm>
 #include <string>
