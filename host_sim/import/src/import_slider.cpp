@@ -133,7 +133,7 @@ void check_does_not_turn(const std::vector<SliderPose>& poses, double fx, const 
     const double n = std::sqrt(p.q[0] * p.q[0] + p.q[1] * p.q[1] + p.q[2] * p.q[2] + p.q[3] * p.q[3]);
     const double turn = 2 * std::acos(std::min(1.0, std::fabs(p.q[3]) / n));
     if (turn <= limit) continue;
-    char b[320];
+    char b[512];
     std::snprintf(b, sizeof b,
                   "the camera is turned %.5g deg from the dataset's axes (qx qy qz qw = %g %g %g %g): the import takes "
                   "the positions as camera axes and makes cam1 from cam0's frames by time shift with a zero gyro, "
