@@ -91,7 +91,10 @@ bool TimeOfFlight::search(const TofTrackInput& in, int trail, int64_t want_ns, i
     motion += d * d;
   }
   bool found = false;
-  int64_t best_dd = 1, best_span = 0;  // of the best segment, for its uncertainty
+  int64_t best_dd = 1, best_span = 0;  // of the best segment, for its uncertainty ...
+  int64_t best_fr = -1;                // ... its chord's fraction (-1: at a frame) ...
+  uint16_t best_back = 0;              // ... and place, for its bend (chord_time)
+  int32_t best_step[kMaxKernels];
   int64_t turned = 0;  // |rotation| summed frame by frame back to a (Q28): a turn that reverses does not cancel
   for (uint16_t back = 0; back + 1 < count_; ++back) {
     const TofFrame& b = at(back);
@@ -144,6 +147,7 @@ bool TimeOfFlight::search(const TofTrackInput& in, int trail, int64_t want_ns, i
     // summed so that no partial sum passes 2^62).
     const int64_t slack = dd / kVertexSlackDiv;
     int64_t fr = 0, res = 0;
+    bool inside = false;
     if (ed < 0) {
       if (ed < -slack) continue;
       res = ee;
@@ -154,7 +158,7 @@ bool TimeOfFlight::search(const TofTrackInput& in, int trail, int64_t want_ns, i
     } else {
       fr = fx::fraction_q16(ed, dd);  // Q16 in [0, 1] (0 <= ed <= dd)
       res = ee - fx::shr_round(fr * ed, 16);
-      fr = chord_time(lead, back, in.count, step_q24, dd, fr);
+      inside = true;
     }
     if (res < 0) res = 0;
     if (res > (kMotionResidualSqQ16 * (motion >> 16))) continue;
@@ -172,7 +176,25 @@ bool TimeOfFlight::search(const TofTrackInput& in, int trail, int64_t want_ns, i
     out.turn = static_cast<AngleQ28>(std::min<int64_t>(turned, fx::kInt32Max));
     best_dd = dd;
     best_span = span;
+    best_fr = inside ? fr : -1;
+    best_back = back;
+    for (uint8_t k = 0; k < in.count; ++k) best_step[k] = step_q24[k];
     out.y_then = a.y + static_cast<TravelQ16Ns>((fx::travel_between(b.y, a.y) * fr) >> 16);
+  }
+  if (found && best_fr >= 0) {
+    // The chosen point's time along its segment's bend (chord_time; the
+    // choice and the gates took the chord's: the shift is at most
+    // kTofChordMaxShift of a frame, and one segment's bend costs a division).
+    const int64_t fr = chord_time(lead, best_back, in.count, best_step, best_dd, best_fr);
+    if (fr != best_fr) {
+      const TofFrame& b = at(best_back);
+      const TofFrame& a = at(static_cast<uint16_t>(best_back + 1));
+      const int64_t tau = static_cast<int64_t>(now.t_ns) - (static_cast<int64_t>(a.t_ns) + ((best_span * fr) >> 16));
+      if (tau > 0) {
+        out.stau_ns = trail == 0 ? tau : -tau;
+        out.y_then = a.y + static_cast<TravelQ16Ns>((fx::travel_between(b.y, a.y) * fr) >> 16);
+      }
+    }
   }
   if (found) {
     // Timing uncertainty: the residual over the segment's step, in frames, times the step.

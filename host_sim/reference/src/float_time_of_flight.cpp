@@ -37,6 +37,9 @@ bool FloatTimeOfFlight::search(int trail, double max_rotation, double want_ns, d
   const FloatTofFrame& now = at(0);
   const FloatTofFrame& before = at(1);
   const double motion = (now.f[trail] - before.f[trail]).squaredNorm();
+  double best_fr = -1, best_dd = 1, best_span = 0;  // the chosen point's chord (the core's)
+  size_t best_back = 0;
+  Eigen::VectorXd best_step;
   bool found = false;
   double turned = 0;  // as the core: a turn that reverses does not cancel
   for (size_t back = 0; back + 1 < ring_.size(); ++back) {
@@ -65,7 +68,8 @@ bool FloatTimeOfFlight::search(int trail, double max_rotation, double want_ns, d
     if (ed < -slack || ed - dd > slack) continue;
     const double fr0 = std::clamp(ed / dd, 0.0, 1.0);
     const double res = std::max(ed < 0 ? ee : (ed > dd ? ee - 2 * ed + dd : ee - fr0 * ed), 0.0);
-    const double fr = ed < 0 || ed > dd ? fr0 : chord_time(lead, back, d, dd, fr0);
+    const double fr = fr0;
+    const bool inside = !(ed < 0 || ed > dd);
     if (res > kTofMaxResidualVsMotion * kTofMaxResidualVsMotion * motion) continue;
     const double span = static_cast<double>(b.t_ns - a.t_ns);
     const double tau = static_cast<double>(now.t_ns) - (static_cast<double>(a.t_ns) + span * fr);
@@ -84,6 +88,21 @@ bool FloatTimeOfFlight::search(int trail, double max_rotation, double want_ns, d
     out.sig_ns = span * std::sqrt(res / dd);
     out.y_then = a.y + fr * (b.y - a.y);
     out.turn = turned;
+    best_fr = inside ? fr : -1;
+    best_back = back;
+    best_step = d;
+    best_dd = dd;
+    best_span = span;
+  }
+  if (found && best_fr >= 0) {  // the chosen point's time along its bend (the core's comment)
+    const double fr = chord_time(lead, best_back, best_step, best_dd, best_fr);
+    const FloatTofFrame& b = at(best_back);
+    const FloatTofFrame& a = at(best_back + 1);
+    const double tau = static_cast<double>(now.t_ns) - (static_cast<double>(a.t_ns) + best_span * fr);
+    if (tau > 0) {
+      out.stau_ns = trail == 0 ? tau : -tau;
+      out.y_then = a.y + fr * (b.y - a.y);
+    }
   }
   return found;
 }
