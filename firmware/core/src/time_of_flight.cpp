@@ -213,21 +213,21 @@ int64_t TimeOfFlight::chord_time(int lead, uint16_t back, uint8_t count, const i
   // On a path F(s) = a + d s + c s (1 - s) over the segment (s its time, as a
   // fraction), the closest point on the chord lies at s + (c . d / |d|^2) s (1 - s);
   // c = -D2 / 2 with D2 the path's second difference over a frame, taken at
-  // the segment's older end, its newer end, or their mean where both exist.
+  // the segment's newer end, or the mean with its older end's where that exists.
   // (The heading's own second difference, zero on a steady turn, is left out.)
   // Not on the newest segment (tau under a frame): there the travel per frame
   // outruns the finest texture and the second difference aliases
   // (`TimeOfFlight.FasterThanAFrame`: h / tau 3.1 % high with it).
   if (back == 0) return fr;
-  const bool older = back + 2 < count_, newer = true;
+  const bool older = back + 2 < count_;
+  const TofFrame& n = at(static_cast<uint16_t>(back - 1));
   const TofFrame& b = at(back);
   const TofFrame& a = at(static_cast<uint16_t>(back + 1));
   int64_t c2d = 0;  // Q44: D2 in Q20 (|.| < 2^26: four ValueQ28) times d in Q24 (< 2^28), kMaxKernels <= 64 terms
   for (uint8_t k = 0; k < count; ++k) {
-    int64_t d2 = 0;  // Q28
+    int64_t d2 = int64_t{a.f[lead][k]} - 2 * int64_t{b.f[lead][k]} + n.f[lead][k];  // Q28
     if (older) d2 += int64_t{at(static_cast<uint16_t>(back + 2)).f[lead][k]} - 2 * int64_t{a.f[lead][k]} + b.f[lead][k];
-    if (newer) d2 += int64_t{a.f[lead][k]} - 2 * int64_t{b.f[lead][k]} + at(static_cast<uint16_t>(back - 1)).f[lead][k];
-    c2d += fx::shr_round(d2, older && newer ? 9 : 8) * d[k];
+    c2d += fx::shr_round(d2, older ? 9 : 8) * d[k];
   }
   const int64_t den = dd >> 4;  // Q44
   if (den <= 0) return fr;

@@ -66,10 +66,9 @@ bool FloatTimeOfFlight::search(int trail, double max_rotation, double want_ns, d
     // The closest point, or the segment's end just beyond it (the core's comment).
     const double slack = dd * kTofVertexSlack;
     if (ed < -slack || ed - dd > slack) continue;
-    const double fr0 = std::clamp(ed / dd, 0.0, 1.0);
-    const double res = std::max(ed < 0 ? ee : (ed > dd ? ee - 2 * ed + dd : ee - fr0 * ed), 0.0);
-    const double fr = fr0;
-    const bool inside = !(ed < 0 || ed > dd);
+    const double fr = std::clamp(ed / dd, 0.0, 1.0);
+    const double res = std::max(ed < 0 ? ee : (ed > dd ? ee - 2 * ed + dd : ee - fr * ed), 0.0);
+    const bool inside = !(ed < 0 || ed > dd);  // (the chord's bend, below)
     if (res > kTofMaxResidualVsMotion * kTofMaxResidualVsMotion * motion) continue;
     const double span = static_cast<double>(b.t_ns - a.t_ns);
     const double tau = static_cast<double>(now.t_ns) - (static_cast<double>(a.t_ns) + span * fr);
@@ -110,13 +109,10 @@ bool FloatTimeOfFlight::search(int trail, double max_rotation, double want_ns, d
 double FloatTimeOfFlight::chord_time(int lead, size_t back, const Eigen::VectorXd& d, double dd, double fr) const {
   // The path's bend between the frames (the core's comment).
   if (back == 0) return fr;  // not on the newest segment (the core's comment)
-  const bool older = back + 2 < ring_.size(), newer = true;
   const Eigen::VectorXd& a = at(back + 1).f[lead];
   const Eigen::VectorXd& b = at(back).f[lead];
-  Eigen::VectorXd d2 = Eigen::VectorXd::Zero(a.size());
-  if (older) d2 += at(back + 2).f[lead] - 2 * a + b;
-  if (newer) d2 += a - 2 * b + at(back - 1).f[lead];
-  if (older && newer) d2 /= 2;
+  Eigen::VectorXd d2 = a - 2 * b + at(back - 1).f[lead];
+  if (back + 2 < ring_.size()) d2 = (d2 + at(back + 2).f[lead] - 2 * a + b) / 2;
   const double shift = std::clamp(d2.dot(d) / (2 * dd) * fr * (1 - fr), -kTofChordMaxShift, kTofChordMaxShift);
   return std::clamp(fr + shift, 0.0, 1.0);
 }
