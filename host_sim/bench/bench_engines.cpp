@@ -31,15 +31,20 @@ struct Frames {
   std::vector<size_t> gyro_end;  // imu samples pushed before frame i: [0, gyro_end[i])
 };
 
+// What `run --engine KIND --width W --height H` runs with, the rest by default.
+RunOptions run_options(EngineKind kind, int w, int h) {
+  RunOptions o;
+  o.engine = kind;
+  o.size = {w, h};
+  return o;
+}
+
 // Decoded, processed and binned as run_recording does for `kind` (the clip
 // ceiling; undistorted for lumavel's engines where the lens asks for it),
 // gyro samples split the same way.
 Frames load_frames(const Recording& rec, EngineKind kind, int w, int h) {
   Frames f;
-  RunOptions o;
-  o.engine = kind;
-  o.size = {w, h};
-  FileStereoCamera camera(rec, w, h, 2, 16, frame_processing(rec, o));
+  FileStereoCamera camera(rec, w, h, 2, 16, frame_processing(rec, run_options(kind, w, h)));
   const size_t n = static_cast<size_t>(w) * static_cast<size_t>(h);
   std::vector<uint8_t> b0(n), b1(n);
   lumavel::hal::StereoImage img{0, {b0.data(), b1.data()}, 0, 0};
@@ -72,9 +77,7 @@ double thread_cpu_s() {
 }
 
 Timing time_engine(const Recording& rec, const Frames& f, EngineKind kind, int w, int h, int repeat) {
-  RunOptions o;
-  o.engine = kind;
-  o.size = {w, h};
+  const RunOptions o = run_options(kind, w, h);
   const EstimatorSettings s = run_settings(rec, o);
   std::vector<double> us, cpu_us;
   std::vector<TrackPoint> track;
