@@ -1,7 +1,8 @@
 // The cheap_pair preset makes the two cameras differ by what
 // host_sim/scenarios/README.md says: black level 10 vs 12, gain x1.20,
 // corner fall-off 30 vs 36 %, measured on the rendered 8-bit images of a
-// black, a uniform and a textured wall; the ideal preset keeps them equal.
+// black, a uniform and a textured wall; the ideal preset keeps them equal,
+// and tone_pair differs in the tone curve alone.
 #include <CppUTest/TestHarness.h>
 
 #include <algorithm>
@@ -103,4 +104,14 @@ TEST(CameraMismatch, TexturedWallMeanAndContrast) {
   const Stats c = ring(image(twins, 0), 0, 0.3), d = ring(image(twins, 1), 0, 0.3);
   DOUBLES_EQUAL(1.0, d.mean / c.mean, 0.02);
   DOUBLES_EQUAL(1.0, d.rms / c.rms, 0.03);
+}
+
+// tone_pair: the same gain, black level and lens, cam1's tone curve gamma
+// 1.05: a uniform wall at 100 reads 255 (100 / 255)^1.05 = 95.4 in cam1.
+TEST(CameraMismatch, TonePairDiffersInTheToneCurveOnly) {
+  const Scenario s = wall(uniform(100), "tone_pair");
+  DOUBLES_EQUAL(100.0, ring(image(s, 0), 0, 2).mean, 0.5);
+  DOUBLES_EQUAL(255.0 * std::pow(100.0 / 255.0, 1.05), ring(image(s, 1), 0, 2).mean, 0.5);
+  const Scenario white = wall(uniform(255), "tone_pair");
+  DOUBLES_EQUAL(255.0, ring(image(white, 1), 0, 2).mean, 0.5);
 }

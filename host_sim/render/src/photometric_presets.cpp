@@ -42,6 +42,16 @@ std::array<PhotometricSpec, 2> differing_pair() {
   return {c0, c1};
 }
 
+// Twins but for cam1's tone curve (gamma 1.05: another sensor batch or ISP
+// setting): a difference that no gain, black level or fall-off maps, and that
+// the photometric match does not model (docs/design.md, "Beyond the model").
+std::array<PhotometricSpec, 2> tone_pair() {
+  PhotometricSpec c0;
+  PhotometricSpec c1 = c0;
+  c1.gamma = 1.05;
+  return {c0, c1};
+}
+
 std::array<PhotometricSpec, 2> cheap_pair_auto_exposure() {
   auto cams = cheap_pair();
   for (auto& c : cams) {
@@ -63,6 +73,7 @@ const PhotometricPreset kPresets[] = {
     {"cheap_pair_ae", "cheap_pair with a free-running auto-exposure per camera\n"
                       "                   (5 % rms, new value every 1.5 s)",
      cheap_pair_auto_exposure()},
+    {"tone_pair", "twins but for cam1's tone curve: gamma 1.05 (no model in the match)", tone_pair()},
 };
 
 }  // namespace
