@@ -34,7 +34,7 @@ constexpr int64_t kMaxQ8Sum = (int64_t{1} << 23) - 1;
 static_assert(sizeof(ColumnSum) == 4, "the mapped profile is Q8: 32-bit sums");
 
 int64_t abs64(int64_t v) { return v < 0 ? -v : v; }
-int64_t hold(int64_t v) { return v > kHeld ? kHeld : (v < -kHeld ? -kHeld : v); }
+int32_t hold(int64_t v) { return static_cast<int32_t>(v > kHeld ? kHeld : (v < -kHeld ? -kHeld : v)); }
 
 // x_u = (2u + 1 - W) / W in Q30: the column's centre across the image, as
 // (2u + 1 - W) times one step 2^30 / W (one 32-bit division a call instead
@@ -222,7 +222,9 @@ void PhotometricMatch::sample(int fixed, int fixed_cam, uint64_t t_other, int le
     const int64_t ho = lerp(a.heading, b.heading, u);
     const int64_t dth = fixed_leads ? ho - fx_.heading : fx_.heading - ho;
     if (abs64(dth) > max_rotation) return;
-    int64_t z[kMaxKernels], d[kMaxKernels], jj[kMaxKernels][kMatchParams];
+    // Held to |.| <= 2^22 (Q20): 32-bit values, so that every product below is
+    // one 32 x 32 -> 64 multiply on a 32-bit core, not a 64-bit one.
+    int32_t z[kMaxKernels], d[kMaxKernels], jj[kMaxKernels][kMatchParams];
     for (uint8_t k = 0; k < count; ++k) {
       const int64_t fo = lerp(a.f[other][k], b.f[other][k], u);
       const int64_t ro = lerp(a.r[other][k], b.r[other][k], u);
@@ -241,19 +243,21 @@ void PhotometricMatch::sample(int fixed, int fixed_cam, uint64_t t_other, int le
     // out the lead's dF/dtheta as well, against a heading error, left two
     // of four rows and doubled the matched walls' error: not done.)
     int64_t dd = 0;
-    for (uint8_t k = 0; k < count; ++k) dd += d[k] * d[k];
+    for (uint8_t k = 0; k < count; ++k) dd += int64_t{d[k]} * d[k];
     int rows = count;
     if (dd > 16) {
       const int64_t norm = fx::isqrt64(static_cast<uint64_t>(dd));  // Q20
-      int64_t dh[kMaxKernels];
+      int32_t dh[kMaxKernels];  // |.| <= 2^30
       // (one division: inv = 2^52 / |d| in Q20 is 2^32 / |d|; |d_k| <= |d| keeps d_k inv <= 2^52)
       const int64_t inv = (int64_t{1} << 52) / norm;
-      for (uint8_t k = 0; k < count; ++k) dh[k] = fx::shr_round(d[k] * inv, 52 - kQ);
-      auto project = [&](int64_t* v, int stride) {
+      for (uint8_t k = 0; k < count; ++k) dh[k] = static_cast<int32_t>(fx::shr_round(d[k] * inv, 52 - kQ));
+      // (|c| <= |d^| |v| < 2^23, |v| after it < 2^24: 32 bits throughout)
+      auto project = [&](int32_t* v, int stride) {
         int64_t c = 0;
-        for (uint8_t k = 0; k < count; ++k) c += dh[k] * v[k * stride];
-        c = fx::shr_round(c, kQ);
-        for (uint8_t k = 0; k < count; ++k) v[k * stride] -= fx::shr_round(dh[k] * c, kQ);
+        for (uint8_t k = 0; k < count; ++k) c += int64_t{dh[k]} * v[k * stride];
+        const int32_t c32 = static_cast<int32_t>(fx::shr_round(c, kQ));
+        for (uint8_t k = 0; k < count; ++k)
+          v[k * stride] -= static_cast<int32_t>(fx::shr_round(int64_t{dh[k]} * c32, kQ));
       };
       project(z, 1);
       for (int j = 0; j < kMatchParams; ++j) project(&jj[0][j], kMatchParams);
@@ -275,13 +279,13 @@ void PhotometricMatch::sample(int fixed, int fixed_cam, uint64_t t_other, int le
     for (uint8_t k = 0; k < count; ++k) {
       if (solved_) {
         int64_t e = z[k];
-        for (int j = 0; j < kMatchParams; ++j) e -= fx::shr_round(jj[k][j] * est_[j], kQ);
+        for (int j = 0; j < kMatchParams; ++j) e -= fx::shr_round(int64_t{jj[k][j]} * est_[j], kQ);
         ee_ += e * e;
       }
-      zz_ += z[k] * z[k];
+      zz_ += int64_t{z[k]} * z[k];
       for (int i2 = 0; i2 < kMatchParams; ++i2) {
-        for (int j = 0; j <= i2; ++j) a_[i2][j] += jj[k][i2] * jj[k][j];  // (symmetric: the lower triangle)
-        b_[i2] += jj[k][i2] * z[k];
+        for (int j = 0; j <= i2; ++j) a_[i2][j] += int64_t{jj[k][i2]} * jj[k][j];  // (symmetric: the lower triangle)
+        b_[i2] += int64_t{jj[k][i2]} * z[k];
       }
     }
     dof_ += rows;
