@@ -155,9 +155,11 @@ bool StreamReader::pop_request(Request& out) {
 hal::CaptureStatus StreamCamera::capture(hal::StereoImage& out) {
   if (out.width != r_.width() || out.height != r_.height()) return hal::CaptureStatus::kError;
   uint64_t t = 0;
-  if (!r_.next_frame(t, out.cam[0], out.cam[1])) {
-    return r_.error() == StreamError::kNone ? hal::CaptureStatus::kEnd : hal::CaptureStatus::kError;
-  }
+  // A damaged stream (a truncated record, an unknown tag) ends here too: no
+  // later frame can be found in it. As a capture error, the app, which
+  // retries a camera's glitch, retried for ever (the run hung); at its end,
+  // run_stream reports the reader's error (kBadStream, record and why).
+  if (!r_.next_frame(t, out.cam[0], out.cam[1])) return hal::CaptureStatus::kEnd;
   out.t_ns = t;
   last_ns_ = t;
   return hal::CaptureStatus::kOk;
