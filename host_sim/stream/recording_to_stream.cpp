@@ -5,7 +5,6 @@
 // to its time, so a firmware reading the stream sees them as a sensor would).
 //   lumavel_recording_to_stream <recording dir> <out.lvs> <width> <height>
 #include <cstdio>
-#include <cstdlib>
 #include <exception>
 #include <vector>
 
@@ -15,18 +14,20 @@
 #include "lumavel/host/recording_error.hpp"
 #include "lumavel/stream/format.hpp"
 #include "lumavel/stream/stream_writer.hpp"
+#include "lumavel/stream/tool_args.hpp"
 
+// Exit status as lumavel-sim's: 0 done, 1 bad input or failure, 2 usage error.
 int main(int argc, char** argv) {
   if (argc != 5) {
     std::fprintf(stderr, "usage: %s <recording dir> <out.lvs> <width> <height>\n", argv[0]);
-    return 1;
+    return 2;
   }
-  const int w = std::atoi(argv[3]);
-  const int h = std::atoi(argv[4]);
-  if (w < 16 || w > 2048 || h < 1 || h > 2048) {
-    std::fprintf(stderr, "%s: width 16..2048 and height 1..2048\n", argv[0]);
-    return 1;
-  }
+  long long width = 0, height = 0;
+  if (!lumavel::stream::whole_argument(argv[0], "width", argv[3], 16, 2048, width) ||
+      !lumavel::stream::whole_argument(argv[0], "height", argv[4], 1, 2048, height))
+    return 2;
+  const int w = static_cast<int>(width);
+  const int h = static_cast<int>(height);
   try {
     const lumavel::host::Recording rec = lumavel::host::load_recording(argv[1]);
     lumavel::host::FileStereoCamera camera(rec, w, h);
@@ -52,7 +53,7 @@ int main(int argc, char** argv) {
       if (st == lumavel::hal::CaptureStatus::kError) {
         std::fprintf(stderr, "%s\n", camera.error().c_str());
         std::fclose(o.f);
-        return 2;
+        return 1;
       }
       while (have_next && next.t_ns <= img.t_ns) {
         o.gyro(next.t_ns, next.rate_z);
@@ -77,6 +78,6 @@ int main(int argc, char** argv) {
     return 0;
   } catch (const std::exception& e) {  // RecordingError names file and line/frame
     std::fprintf(stderr, "%s\n", e.what());
-    return 2;
+    return 1;
   }
 }

@@ -26,6 +26,7 @@
 #include "lumavel/units/si.hpp"
 #include "lumavel/stream/run_stream.hpp"
 #include "lumavel/stream/stream_writer.hpp"
+#include "lumavel/stream/tool_args.hpp"
 #include "barrel_lens.hpp"
 
 namespace {
@@ -98,6 +99,7 @@ std::vector<std::vector<uint8_t>> lens_sets(Lens lens, int w, int h) {
 
 }  // namespace
 
+// Exit status as lumavel-sim's: 0 done, 1 failure, 2 usage error.
 int main(int argc, char** argv) {
   Lens lens = Lens::kNone;
   if (argc >= 7 && std::string(argv[argc - 2]) == "--lens") {
@@ -105,25 +107,28 @@ int main(int argc, char** argv) {
     lens = mode == "barrel" ? Lens::kBarrel : mode == "flat" ? Lens::kFlat : Lens::kNone;
     if (lens == Lens::kNone) {
       std::fprintf(stderr, "%s: --lens takes barrel or flat, not '%s'\n", argv[0], mode.c_str());
-      return 1;
+      return 2;
     }
     argc -= 2;
   }
   if (argc < 5 || argc > 6) {
     std::fprintf(stderr, "usage: %s <out.lvs> <width> <height> <frames> [seed] [--lens barrel|flat]\n", argv[0]);
-    return 1;
+    return 2;
   }
-  const int w = std::atoi(argv[2]);
-  const int h = std::atoi(argv[3]);
-  const int frames = std::atoi(argv[4]);
-  uint32_t rng = argc == 6 ? static_cast<uint32_t>(std::strtoul(argv[5], nullptr, 10)) : 1u;
-  if (w < 16 || w > 2048 || h < 1 || h > 2048 || frames < 1) {
-    std::fprintf(stderr, "%s: width 16..2048, height 1..2048, frames >= 1\n", argv[0]);
-    return 1;
-  }
+  // At most 10^6 frames: 4.6 hours at 60 Hz (frames * 7 stays within an int).
+  long long width = 0, height = 0, frame_count = 0, seed = 1;
+  if (!lumavel::stream::whole_argument(argv[0], "width", argv[2], 16, 2048, width) ||
+      !lumavel::stream::whole_argument(argv[0], "height", argv[3], 1, 2048, height) ||
+      !lumavel::stream::whole_argument(argv[0], "frames", argv[4], 1, 1000000, frame_count) ||
+      (argc == 6 && !lumavel::stream::whole_argument(argv[0], "seed", argv[5], 0, UINT32_MAX, seed)))
+    return 2;
+  const int w = static_cast<int>(width);
+  const int h = static_cast<int>(height);
+  const int frames = static_cast<int>(frame_count);
+  uint32_t rng = static_cast<uint32_t>(seed);
   if (lens != Lens::kNone && w + 1 > 255) {  // report 0x05 numbers edges with one byte
     std::fprintf(stderr, "%s: --lens needs width <= 254\n", argv[0]);
-    return 1;
+    return 2;
   }
   lumavel::stream::StreamWriter o{std::fopen(argv[1], "wb")};
   if (o.f == nullptr) {

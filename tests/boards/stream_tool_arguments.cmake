@@ -1,0 +1,20 @@
+# The stream tools read their numeric arguments whole (tools/stream/include/
+# lumavel/stream/tool_args.hpp): each malformed or out-of-range number is a
+# usage error (exit 2) naming the argument, the value and the rule. atoi read
+# "40x" as 40 and 4294967336 as 40, "1e9" frames as 1: the tools ran, exit 0.
+#   cmake -DCONVERT=<lumavel_recording_to_stream> -DGEN=<lumavel_make_test_stream> -DWORK=<dir> -P ...
+file(MAKE_DIRECTORY ${WORK})
+# expect(<regex the message must match> <command...>)
+function(expect pattern)
+  execute_process(COMMAND ${ARGN} WORKING_DIRECTORY ${WORK} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 2 OR NOT err MATCHES "${pattern}")
+    message(FATAL_ERROR "${ARGN}: expected exit 2 and '${pattern}', got exit ${rc}: ${err}")
+  endif()
+endfunction()
+# The recording is not read before its arguments are: any folder name does.
+expect("width: must be a whole number in 16\\.\\.2048, not '40x'" ${CONVERT} rec out.lvs 40x 30)
+expect("width: must be a whole number in 16\\.\\.2048, not '4294967336'" ${CONVERT} rec out.lvs 4294967336 30)
+expect("height: must be a whole number in 1\\.\\.2048, not '030'" ${CONVERT} rec out.lvs 40 030)
+expect("frames: must be a whole number in 1\\.\\.1000000, not '1e9'" ${GEN} out.lvs 40 30 1e9)
+expect("seed: must be a whole number in 0\\.\\.4294967295, not '-1'" ${GEN} out.lvs 40 30 10 -1)
+expect("width: must be a whole number in 16\\.\\.2048, not '40x'" ${GEN} out.lvs 40x 30 10)
