@@ -269,3 +269,18 @@ TEST(ConfigText, ANulByteIsRefusedNotTruncated) {
   STRCMP_EQUAL("rig.cfg:1: \"look=le\" is followed by a NUL byte (character 8): not a KEY=VALUE setting",
                offline_refusal(std::string("look=le\0" "ft\n", 11)).c_str());
 }
+
+// A value shown in a refusal is shown as shown_path shows it (control
+// characters as \xNN): look's, a kernel list's and a lens value's were sent
+// to the terminal as they were, escape sequences and all.
+TEST(ConfigText, ControlCharactersInARefusedValueAreShownEscaped) {
+  DeviceSetup s = sample();
+  STRCMP_EQUAL("rig.cfg:1: look: use left or right, not \"ri\\x1B[2Jght\"",
+               error_of(s, "look=ri\x1b[2Jght\n").c_str());
+  STRCMP_EQUAL("rig.cfg:1: kernels: \"1:0.07,\\x1B[31m\" is not ORDER:SIGMA_RAD[,...] with at most 6 kernels",
+               error_of(s, "kernels=1:0.07,\x1b[31m\n").c_str());
+  STRCMP_EQUAL("rig.cfg:1: lens_cam0 value 2: \"\\x1B0.2\" is not a number",
+               error_of(s, "lens_cam0=0.1,\x1b" "0.2\n").c_str());
+  STRCMP_EQUAL("rig.cfg:1: \"look=\\x07le\" is followed by a NUL byte (character 9): not a KEY=VALUE setting",
+               error_of(s, std::string("look=\ale\0" "ft\n", 12)).c_str());
+}

@@ -96,7 +96,7 @@ void parse_kernels(proto::DeviceConfig& c, const std::string& v) {
     const std::string item = v.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
     const size_t colon = item.find(':');
     if (colon == std::string::npos || n.kernel_count >= proto::kWireKernels) {
-      throw std::runtime_error("kernels: \"" + v + "\" is not ORDER:SIGMA_RAD[,...] with at most " +
+      throw std::runtime_error("kernels: \"" + shown_path(v) + "\" is not ORDER:SIGMA_RAD[,...] with at most " +
                                std::to_string(proto::kWireKernels) + " kernels");
     }
     proto::KernelSetting& k = n.kernels[n.kernel_count++];
@@ -130,7 +130,7 @@ std::vector<EdgeOffsetQ15> parse_lens(const std::string& key, const std::string&
     try {
       q = to_q(item, fx::kEdgeOffsetFrac);
     } catch (const BadValue& e) {
-      if (!e.beyond_field) throw std::runtime_error(where + ": \"" + item + "\" is " + e.what());
+      if (!e.beyond_field) throw std::runtime_error(where + ": \"" + shown_path(item) + "\" is " + e.what());
       q = INT32_MAX;
     }
     if (q < -32768 || q > 32767) throw std::runtime_error(where + ": " + item + " rad is outside [-1, 1)");
@@ -283,7 +283,8 @@ void apply_value(DeviceSetup& d, const std::string& k, const std::string& v) {
   else if (k == "fu1_px") c.fu[1] = to_q(v, fx::kPixelFrac);
   else if (k == "cu1_px") c.cu[1] = to_q(v, fx::kPixelFrac);
   else if (k == "look") {
-    if (v != "left" && v != "right") throw std::runtime_error("look: use left or right, not \"" + v + "\"");
+    if (v != "left" && v != "right")
+      throw std::runtime_error("look: use left or right, not \"" + shown_path(v) + "\"");
     c.orientation = static_cast<uint8_t>(v == "right" ? (c.orientation | proto::kLooksRight)
                                                       : (c.orientation & ~proto::kLooksRight));
   } else if (k == "cam0_upside_down") bit(proto::kCam0UpsideDown);
@@ -315,7 +316,7 @@ void apply_setting(DeviceSetup& d, const std::string& kv) {
   // wherever it is, in a key or a word too.
   const size_t nul = kv.find('\0');
   if (nul != std::string::npos)
-    throw std::runtime_error("\"" + kv.substr(0, nul) + "\" is followed by a NUL byte (character " +
+    throw std::runtime_error("\"" + shown_path(kv.substr(0, nul)) + "\" is followed by a NUL byte (character " +
                              std::to_string(nul + 1) + "): not a KEY=VALUE setting");
   const auto [k, v] = split_setting(kv);
   try {
@@ -387,8 +388,8 @@ void GivenSettings::add_command_line(const std::vector<std::string>& settings) {
   for (const std::string& kv : settings) {
     add(kv, "command line");
     if (const GivenSetting* earlier = given_before(first))
-      throw std::runtime_error("command line: " + kv + ": " + items.back().key + " is given again (first as " +
-                               earlier->key + "=" + earlier->value + "): one value per key on the command line");
+      throw std::runtime_error("command line: " + shown_path(kv) + ": " + items.back().key + " is given again (first as " +
+                               earlier->key + "=" + shown_path(earlier->value) + "): one value per key on the command line");
   }
 }
 
