@@ -204,7 +204,19 @@ TEST(ImageIo, BadPgmFilesAreRefused) {
   fixture::write_text(path("ascii.pgm"), "P2\n2 1\n255\n0 1\n");
   STRCMP_CONTAINS("P2", error_of([&] { read_gray_image(path("ascii.pgm")); }).c_str());
   fixture::write_text(path("hdr.pgm"), "P5\nfour 4\n255\n");
-  STRCMP_CONTAINS("corrupt PGM header", error_of([&] { read_gray_image(path("hdr.pgm")); }).c_str());
+  STRCMP_CONTAINS("corrupt PGM header: no width (a decimal number) where it belongs",
+                  error_of([&] { read_gray_image(path("hdr.pgm")); }).c_str());
+  // The header's values and rules are said (was "corrupt PGM header" or
+  // "PGM size out of range", naming nothing).
+  fixture::write_text(path("wide.pgm"), "P5\n20000 60\n255\n");
+  STRCMP_CONTAINS("PGM header: 20000x60 pixels: each side must be 1..16384",
+                  error_of([&] { read_gray_image(path("wide.pgm")); }).c_str());
+  fixture::write_text(path("huge.pgm"), "P5\n40 2000000\n255\n");
+  STRCMP_CONTAINS("corrupt PGM header: the height is beyond 1000000",
+                  error_of([&] { read_gray_image(path("huge.pgm")); }).c_str());
+  fixture::write_text(path("glued.pgm"), "P5\n2 1\n255ab");
+  STRCMP_CONTAINS("corrupt PGM header: no whitespace byte after maxval 255, before the raster",
+                  error_of([&] { read_gray_image(path("glued.pgm")); }).c_str());
   fixture::write_text(path("long.pgm"), "P5\n2 1\n255\nabc");
   STRCMP_CONTAINS("after the raster", error_of([&] { read_gray_image(path("long.pgm")); }).c_str());
 }

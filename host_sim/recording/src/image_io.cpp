@@ -167,8 +167,9 @@ std::string decode_png(const uint8_t* data, size_t size, GrayImage& img, Expect 
 
 // ---- PGM decode ------------------------------------------------------------
 
-// Reads one header integer, skipping whitespace and '#' comments.
-bool pgm_int(const uint8_t* d, size_t n, size_t& pos, long& value) {
+// Reads one header integer, skipping whitespace and '#' comments. -1: no
+// number where one belongs; -2: one beyond 10^6 (no side or maxval is).
+long pgm_int(const uint8_t* d, size_t n, size_t& pos) {
   for (;;) {
     while (pos < n && (d[pos] == ' ' || d[pos] == '\t' || d[pos] == '\r' || d[pos] == '\n')) ++pos;
     if (pos < n && d[pos] == '#') {
@@ -177,25 +178,34 @@ bool pgm_int(const uint8_t* d, size_t n, size_t& pos, long& value) {
     }
     break;
   }
-  if (pos >= n || d[pos] < '0' || d[pos] > '9') return false;
-  value = 0;
+  if (pos >= n || d[pos] < '0' || d[pos] > '9') return -1;
+  long value = 0;
   while (pos < n && d[pos] >= '0' && d[pos] <= '9') {
     value = value * 10 + (d[pos] - '0');
-    if (value > 1000000) return false;
+    if (value > 1000000) return -2;
     ++pos;
   }
-  return true;
+  return value;
 }
 
 std::string decode_pgm(const uint8_t* d, size_t n, GrayImage& img, Expect expect) {
+  // What is wrong in the header is said with its value and the rule (was
+  // "corrupt PGM header" or "PGM size out of range", nothing more).
   size_t pos = 2;
-  long w = 0, h = 0, maxval = 0;
-  if (!pgm_int(d, n, pos, w) || !pgm_int(d, n, pos, h) || !pgm_int(d, n, pos, maxval))
-    return "corrupt PGM header";
+  const char* const names[3] = {"width", "height", "maxval"};
+  long v[3] = {};
+  for (int i = 0; i < 3; ++i) {
+    v[i] = pgm_int(d, n, pos);
+    if (v[i] == -1) return std::string("corrupt PGM header: no ") + names[i] + " (a decimal number) where it belongs";
+    if (v[i] == -2) return std::string("corrupt PGM header: the ") + names[i] + " is beyond 1000000";
+  }
+  const long w = v[0], h = v[1], maxval = v[2];
   if (pos >= n || !(d[pos] == ' ' || d[pos] == '\t' || d[pos] == '\r' || d[pos] == '\n'))
-    return "corrupt PGM header";
+    return "corrupt PGM header: no whitespace byte after maxval " + std::to_string(maxval) + ", before the raster";
   ++pos;  // exactly one whitespace byte before the raster
-  if (w <= 0 || h <= 0 || w > kMaxSide || h > kMaxSide) return "PGM size out of range";
+  if (w <= 0 || h <= 0 || w > kMaxSide || h > kMaxSide)
+    return "PGM header: " + std::to_string(w) + "x" + std::to_string(h) + " pixels: each side must be 1.." +
+           std::to_string(kMaxSide);
   if (maxval != 255) return "wrong depth: PGM maxval " + std::to_string(maxval) + ", need 255 (8-bit)";
   if (expect.other(w, h)) {
     img.width = static_cast<int>(w);
