@@ -75,3 +75,15 @@ TEST(RunMetrics, PointsWithoutTruthAreIgnored) {
   CHECK(std::isnan(compute_metrics({pt(0, 1, kNan)}).e_percent));
   CHECK(std::isnan(compute_metrics({}).rms));
 }
+
+// A ground truth that stops within the first second of a longer run: the
+// figures after it are missing for want of truth, not because the run is
+// short (was: "no figure: the run lasts 2.990 s").
+TEST(RunMetrics, NoTruthAfterTheFirstSecondIsSaidAsSuch) {
+  std::vector<TrackPoint> track;
+  for (int i = 0; i < 300; ++i) track.push_back(pt(0.01 * i, 1.1, i < 50 ? 1.0 : kNan));
+  STRCMP_CONTAINS("after the first 1.0 s: no figure: no frame after it has ground truth (the run lasts 2.990 s)",
+                  format_metrics(compute_metrics(track)).c_str());
+  track.resize(50);  // a run shorter than the second: that is the reason
+  STRCMP_CONTAINS("after the first 1.0 s: no figure: the run lasts 0.490 s", format_metrics(compute_metrics(track)).c_str());
+}

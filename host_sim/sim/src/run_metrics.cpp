@@ -121,8 +121,11 @@ std::string format_metrics(const RunMetrics& m) {
     s += printf_text("\nafter the first %.1f s (%zu frames): worst |err| %.4g m/s at t = %.3f s, mean |err| %.4g m/s, "
                      "mean err %+.4g m/s",
                      m.options.settle_s, m.after_count, m.worst_after, m.worst_after_t, m.mean_abs_after, m.mean_after);
-  else if (any)
+  else if (any && m.span_s < m.options.settle_s)
     s += printf_text("\nafter the first %.1f s: no figure: the run lasts %.3f s", m.options.settle_s, m.span_s);
+  else if (any)  // a ground truth that stops early (was: "the run lasts 2.983 s", a run longer than the second)
+    s += printf_text("\nafter the first %.1f s: no figure: no frame after it has ground truth (the run lasts %.3f s)",
+                     m.options.settle_s, m.span_s);
   return s;
 }
 
