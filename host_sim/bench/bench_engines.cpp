@@ -15,8 +15,10 @@
 #include <string>
 #include <vector>
 
+#include "lumavel/host/decimal_text.hpp"
 #include "lumavel/host/file_camera.hpp"
 #include "lumavel/host/groundtruth.hpp"
+#include "lumavel/host/path_check.hpp"
 #include "lumavel/host/recording.hpp"
 #include "lumavel/host/run_metrics.hpp"
 #include "lumavel/host/run_recording.hpp"
@@ -117,13 +119,35 @@ std::string name_of(std::string path) {
   return n;
 }
 
-int usage() {
+// `why` (a refused option, "" for none) first, then the usage: exit 2.
+int usage(const std::string& why = "") {
+  if (!why.empty()) std::fprintf(stderr, "lumavel-bench-engines: %s\n", why.c_str());
   std::fputs("usage: lumavel-bench-engines [--size WxH]... [--repeat N] REC...\n"
              "  compute time per frame (one thread; wall clock and CPU time, best of the repeats) of the\n"
              "  fixed, float and vo engines on each recording at each working size (default 40x30, 80x60,\n"
              "  160x120; --repeat 3)\n",
              stderr);
   return 2;
+}
+
+// --size and --repeat are read whole, as lumavel-sim's options are
+// (decimal_text.hpp): sscanf took "40x30junk" as 40x30 and atoi "1e3"
+// repeats as 1, the figures of another run than asked, exit 0.
+bool whole_in(const std::string& text, long long lo, long long hi, long long& out) {
+  const WholeText w = read_whole(text);
+  if (w.problem != WholeText::Problem::kNone || w.value < lo || w.value > hi) return false;
+  out = w.value;
+  return true;
+}
+
+bool read_size(const std::string& text, int& w, int& h) {
+  const size_t x = text.find('x');
+  long long a = 0, b = 0;
+  if (x == std::string::npos || !whole_in(text.substr(0, x), 1, 2048, a) || !whole_in(text.substr(x + 1), 1, 2048, b))
+    return false;
+  w = static_cast<int>(a);
+  h = static_cast<int>(b);
+  return true;
 }
 
 }  // namespace
@@ -136,11 +160,14 @@ int main(int argc, char** argv) {
     const std::string a = argv[i];
     if (a == "--size" && i + 1 < argc) {
       int w = 0, h = 0;
-      if (std::sscanf(argv[++i], "%dx%d", &w, &h) != 2 || w <= 0 || h <= 0) return usage();
+      if (!read_size(argv[++i], w, h))
+        return usage("--size: must be WxH with W and H whole numbers in 1..2048, not '" + shown_path(argv[i]) + "'");
       sizes.emplace_back(w, h);
     } else if (a == "--repeat" && i + 1 < argc) {
-      repeat = std::atoi(argv[++i]);
-      if (repeat < 1) return usage();
+      long long n = 0;
+      if (!whole_in(argv[++i], 1, 1000, n))
+        return usage("--repeat: must be a whole number in 1..1000, not '" + shown_path(argv[i]) + "'");
+      repeat = static_cast<int>(n);
     } else if (a.empty() || a[0] == '-') {
       return usage();
     } else {
@@ -155,7 +182,11 @@ int main(int argc, char** argv) {
     for (const std::string& path : recs) {
       const Recording rec = load_recording(path);
       for (const auto& [w, h] : sizes) {
-        if (w > rec.cam[0].width || h > rec.cam[0].height) continue;
+        if (w > rec.cam[0].width || h > rec.cam[0].height) {  // said, not a row left out unsaid
+          std::fprintf(stderr, "lumavel-bench-engines: %s: %dx%d skipped: larger than its %dx%d sensor\n",
+                       shown_path(path).c_str(), w, h, rec.cam[0].width, rec.cam[0].height);
+          continue;
+        }
         const Frames f = load_frames(rec, EngineKind::kFixed, w, h);
         const Timing fx = time_engine(rec, f, EngineKind::kFixed, w, h, repeat);
         const Timing fl = time_engine(rec, f, EngineKind::kFloat, w, h, repeat);

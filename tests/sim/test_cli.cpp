@@ -32,11 +32,13 @@ TEST_GROUP(Cli) {
   fixture::TempDir dir;
   // Runs `lumavel-sim ARGS` in the temp dir, capturing both streams; killed
   // after `timeout_s` seconds when not 0 (exit code 124 then).
-  Outcome sim(const std::string& args, int timeout_s = 0) {
+  Outcome sim(const std::string& args, int timeout_s = 0) { return tool(LUMAVEL_SIM_EXE, args, timeout_s); }
+  // The same for another executable.
+  Outcome tool(const std::string& exe, const std::string& args, int timeout_s = 0) {
     const std::string out = dir.path() + "/stdout.txt", err = dir.path() + "/stderr.txt";
     const std::string limit = timeout_s > 0 ? "timeout -s KILL " + std::to_string(timeout_s) + " " : "";
     const std::string cmd =
-        "cd '" + dir.path() + "' && " + limit + "'" LUMAVEL_SIM_EXE "' " + args + " >'" + out + "' 2>'" + err + "'";
+        "cd '" + dir.path() + "' && " + limit + "'" + exe + "' " + args + " >'" + out + "' 2>'" + err + "'";
     const int status = std::system(cmd.c_str());
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, fixture::read_text(out), fixture::read_text(err)};
   }
@@ -213,6 +215,23 @@ TEST(Cli, MissingRecordingExitsOne) {
 
 // 'render SCENARIO -' rendered into a new folder named '-' (exit 0): a
 // recording is a folder, it cannot go to standard output.
+// lumavel-bench-engines reads its options whole, as lumavel-sim does: sscanf
+// took "40x30junk" as 40x30 and atoi "1e3" repeats as 1, exit 0; a size
+// larger than a recording's sensor was left out of the table unsaid.
+TEST(Cli, BenchEnginesReadsItsOptionsWholeAndSaysWhatItSkips) {
+  Outcome r = tool(LUMAVEL_BENCH_ENGINES_EXE, "--size 40x30junk rec");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("lumavel-bench-engines: --size: must be WxH with W and H whole numbers in 1..2048, not '40x30junk'",
+                  r.err.c_str());
+  r = tool(LUMAVEL_BENCH_ENGINES_EXE, "--repeat 1e3 rec");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("lumavel-bench-engines: --repeat: must be a whole number in 1..1000, not '1e3'", r.err.c_str());
+  rec();
+  r = tool(LUMAVEL_BENCH_ENGINES_EXE, "--size 2000x30 rec");
+  LONGS_EQUAL(0, r.code);
+  STRCMP_CONTAINS("lumavel-bench-engines: rec: 2000x30 skipped: larger than its ", r.err.c_str());
+}
+
 TEST(Cli, RenderToDashIsRefused) {
   const Outcome r = sim("render '" LUMAVEL_SOURCE_DIR "/host_sim/scenarios/paper_sim_aligned.yaml' - --duration 0.1 -q");
   LONGS_EQUAL(1, r.code);
