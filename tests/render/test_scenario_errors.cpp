@@ -10,6 +10,7 @@
 #include <string>
 
 #include "lumavel/host/render/scenario_loader.hpp"
+#include "lumavel/host/render/surface_pattern.hpp"
 
 using namespace lumavel::host::render;
 
@@ -143,6 +144,30 @@ TEST(ScenarioErrors, APhotoNameWithANulByteIsRefused) {
   STRCMP_EQUAL(("bad.yaml:13: photo file name '" + photo + "' is followed by a NUL byte inside the name (character " +
                 std::to_string(photo.size() + 1) + "): the system would read the name only up to it")
                    .c_str(),
+               e.c_str());
+}
+
+// A photo PGM whose header says fewer pixels than it holds (64x32 over a
+// 64x64 picture) rendered the top half as the whole photo, exit 0: refused
+// as a recording's frame is, with the count and the header's size.
+TEST(ScenarioErrors, APhotoPgmWithBytesAfterItsRasterIsRefused) {
+  char dir[] = "/tmp/lumavel_photo_long_XXXXXX";
+  CHECK(mkdtemp(dir) != nullptr);
+  const std::string photo = std::string(dir) + "/p.pgm";
+  std::FILE* f = std::fopen(photo.c_str(), "wb");
+  std::fputs("P5\n2 1\n255\n\x10\x80\x40\xf0", f);
+  std::fclose(f);
+  std::string e = "(read)";
+  try {
+    int w = 0, h = 0;
+    load_photo_gray(photo, w, h);
+  } catch (const std::runtime_error& x) {
+    e = x.what();
+  }
+  std::remove(photo.c_str());
+  rmdir(dir);
+  STRCMP_EQUAL((photo + ": PGM has 2 bytes after the raster of its header's 2x1 pixels: the header does not "
+                "describe the image").c_str(),
                e.c_str());
 }
 

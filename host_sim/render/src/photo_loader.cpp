@@ -163,9 +163,18 @@ std::vector<unsigned char> load_pgm(const std::string& path, int& w, int& h) {
                              " pixels: width and height must be 1 or more");
   w = static_cast<int>(v[0]);
   h = static_cast<int>(v[1]);
+  const std::streamoff raster_at = in.tellg();
   std::vector<unsigned char> px(static_cast<size_t>(w) * static_cast<size_t>(h));
   in.read(reinterpret_cast<char*>(px.data()), static_cast<std::streamsize>(px.size()));
   if (!in) throw std::runtime_error(path + ": truncated PGM");
+  // Bytes past the header's raster: its size is not the picture's (a header
+  // of 64x32 over 64x64 pixels rendered the top half as the whole photo,
+  // exit 0), as a recording's frame refuses them (image_io).
+  in.seekg(0, std::ios::end);
+  const std::streamoff extra = static_cast<std::streamoff>(in.tellg()) - raster_at - static_cast<std::streamoff>(px.size());
+  if (extra > 0)
+    throw std::runtime_error(path + ": PGM has " + std::to_string(extra) + " bytes after the raster of its header's " +
+                             std::to_string(w) + "x" + std::to_string(h) + " pixels: the header does not describe the image");
   return px;
 }
 
