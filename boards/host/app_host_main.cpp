@@ -1,7 +1,9 @@
 // Host build of the firmware app: runs the same App over the same stream code
 // as the QEMU firmware, with host files as the byte source and sink.
 //   lumavel_app_host <in.lvs> <out.lvr>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 
 #include "lumavel/stream/run_stream.hpp"
 
@@ -34,18 +36,21 @@ int main(int argc, char** argv) {
   }
   std::FILE* in = std::fopen(argv[1], "rb");
   if (in == nullptr) {
-    std::fprintf(stderr, "%s: cannot open for reading\n", argv[1]);
+    std::fprintf(stderr, "%s: cannot open for reading: %s\n", argv[1], std::strerror(errno));
     return 1;
   }
   std::FILE* out = std::fopen(argv[2], "wb");
   if (out == nullptr) {
-    std::fprintf(stderr, "%s: cannot open for writing\n", argv[2]);
+    std::fprintf(stderr, "%s: cannot open for writing: %s\n", argv[2], std::strerror(errno));
     std::fclose(in);
     return 1;
   }
   FileSource src(in);
   FileSink sink(out);
   const lumavel::stream::RunSummary s = lumavel::stream::run_stream(src, sink, lumavel::stream::kStreamBoardName);
+  // A stream that could not be read (a folder: fopen takes it, fread fails)
+  // is said as such, not as the damaged stream its missing bytes look like.
+  const int read_errno = std::ferror(in) ? errno : 0;
   std::fclose(in);
   const bool closed = std::fclose(out) == 0;
   const auto& c = s.counters;
@@ -56,6 +61,10 @@ int main(int argc, char** argv) {
     case lumavel::stream::RunOutcome::kOk:
       return closed ? 0 : 1;
     case lumavel::stream::RunOutcome::kBadStream:
+      if (read_errno != 0) {
+        std::fprintf(stderr, "%s: read error: %s\n", argv[1], std::strerror(read_errno));
+        return 2;
+      }
       std::fprintf(stderr, "%s: record %u: %s\n", argv[1], s.record_index,
                    lumavel::stream::to_string(s.stream_error));
       return 2;

@@ -2,9 +2,12 @@
 # lumavel/stream/tool_args.hpp): each malformed or out-of-range number is a
 # usage error (exit 2) naming the argument, the value and the rule. atoi read
 # "40x" as 40 and 4294967336 as 40, "1e9" frames as 1: the tools ran, exit 0.
-#   cmake -DCONVERT=<lumavel_recording_to_stream> -DGEN=<lumavel_make_test_stream> -DWORK=<dir> -P ...
+# lumavel_app_host given a folder for its stream says so (was: 'not a lumavel
+# stream (bad header)', what the bytes a folder cannot give look like).
+#   cmake -DCONVERT=<lumavel_recording_to_stream> -DGEN=<lumavel_make_test_stream> -DHOST_APP=<lumavel_app_host>
+#         -DWORK=<dir> -P ...
 file(MAKE_DIRECTORY ${WORK})
-# expect(<regex the message must match> <command...>)
+# expect(<regex the message must match> <command...>): exit 2 (usage; the app host's bad stream)
 function(expect pattern)
   execute_process(COMMAND ${ARGN} WORKING_DIRECTORY ${WORK} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT rc EQUAL 2 OR NOT err MATCHES "${pattern}")
@@ -18,3 +21,4 @@ expect("height: must be a whole number in 1\\.\\.2048, not '030'" ${CONVERT} rec
 expect("frames: must be a whole number in 1\\.\\.1000000, not '1e9'" ${GEN} out.lvs 40 30 1e9)
 expect("seed: must be a whole number in 0\\.\\.4294967295, not '-1'" ${GEN} out.lvs 40 30 10 -1)
 expect("width: must be a whole number in 16\\.\\.2048, not '40x'" ${GEN} out.lvs 40x 30 10)
+expect("${WORK}: read error: Is a directory" ${HOST_APP} ${WORK} out.lvr)
