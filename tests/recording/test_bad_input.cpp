@@ -809,3 +809,20 @@ TEST(BadInput, AnEndlessFirstLineIsRefusedAtOnce) {
   fixture::write_text(c0, std::string((1 << 24) + 100, '\0'));
   STRCMP_CONTAINS((c0 + ":1: line is longer than 16777216 characters").c_str(), load_error().c_str());
 }
+
+// The samples of a recording about to be written (render, import-slider) are
+// held to the readers' value rules, at the row they would be written to:
+// a ground truth carried beyond 1e7 m by a 1000 m/s pass rendered whole,
+// then was refused on reading.
+TEST(BadInput, SampleValuesAboutToBeWrittenAreTheReadersRules) {
+  Recording r = load_recording(rec);
+  STRCMP_EQUAL("(no error)", error_of([&] { check_sample_values(r); }).c_str());
+  r.groundtruth[3].p[0] = 1.5e7;
+  STRCMP_EQUAL((r.root + "/state_groundtruth_estimate0/data.csv:5: column 'p_RS_R_x [m]': 1.5e+07 m is beyond +-1e+07 "
+                "m, farther than any point on Earth: a corrupt position").c_str(),
+               error_of([&] { check_sample_values(r); }).c_str());
+  r.imu_samples[0].w[2] = -2000;
+  STRCMP_EQUAL((r.root + "/imu0/data.csv:2: column 'w_RS_S_z [rad s^-1]': -2000 is beyond +-1000, more than any IMU "
+                "measures: a corrupt value").c_str(),
+               error_of([&] { check_sample_values(r); }).c_str());
+}

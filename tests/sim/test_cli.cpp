@@ -1040,6 +1040,37 @@ TEST(Cli, RenderRefusesBeforeRenderingWhatRunWouldRefuse) {
   CHECK(!exists(dir.path() + "/out/mav0"));
 }
 
+// The gyro values run would refuse, before rendering too (was: rendered
+// whole, then 'out/mav0 was written, but lumavel-sim run refuses it', exit 1
+// and the recording left behind): a 100 m/s turn on a 1 mm radius (a yaw
+// rate of 1e5 rad/s), accelerometer noise of 100 m/s^2/sqrt(Hz) at 100 kHz.
+TEST(Cli, RenderRefusesBeforeRenderingGyroValuesRunWouldRefuse) {
+  std::string s = fixture::read_text(LUMAVEL_SOURCE_DIR "/host_sim/scenarios/paper_sim_aligned.yaml");
+  const std::string straight = "{type: straight, duration_s: 8, speed: [0.5, 0.55]}";
+  const size_t at = s.find(straight);
+  CHECK(at != std::string::npos);
+  fixture::write_text(dir.path() + "/spin.yaml",
+                      std::string(s).replace(at, straight.size(),
+                                             "{type: arc, duration_s: 8, radius_m: 0.001, turn: left, speed: 100}"));
+  Outcome r = sim("render spin.yaml out --resolution 40x30 --duration 0.2 -q");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("spin.yaml: the recording it describes is one lumavel-sim run refuses (nothing rendered): "
+                  "out/mav0/imu0/data.csv:2: column 'w_RS_S_z [rad s^-1]': 100000 is beyond +-1000, more than any "
+                  "IMU measures: a corrupt value",
+                  r.err.c_str());
+  CHECK(!exists(dir.path() + "/out/mav0"));
+  const size_t imu = s.find("  rate_hz: 200");
+  CHECK(imu != std::string::npos);
+  fixture::write_text(dir.path() + "/noisy.yaml",
+                      std::string(s).replace(imu, 14, "  rate_hz: 100000\n  accel_noise_density: 100"));
+  r = sim("render noisy.yaml out --resolution 40x30 --duration 0.5 -q");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("noisy.yaml: the recording it describes is one lumavel-sim run refuses (nothing rendered): "
+                  "out/mav0/imu0/data.csv:", r.err.c_str());
+  STRCMP_CONTAINS("is beyond +-100000, more than any IMU measures: a corrupt value", r.err.c_str());
+  CHECK(!exists(dir.path() + "/out/mav0"));
+}
+
 // A scenario's duration_s and render --duration are one rule (was: the file
 // took 1e-3..1e6 s, the option (0, 1e6]: --duration 1e-9 was taken).
 TEST(Cli, RenderDurationIsTheScenariosRule) {

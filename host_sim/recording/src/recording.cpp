@@ -100,6 +100,47 @@ std::vector<FramePairEntry> pair_frames(const CamRows& c0, const CamRows& c1) {
   return out;
 }
 
+}  // namespace
+
+std::string why_implausible_imu_value(size_t column, double v, const std::string& text) {
+  const double limit = column < 3 ? layout::kImuMaxRateRadps : layout::kImuMaxAccelMps2;
+  if (std::fabs(v) <= limit) return "";
+  return text + " is beyond +-" + format_double(limit) + ", more than any IMU measures: a corrupt value";
+}
+
+std::string why_implausible_groundtruth_value(size_t column, double v) {
+  // Positions, velocities and biases each within their bound (a quaternion's
+  // norm is a rule of the four together, why_not_unit_quaternion).
+  if (column < 3) return why_implausible_position(v);
+  if (column >= 7 && column < 10) return why_implausible_speed(v);
+  if (column < 10) return "";
+  const double limit = column < 13 ? layout::kImuMaxRateRadps : layout::kImuMaxAccelMps2;
+  if (std::fabs(v) <= limit) return "";
+  return format_double(v) + " is beyond +-" + format_double(limit) + ", more than any IMU measures: a corrupt bias";
+}
+
+void check_sample_values(const Recording& rec) {
+  const std::string imu_csv = rec.root + "/" + layout::kImuDir + "/data.csv";
+  for (size_t i = 0; i < rec.imu_samples.size(); ++i)
+    for (size_t k = 0; k < 6; ++k) {
+      const double v = k < 3 ? rec.imu_samples[i].w[k] : rec.imu_samples[i].a[k - 3];
+      if (const std::string why = why_implausible_imu_value(k, v, format_double(v)); !why.empty())
+        throw recording_error_at(imu_csv, static_cast<long>(i) + 2, "column '" + layout::imu_columns()[k] + "': " + why);
+    }
+  const std::string gt_csv = rec.root + "/" + layout::kGroundTruthDir + "/data.csv";
+  for (size_t i = 0; i < rec.groundtruth.size(); ++i) {
+    const GroundTruthSample& g = rec.groundtruth[i];
+    const double v[16] = {g.p[0], g.p[1], g.p[2], g.q[0], g.q[1], g.q[2], g.q[3], g.v[0],
+                          g.v[1], g.v[2], g.bw[0], g.bw[1], g.bw[2], g.ba[0], g.ba[1], g.ba[2]};
+    for (size_t k = 0; k < 16; ++k)
+      if (const std::string why = why_implausible_groundtruth_value(k, v[k]); !why.empty())
+        throw recording_error_at(gt_csv, static_cast<long>(i) + 2,
+                                 "column '" + layout::groundtruth_columns()[k] + "': " + why);
+  }
+}
+
+namespace {
+
 std::vector<ImuSample> read_imu(const std::string& csv) {
   std::vector<ImuSample> out;
   for_each_csv_row(csv, layout::imu_columns(), [&](const CsvRow& r) {
@@ -108,11 +149,9 @@ std::vector<ImuSample> read_imu(const std::string& csv) {
     for (int k = 0; k < 6; ++k) {
       const std::string& column = layout::imu_columns()[static_cast<size_t>(k)];
       const double v = parse_finite(r.fields[static_cast<size_t>(k)], csv, r.line, column);
-      const double limit = k < 3 ? layout::kImuMaxRateRadps : layout::kImuMaxAccelMps2;
-      if (std::fabs(v) > limit)
-        throw recording_error_at(csv, r.line,
-                                 "column '" + column + "': " + r.fields[static_cast<size_t>(k)] + " is beyond +-" +
-                                     format_double(limit) + ", more than any IMU measures: a corrupt value");
+      if (const std::string why = why_implausible_imu_value(static_cast<size_t>(k), v, r.fields[static_cast<size_t>(k)]);
+          !why.empty())
+        throw recording_error_at(csv, r.line, "column '" + column + "': " + why);
       (k < 3 ? s.w[k] : s.a[k - 3]) = v;
     }
     out.push_back(s);
@@ -127,17 +166,8 @@ std::vector<GroundTruthSample> read_groundtruth(const std::string& csv) {
     for (size_t k = 0; k < 16; ++k) {
       const std::string& column = layout::groundtruth_columns()[k];
       v[k] = parse_finite(r.fields[k], csv, r.line, column);
-      // Positions, velocities and biases each within their bound (the
-      // quaternion's norm is checked below).
-      std::string why;
-      if (k < 3) why = why_implausible_position(v[k]);
-      else if (k >= 7 && k < 10) why = why_implausible_speed(v[k]);
-      else if (k >= 10) {
-        const double limit = k < 13 ? layout::kImuMaxRateRadps : layout::kImuMaxAccelMps2;
-        if (std::fabs(v[k]) > limit)
-          why = format_double(v[k]) + " is beyond +-" + format_double(limit) + ", more than any IMU measures: a corrupt bias";
-      }
-      if (!why.empty()) throw recording_error_at(csv, r.line, "column '" + column + "': " + why);
+      if (const std::string why = why_implausible_groundtruth_value(k, v[k]); !why.empty())
+        throw recording_error_at(csv, r.line, "column '" + column + "': " + why);
     }
     GroundTruthSample g;
     g.t_ns = r.t_ns;

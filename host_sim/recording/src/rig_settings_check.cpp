@@ -88,6 +88,7 @@ void check_runnable_unwritten(Recording& rec) {
   const std::string imu_csv = rec.root + "/" + layout::kImuDir + "/data.csv";
   for (int c = 0; c < 2; ++c) check_intrinsics(rec.cam[c], rec.root + "/" + layout::kCamDir[c] + "/sensor.yaml", 0);
   if (rec.imu_samples.empty()) throw recording_error_at(imu_csv, 2, "no gyro samples");
+  check_sample_values(rec);
   check_gyro_coverage(rec, imu_csv, cam_csv);
   check_rig_settings(rec, derive_settings(rec, default_working_size(rec)));
 }

@@ -78,6 +78,18 @@ void set_periods(Recording& rec);
 // on the recording it is about to write.
 void check_gyro_coverage(Recording& rec, const std::string& imu_csv, const std::string& cam_csv);
 
+// The value rules of the imu0 and ground-truth tables, by column (0-based,
+// after the timestamp): "" when `v` is within its column's bound, else why
+// not ("100267 is beyond +-100000, more than any IMU measures: a corrupt
+// value"; the IMU's shown as `text`, as its file holds it). The readers apply
+// them, and check_sample_values on a recording about to be written.
+std::string why_implausible_imu_value(size_t column, double v, const std::string& text);
+std::string why_implausible_groundtruth_value(size_t column, double v);
+// Throws RecordingError at the first row of rec.imu_samples or
+// rec.groundtruth (line i + 2 of its table under rec.root) that a reader
+// would refuse by those rules.
+void check_sample_values(const Recording& rec);
+
 // Whether writing `path` would overwrite what the recording is read from: a
 // file inside its folder (root), or one of its frames (data.csv may name
 // frames elsewhere). Outputs there are refused before a run.

@@ -27,8 +27,10 @@ void check_runnable(const std::string& out);
 // The same rules before anything is written, on the recording about to be
 // written (render, import-slider): `rec` holds its cameras, frame and gyro
 // times and periods, at least one frame, and rec.root the mav0 folder it
-// will be written to (for the messages). Checks the intrinsics, that there
-// are gyro samples and that they cover the frames, and the rig's settings;
+// will be written to (for the messages), and its gyro and ground-truth
+// samples. Checks the intrinsics, that there are gyro samples, that each
+// gyro and ground-truth value is one run reads (check_sample_values), that
+// the gyro covers the frames, and the rig's settings;
 // throws RecordingError "FILE: rule" as run would on reading it.
 void check_runnable_unwritten(Recording& rec);
 
