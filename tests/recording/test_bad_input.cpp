@@ -9,10 +9,13 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <new>
 
+#include "lumavel/host/csv_table.hpp"
 #include "lumavel/host/file_camera.hpp"
 #include "lumavel/host/image_io.hpp"
 #include "lumavel/host/rig.hpp"
+#include "lumavel/host/recording_layout.hpp"
 #include "lumavel/host/rig_settings_check.hpp"
 #include "recording_fixture.hpp"
 // CppUTest last: its leak-detector macros redefine new.
@@ -825,4 +828,20 @@ TEST(BadInput, SampleValuesAboutToBeWrittenAreTheReadersRules) {
   STRCMP_EQUAL((r.root + "/imu0/data.csv:2: column 'w_RS_S_z [rad s^-1]': -2000 is beyond +-1000, more than any IMU "
                 "measures: a corrupt value").c_str(),
                error_of([&] { check_sample_values(r); }).c_str());
+}
+
+// A table too large for the memory there is (a 920 MB imu0/data.csv of 20
+// million rows under a 2 GB limit) is named at the row where memory ran out
+// (was: "error: std::bad_alloc", naming nothing).
+TEST(BadInput, ATableLargerThanTheMemoryIsNamedAtItsRow) {
+  const std::string csv = m + "imu0/data.csv";
+  size_t rows = 0;
+  const std::string e = error_of([&] {
+    for_each_csv_row(csv, lumavel::host::layout::imu_columns(), [&](const CsvRow&) {
+      if (++rows == 3) throw std::bad_alloc();
+    });
+  });
+  STRCMP_EQUAL((csv + ":4: out of memory holding the table's rows (2 of them before this one): the table is larger "
+                "than the memory there is").c_str(),
+               e.c_str());
 }

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <fstream>
 #include <limits>
+#include <new>
 
 #include "lumavel/host/decimal_text.hpp"
 #include "lumavel/host/line_ends.hpp"
@@ -140,6 +141,7 @@ void for_each_csv_row(const std::string& path, const std::vector<std::string>& c
   uint64_t prev_t = 0;
   long prev_line = 0;
   long line = 1;
+  size_t rows_held = 0;
   while (next_table_line(in, buf, text, path, line + 1)) {
     ++line;
     const std::string t = trim(text);
@@ -172,7 +174,16 @@ void for_each_csv_row(const std::string& path, const std::vector<std::string>& c
     prev_t = row.t_ns;
     prev_line = line;
     row.fields.erase(row.fields.begin());
-    on_row(row);
+    // A table too large for the memory there is (millions of rows) is named
+    // at its row (was: "error: std::bad_alloc", naming nothing).
+    try {
+      on_row(row);
+    } catch (const std::bad_alloc&) {
+      throw recording_error_at(path, line,
+                               "out of memory holding the table's rows (" + std::to_string(rows_held) +
+                                   " of them before this one): the table is larger than the memory there is");
+    }
+    ++rows_held;
   }
 }
 
