@@ -169,6 +169,19 @@ TEST(Calibrate, FramesWithOneImageForBothCamerasAreCounted) {
   CHECK(c.same_image + 1 >= made_same && c.same_image <= made_same);
 }
 
+// A recording too short for one camera to reach where the other stood (3
+// frames, 33 ms, of a textured pass) says its frames and span, not only
+// "(does the rig move past a textured scene?)", which it does.
+TEST(Calibrate, ATooShortRecordingSaysItsFramesAndSpan) {
+  const std::string dir = rendered("robustness_wall.yaml", 0.05, "too_short");
+  const Recording rec = load_recording(dir);
+  const std::string error = refusal(rec, dir);
+  STRCMP_EQUAL((dir + "/mav0: no frame pair registered in its 3 frames over 0.033 s (does the rig move past a "
+                      "textured scene, for longer than one camera takes to reach where the other stood?)")
+                   .c_str(),
+               error.c_str());
+}
+
 // A recording of one frame was refused blaming the scene: "no frame pair
 // registered (does the rig move past a textured scene?)".
 TEST(Calibrate, OneFrameSaysSo) {

@@ -434,8 +434,16 @@ Calibration calibrate_misalignment(const Recording& rec, const CalibrationOption
     throw std::runtime_error(rec.root + ": no frame pair registered: cam0 and cam1 delivered the same image on " +
                              std::to_string(same) + " of " + std::to_string(p0.size() - 1) +
                              " frames (no stereo difference to register: one camera's images in both folders?)");
-  if (samples.empty())
-    throw std::runtime_error(rec.root + ": no frame pair registered (does the rig move past a textured scene?)");
+  // The frames read and their span: a recording too short for one camera to
+  // reach where the other stood (3 frames, 33 ms) is told by them.
+  if (samples.empty()) {
+    char span[160];
+    std::snprintf(span, sizeof span, " in its %zu frames over %.3f s", times.size(),
+                  static_cast<double>(times.back() - times.front()) * 1e-9);
+    throw std::runtime_error(rec.root + ": no frame pair registered" + span +
+                             " (does the rig move past a textured scene, for longer than one camera takes to reach "
+                             "where the other stood?)");
+  }
   out.misalignment = median(samples);
   // The search covers +-max_shift_deg: a median outside it (the gyro's
   // heading change dominating the registrations) is no answer.
