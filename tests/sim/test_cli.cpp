@@ -357,6 +357,25 @@ TEST(Cli, OutputFilePlotNextToItAndQuiet) {
   STRCMP_CONTAINS("fixed engine, 40x30 working", r.err.c_str());
 }
 
+// Run from inside the recording, as "." or "mav0": the plot and the summary
+// still name the recording (they said "recording" and "mav0").
+TEST(Cli, ARecordingRunFromInsideIsNamedByItsFolder) {
+  rec();
+  std::filesystem::create_directory(dir.path() + "/a");
+  std::filesystem::create_directory(dir.path() + "/b");
+  const std::string exe = std::string("'") + LUMAVEL_SIM_EXE + "'";
+  Outcome r = tool("/bin/sh", "-c \"cd rec && " + exe + " run . -o ../a/e.csv && cd mav0 && " + exe +
+                                  " run ../mav0 -o ../../b/e.csv && cd .. && " + exe + " run mav0 -o ../b/f.csv\"");
+  LONGS_EQUAL(0, r.code);
+  CHECK(exists(dir.path() + "/a/rec_estimates.svg"));
+  CHECK(exists(dir.path() + "/b/rec_estimates.svg"));
+  CHECK(!exists(dir.path() + "/a/recording_estimates.svg"));
+  CHECK(!exists(dir.path() + "/b/mav0_estimates.svg"));
+  STRCMP_CONTAINS("rec: 12 frame pairs", r.err.c_str());
+  CHECK(r.err.find("mav0: 12 frame pairs") == std::string::npos);
+  CHECK(r.err.find("recording: 12 frame pairs") == std::string::npos);
+}
+
 TEST(Cli, PhotometricMatchCanBeTurnedOff) {
   rec();
   Outcome r = sim("run rec -o est.csv --no-photometric-match");

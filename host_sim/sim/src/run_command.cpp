@@ -107,17 +107,16 @@ CLI::Validator engine_kind() {
 }
 
 // "path/to/REC/" or "path/to/REC/mav0" -> "REC".
-std::string recording_name(std::string path) {
-  while (path.size() > 1 && path.back() == '/') path.pop_back();
-  auto base = [](const std::string& p) {
-    const size_t s = p.find_last_of('/');
-    return s == std::string::npos ? p : p.substr(s + 1);
-  };
-  std::string name = base(path);
-  if (name == "mav0") {
-    const size_t s = path.find_last_of('/');
-    if (s != std::string::npos && s > 0) name = base(path.substr(0, s));
-  }
+// The recording's folder name (REC, not mav0), as the path resolves: "."
+// or "mav0" run from inside a recording name the recording too.
+std::string recording_name(const std::string& path) {
+  std::error_code ec;
+  std::filesystem::path p = std::filesystem::absolute(path, ec);
+  if (ec) p = path;
+  p = p.lexically_normal();
+  if (!p.has_filename()) p = p.parent_path();  // a trailing separator
+  if (p.filename() == "mav0" && p.has_parent_path() && p.parent_path().has_filename()) p = p.parent_path();
+  const std::string name = p.filename().string();
   return name.empty() || name == "." || name == ".." ? std::string("recording") : name;
 }
 
