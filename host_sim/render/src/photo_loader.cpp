@@ -8,6 +8,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #if LUMAVEL_HAVE_JPEG
@@ -15,6 +16,7 @@
 #endif
 
 #include "lumavel/host/render/surface_pattern.hpp"
+#include "lumavel/host/image_io.hpp"
 #include "lumavel/host/path_check.hpp"
 
 namespace lumavel::host::render {
@@ -117,65 +119,17 @@ std::vector<unsigned char> load_jpeg(const std::string& path, int&, int&) {
 }
 #endif
 
-// The PGM header's next number, after whitespace and '#' comments (to the end
-// of their line): netpbm allows them, and GIMP writes "# Created by GIMP".
-// Read with `>>`, such a header was refused as "not a binary 8-bit PGM". The
-// byte after the number is taken: for maxval, the one whitespace byte before
-// the raster. -1: no number there; -2: one beyond 10^9.
-long long pgm_number(std::istream& in) {
-  int c = in.get();
-  for (;;) {
-    if (c == '#')
-      while (c != EOF && c != '\n' && c != '\r') c = in.get();
-    if (c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f')
-      c = in.get();
-    else if (c != '#')
-      break;
-  }
-  if (c < '0' || c > '9') return -1;
-  long long v = 0;
-  for (; c >= '0' && c <= '9'; c = in.get()) {
-    v = v * 10 + (c - '0');
-    if (v > 1000000000) return -2;
-  }
-  if (c == '#') in.unget();  // a comment right after a number, before the raster
-  else if (!(c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f')) return -1;
-  return v;
-}
-
+// Binary PGM through the recording's own reader (image_io: one parser of the
+// format, its header rules and messages; it was a second one here), then
+// the photo's pixel limit.
 std::vector<unsigned char> load_pgm(const std::string& path, int& w, int& h) {
-  std::ifstream in(path, std::ios::binary);
-  in.ignore(2);  // "P5", checked by the caller
-  const char* names[3] = {"width", "height", "maxval"};
-  long long v[3] = {};
-  for (int i = 0; i < 3; ++i) {
-    v[i] = pgm_number(in);
-    if (v[i] == -1) throw std::runtime_error(path + ": PGM header: no " + names[i] + " (a decimal number) where it belongs");
-    if (v[i] == -2) throw std::runtime_error(path + ": PGM header: the " + std::string(names[i]) + " is beyond 10^9");
-  }
-  if (v[2] != 255)
-    throw std::runtime_error(path + ": PGM header: maxval " + std::to_string(v[2]) +
-                             ": only 8-bit PGMs (maxval 255) are read");
-  if (const std::string why = why_photo_too_big(static_cast<uint64_t>(v[0]), static_cast<uint64_t>(v[1])); !why.empty())
+  GrayImage img = read_gray_image(path);
+  if (const std::string why = why_photo_too_big(static_cast<uint64_t>(img.width), static_cast<uint64_t>(img.height));
+      !why.empty())
     throw std::runtime_error(path + ": " + why);
-  if (v[0] == 0 || v[1] == 0)
-    throw std::runtime_error(path + ": PGM header: " + std::to_string(v[0]) + "x" + std::to_string(v[1]) +
-                             " pixels: width and height must be 1 or more");
-  w = static_cast<int>(v[0]);
-  h = static_cast<int>(v[1]);
-  const std::streamoff raster_at = in.tellg();
-  std::vector<unsigned char> px(static_cast<size_t>(w) * static_cast<size_t>(h));
-  in.read(reinterpret_cast<char*>(px.data()), static_cast<std::streamsize>(px.size()));
-  if (!in) throw std::runtime_error(path + ": truncated PGM");
-  // Bytes past the header's raster: its size is not the picture's (a header
-  // of 64x32 over 64x64 pixels rendered the top half as the whole photo,
-  // exit 0), as a recording's frame refuses them (image_io).
-  in.seekg(0, std::ios::end);
-  const std::streamoff extra = static_cast<std::streamoff>(in.tellg()) - raster_at - static_cast<std::streamoff>(px.size());
-  if (extra > 0)
-    throw std::runtime_error(path + ": PGM has " + std::to_string(extra) + " bytes after the raster of its header's " +
-                             std::to_string(w) + "x" + std::to_string(h) + " pixels: the header does not describe the image");
-  return px;
+  w = img.width;
+  h = img.height;
+  return std::move(img.px);
 }
 
 }  // namespace
