@@ -219,6 +219,12 @@ TEST(ImageIo, BadPgmFilesAreRefused) {
                   error_of([&] { read_gray_image(path("glued.pgm")); }).c_str());
   fixture::write_text(path("long.pgm"), "P5\n2 1\n255\nabc");
   STRCMP_CONTAINS("after the raster", error_of([&] { read_gray_image(path("long.pgm")); }).c_str());
+  CHECK(error_of([&] { read_gray_image(path("long.pgm")); }).find("CR LF") == std::string::npos);
+  // A header written in text mode: CR LF after maxval, one byte too many.
+  fixture::write_text(path("crlf.pgm"), "P5\r\n2 1\r\n255\r\nab");
+  STRCMP_CONTAINS("PGM has 1 bytes after the raster of its header's 2x1 pixels",
+                  error_of([&] { read_gray_image(path("crlf.pgm")); }).c_str());
+  STRCMP_CONTAINS("its maxval ends in CR LF", error_of([&] { read_gray_image(path("crlf.pgm")); }).c_str());
 }
 
 TEST(ImageIo, OtherFilesAreRefused) {

@@ -215,9 +215,14 @@ std::string decode_pgm(const uint8_t* d, size_t n, GrayImage& img, Expect expect
   const size_t need = static_cast<size_t>(w) * static_cast<size_t>(h);
   if (n - pos < need)
     return "truncated PGM: " + std::to_string(n - pos) + " of " + std::to_string(need) + " pixel bytes";
-  if (n - pos > need)
+  if (n - pos > need) {
+    // A CR LF after maxval (a header written in text mode) leaves exactly one.
+    const bool crlf = n - pos - need == 1 && d[pos - 1] == '\r' && d[pos] == '\n';
     return "PGM has " + std::to_string(n - pos - need) + " bytes after the raster of its header's " + std::to_string(w) +
-           "x" + std::to_string(h) + " pixels: the header does not describe the image";
+           "x" + std::to_string(h) + " pixels: the header does not describe the image" +
+           (crlf ? " (its maxval ends in CR LF, two bytes where the format takes one: a header written in text mode?)"
+                 : "");
+  }
   img.width = static_cast<int>(w);
   img.height = static_cast<int>(h);
   img.px.assign(d + pos, d + pos + need);
