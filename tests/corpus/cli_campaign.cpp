@@ -635,6 +635,15 @@ std::vector<Case> read_cases(const std::string& report) {
     replay("the last record a mailbox reply", [](std::string b) { b[b.size() - 42] = '\x84'; return b; },
            "record " + std::to_string((last - 8) / 43 + 1) + " at byte " + std::to_string(last) + " (id 0x84, 42 bytes): a mailbox reply");
   }
+  // The second-to-last record's length byte 42 -> 85: it takes the last
+  // record as its tail (was: decoded from its first 42 bytes, exit 0, the last
+  // measurement missing from the CSV).
+  {
+    const size_t at = read_text(report).size() - 2 * 43;
+    replay("a length byte that swallows the last record", [at](std::string b) { b[at] = '\x55'; return b; },
+           "record " + std::to_string((at - 8) / 43 + 1) + " at byte " + std::to_string(at) +
+               " (id 0x01, 85 bytes): longer than a measurement report (42 bytes)");
+  }
   replay("no magic", [](const std::string& b) { return b.substr(8); }, "not a lumavel report file");
   replay("empty", [](const std::string&) { return std::string(); }, "not a lumavel report file");
   // 4 GB (sparse) of NUL bytes, the tool limited to 1 GB (was: read whole:

@@ -36,6 +36,18 @@ bool Sink::take(const uint8_t* buf, size_t len, const std::string& where) {
                  where.c_str(), buf[0], len);
     return false;
   }
+  // The file link writes each measurement as one record of exactly its size;
+  // a longer record is a damaged length byte, its tail the records after it
+  // (was: decoded from its first bytes, the swallowed last record missing
+  // from the CSV, exit 0). A live link may pad a report: not checked there.
+  if (from_file_ && len > proto::kMeasurementSize) {
+    ++malformed_;
+    std::fprintf(stderr, "malformed report %s (id 0x%02x, %zu bytes): longer than a measurement report (%zu bytes), "
+                         "which is all a report file's record holds: a damaged length byte, the records after it "
+                         "read as its tail\n",
+                 where.c_str(), buf[0], len, proto::kMeasurementSize);
+    return false;
+  }
   proto::Measurement m{};
   const proto::DecodeResult r = proto::decode_measurement(buf, len, m);
   if (!r.ok()) {
