@@ -318,6 +318,15 @@ TEST(ImportSlider, DamagedDatasetsAreRefusedNamingTheLine) {
        "groundtruth.txt:5: x: 1e+300 m is beyond +-1e+07 m"},
       {[&] { line5("groundtruth.txt", [](const std::string& l) { const size_t a = l.find(' ') + 1; return l.substr(0, a) + "1e5" + l.substr(l.find(' ', a)); }); },
        "groundtruth.txt:3: the speed along x from line 1 to line 5: "},
+      // Ground truth on another clock, after every frame (was: 'no frame has a
+      // partner 0.020000 m further on (baseline longer than the travel?)').
+      {[&] {
+         std::vector<std::string> l = fixture::read_lines(d + "/groundtruth.txt");
+         for (std::string& s : l) s = "100" + s.substr(1);
+         fixture::write_lines(d + "/groundtruth.txt", l);
+       },
+       "groundtruth.txt: its times (100 .. 100.4 s, lines 1..41) span none of the frames' times in images.txt "
+       "(0.01 .. 0.37 s): a frame's position is the ground truth's at its time (another clock or time unit?)"},
       // strtod's hexadecimal form, as the recording tables refuse it (was: 0x32 read as 50).
       {[&] { fixture::write_text(d + "/calib.txt", "0x32 51 23.5 17.5 0 0 0 0 0\n"); },
        "calib.txt:1: column 'fx': '0x32' is a hexadecimal number"},

@@ -143,6 +143,21 @@ void check_does_not_turn(const std::vector<SliderPose>& poses, double fx, const 
   }
 }
 
+// Each frame's position is the ground truth's at the frame's time; a ground
+// truth whose times miss every frame (another clock or time unit) gave no
+// position at all, refused as 'no frame has a partner ... (baseline longer
+// than the travel?)', a cause that was not the one.
+void check_truth_spans_a_frame(const std::vector<double>& x, const SliderDataset& d, const std::string& gt_file) {
+  if (std::any_of(x.begin(), x.end(), [](double v) { return !std::isnan(v); })) return;
+  char b[400];
+  std::snprintf(b, sizeof b,
+                "its times (%.9g .. %.9g s, lines %ld..%ld) span none of the frames' times in images.txt (%.9g .. %.9g "
+                "s): a frame's position is the ground truth's at its time (another clock or time unit?)",
+                d.poses.front().t, d.poses.back().t, d.poses.front().line, d.poses.back().line, d.frames.front().t,
+                d.frames.back().t);
+  throw recording_error_in(gt_file, b);
+}
+
 }  // namespace
 
 ImportSliderSummary import_slider(const std::string& data_dir, const std::string& out_rec,
@@ -164,6 +179,7 @@ ImportSliderSummary import_slider(const std::string& data_dir, const std::string
   sum.frames_in = d.frames.size();
   std::vector<double> x(d.frames.size());
   for (size_t i = 0; i < x.size(); ++i) x[i] = slider_position_at(d.poses, d.frames[i].t);
+  check_truth_spans_a_frame(x, d, gt_file);
   const std::vector<ShiftedPair> pairs = plan_time_shift_pairs(x, options.baseline);
   if (pairs.empty())
     throw recording_error_in(gt_file, "no frame has a partner " + std::to_string(options.baseline) +
