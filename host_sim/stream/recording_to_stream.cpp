@@ -10,6 +10,7 @@
 
 #include "lumavel/host/file_camera.hpp"
 #include "lumavel/host/file_gyro.hpp"
+#include "lumavel/host/path_check.hpp"
 #include "lumavel/host/recording.hpp"
 #include "lumavel/host/recording_error.hpp"
 #include "lumavel/stream/format.hpp"
@@ -30,6 +31,13 @@ int main(int argc, char** argv) {
   const int h = static_cast<int>(height);
   try {
     const lumavel::host::Recording rec = lumavel::host::load_recording(argv[1]);
+    // The stream written over a file the recording holds (its data.csv, a
+    // frame) destroyed it, exit 0: refused as lumavel-sim run refuses it.
+    if (lumavel::host::overwrites_recording(rec, argv[2])) {
+      std::fprintf(stderr, "%s: %s (out.lvs): that is part of the recording being read (%s); write the stream elsewhere\n",
+                   argv[0], lumavel::host::shown_path(argv[2]).c_str(), lumavel::host::shown_path(rec.root).c_str());
+      return 2;
+    }
     lumavel::host::FileStereoCamera camera(rec, w, h);
     lumavel::host::FileGyro gyro(rec);
     lumavel::stream::StreamWriter o{std::fopen(argv[2], "wb")};

@@ -4,7 +4,9 @@
 # "40x" as 40 and 4294967336 as 40, "1e9" frames as 1: the tools ran, exit 0.
 # lumavel_app_host given a folder for its stream says so (was: 'not a lumavel
 # stream (bad header)', what the bytes a folder cannot give look like).
-#   cmake -DCONVERT=<lumavel_recording_to_stream> -DGEN=<lumavel_make_test_stream> -DHOST_APP=<lumavel_app_host>
+# The converter's stream written over its recording's cam0/data.csv destroyed
+# it, exit 0: refused, the file intact.
+#   cmake -DCONVERT=<lumavel_recording_to_stream> -DSIM=<lumavel-sim> -DGEN=<lumavel_make_test_stream> -DHOST_APP=<lumavel_app_host>
 #         -DWORK=<dir> -P ...
 file(MAKE_DIRECTORY ${WORK})
 # expect(<regex the message must match> <command...>): exit 2 (usage; the app host's bad stream)
@@ -22,3 +24,18 @@ expect("frames: must be a whole number in 1\\.\\.1000000, not '1e9'" ${GEN} out.
 expect("seed: must be a whole number in 0\\.\\.4294967295, not '-1'" ${GEN} out.lvs 40 30 10 -1)
 expect("width: must be a whole number in 16\\.\\.2048, not '40x'" ${GEN} out.lvs 40x 30 10)
 expect("${WORK}: read error: Is a directory" ${HOST_APP} ${WORK} out.lvr)
+# A 0.1 s render to convert (its cam0/data.csv the output named).
+file(REMOVE_RECURSE ${WORK}/rec)
+execute_process(COMMAND ${SIM} render ${CMAKE_CURRENT_LIST_DIR}/../../host_sim/scenarios/paper_sim_aligned.yaml
+                        ${WORK}/rec --resolution 40x30 --duration 0.1
+                RESULT_VARIABLE rc OUTPUT_QUIET ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "render of the recording to convert failed: ${err}")
+endif()
+file(READ ${WORK}/rec/mav0/cam0/data.csv before)
+expect("rec/mav0/cam0/data.csv \\(out.lvs\\): that is part of the recording being read \\(rec/mav0\\); write the stream elsewhere"
+       ${CONVERT} rec rec/mav0/cam0/data.csv 40 30)
+file(READ ${WORK}/rec/mav0/cam0/data.csv after)
+if(NOT before STREQUAL after)
+  message(FATAL_ERROR "the converter wrote over the recording's cam0/data.csv")
+endif()
