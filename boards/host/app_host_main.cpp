@@ -4,6 +4,8 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
+#include <system_error>
 
 #include "lumavel/stream/run_stream.hpp"
 
@@ -32,6 +34,14 @@ class FileSink final : public lumavel::stream::ByteSink {
 int main(int argc, char** argv) {
   if (argc != 3) {
     std::fprintf(stderr, "usage: %s <in.lvs> <out.lvr>\n", argv[0]);
+    return 1;
+  }
+  // The results written over the stream being read (or a link to it)
+  // truncated it before its first byte was read: the input lost, and said
+  // as 'record 0: not a lumavel stream (bad header)'.
+  std::error_code ec;
+  if (std::filesystem::equivalent(argv[1], argv[2], ec) && !ec) {
+    std::fprintf(stderr, "%s: that is the stream being read (%s): write the results elsewhere\n", argv[2], argv[1]);
     return 1;
   }
   std::FILE* in = std::fopen(argv[1], "rb");

@@ -4,6 +4,8 @@
 # "40x" as 40 and 4294967336 as 40, "1e9" frames as 1: the tools ran, exit 0.
 # lumavel_app_host given a folder for its stream says so (was: 'not a lumavel
 # stream (bad header)', what the bytes a folder cannot give look like).
+# lumavel_app_host's results written over its stream (or a link to it)
+# truncated the stream before reading it: refused, exit 1, the stream intact.
 # The converter's stream written over its recording's cam0/data.csv destroyed
 # it, exit 0: refused, the file intact.
 #   cmake -DCONVERT=<lumavel_recording_to_stream> -DSIM=<lumavel-sim> -DGEN=<lumavel_make_test_stream> -DHOST_APP=<lumavel_app_host>
@@ -39,3 +41,18 @@ file(READ ${WORK}/rec/mav0/cam0/data.csv after)
 if(NOT before STREQUAL after)
   message(FATAL_ERROR "the converter wrote over the recording's cam0/data.csv")
 endif()
+# The app host's results onto the stream it reads, by name or through a link.
+execute_process(COMMAND ${CONVERT} rec in.lvs 40 30 WORKING_DIRECTORY ${WORK} RESULT_VARIABLE rc ERROR_QUIET)
+file(READ ${WORK}/in.lvs stream HEX)
+file(REMOVE ${WORK}/link.lvr)
+file(CREATE_LINK in.lvs ${WORK}/link.lvr SYMBOLIC)
+foreach(out in.lvs link.lvr)
+  execute_process(COMMAND ${HOST_APP} in.lvs ${out} WORKING_DIRECTORY ${WORK} RESULT_VARIABLE rc ERROR_VARIABLE err)
+  if(NOT rc EQUAL 1 OR NOT err MATCHES "^${out}: that is the stream being read \\(in.lvs\\): write the results elsewhere")
+    message(FATAL_ERROR "lumavel_app_host in.lvs ${out}: expected exit 1 and 'that is the stream being read', got exit ${rc}: ${err}")
+  endif()
+  file(READ ${WORK}/in.lvs after HEX)
+  if(NOT stream STREQUAL after)
+    message(FATAL_ERROR "lumavel_app_host in.lvs ${out}: the stream was written over")
+  endif()
+endforeach()
