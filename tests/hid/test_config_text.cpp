@@ -149,8 +149,21 @@ TEST(ConfigText, ValuesBeyondTheirFieldGetTheRule) {
   STRCMP_EQUAL("rig.cfg:1: gyro_offset_learning = yes: not a whole number; gyro_offset_learning must be 0 or 1",
                offline_refusal("gyro_offset_learning=yes\n").c_str());
   STRCMP_EQUAL("rig.cfg:1: kernels = 1x:0.07: not a whole number; kernels are ORDER:SIGMA_RAD[,...], 1..6 of them, "
-               "orders 0..3, sigmas 0.0087..0.785 rad (0.5..45 deg)",
+               "orders 0..3, sigmas 0.00873..0.785 rad (0.5..45 deg)",
                offline_refusal("kernels=1x:0.07\n").c_str());
+}
+
+// The bounds a rule names are accepted: the sigmas' lower one, 0.5 deg, was
+// written 0.0087 rad, which is 0.4985 deg: 'normaliser_sigma_rad = 0.0087:
+// normaliser sigma must be 0.0087..0.785 rad', a refusal its own rule allows.
+TEST(ConfigText, TheBoundsARuleNamesAreAccepted) {
+  STRCMP_EQUAL("rig.cfg:1: normaliser_sigma_rad = 0.0087: normaliser sigma must be 0.00873..0.785 rad (0.5..45 deg)",
+               offline_refusal("normaliser_sigma_rad=0.0087\n").c_str());
+  STRCMP_EQUAL("rig.cfg:1: kernels = 1:0.0087: kernel sigmas must be 0.00873..0.785 rad (0.5..45 deg)",
+               offline_refusal("kernels=1:0.0087\n").c_str());
+  STRCMP_EQUAL("", offline_refusal("normaliser_sigma_rad=0.00873\n").c_str());
+  STRCMP_EQUAL("", offline_refusal("normaliser_sigma_rad=0.785\n").c_str());
+  STRCMP_EQUAL("", offline_refusal("kernels=1:0.00873,0:0.785\n").c_str());
 }
 
 // A whole number is written as the command lines take theirs: "040" is 32
@@ -162,7 +175,7 @@ TEST(ConfigText, AWholeNumberWithALeadingZeroIsRefused) {
                offline_refusal("width=040\n").c_str());
   STRCMP_EQUAL("rig.cfg:2: kernels = 1:0.07,01:0.14: a leading zero (octal to some readers, decimal to others): write "
                "the number without it; kernels are ORDER:SIGMA_RAD[,...], 1..6 of them, orders 0..3, sigmas "
-               "0.0087..0.785 rad (0.5..45 deg)",
+               "0.00873..0.785 rad (0.5..45 deg)",
                offline_refusal("width=40\nkernels=1:0.07,01:0.14\n").c_str());
   STRCMP_EQUAL("rig.cfg:1: tau_us = 0x10: not a whole number; tau_us must be 1000..10000000 us",
                offline_refusal("tau_us=0x10\n").c_str());

@@ -70,10 +70,10 @@ const char* rule_of(ConfigField f) {
     case ConfigField::kFocalLength: return "fu must be 1..8 * width px";
     case ConfigField::kPrincipalPoint: return "cu must be 0..width - 1 px";
     case ConfigField::kOrientation: return "unknown orientation bits";
-    case ConfigField::kNormaliserSigma: return "normaliser sigma must be 0.0087..0.785 rad (0.5..45 deg)";
+    case ConfigField::kNormaliserSigma: return "normaliser sigma must be 0.00873..0.785 rad (0.5..45 deg)";
     case ConfigField::kKernelCount: return "kernels must list 1..min(6, LUMAVEL_MAX_KERNELS) kernels";
     case ConfigField::kKernelOrder: return "kernel orders must be 0..3";
-    case ConfigField::kKernelSigma: return "kernel sigmas must be 0.0087..0.785 rad (0.5..45 deg)";
+    case ConfigField::kKernelSigma: return "kernel sigmas must be 0.00873..0.785 rad (0.5..45 deg)";
     case ConfigField::kTau: return "tau_us must be 1000..10000000 us";
     case ConfigField::kFramePeriod: return "frame_period_us must be 1000..1000000 us";
     case ConfigField::kMaxGap: return "max_gap_us must be frame_period_us..4000000 us";

@@ -436,7 +436,7 @@ std::string rule_of_key(const std::string& key) {
   using F = proto::ConfigField;
   if (key == "kernels")
     return "kernels are ORDER:SIGMA_RAD[,...], 1.." + std::to_string(proto::kWireKernels) +
-           " of them, orders 0..3, sigmas 0.0087..0.785 rad (0.5..45 deg)";
+           " of them, orders 0..3, sigmas 0.00873..0.785 rad (0.5..45 deg)";
   if (key == "cam0_upside_down" || key == "cam1_upside_down" || key == "baseline_correction" ||
       key == "gyro_offset_learning" || key == "photometric_balance" || key == "elevation_band" ||
       key == "photometric_match")
