@@ -203,6 +203,20 @@ TEST(BadInput, GroundTruthQuaternionNotUnit) {
   STRCMP_CONTAINS((gt + ":6: q_RS is not a unit quaternion").c_str(), load_error().c_str());
 }
 
+// A norm at the bounds the rule names, 0.99 and 1.01, is within it (was:
+// 'q_RS is not a unit quaternion (norm 1.01): its norm must be within 0.01 of 1').
+TEST(BadInput, GroundTruthQuaternionNormAtTheToleranceIsAccepted) {
+  const std::string gt = m + "state_groundtruth_estimate0/data.csv";
+  const std::string t = fixture::read_lines(gt)[5].substr(0, fixture::read_lines(gt)[5].find(','));
+  fixture::set_line(gt, 6, t + ",0,0,0,1.01,0,0,0,1,0,0,0,0,0,0,0,0");
+  STRCMP_EQUAL("(no error)", load_error().c_str());
+  fixture::set_line(gt, 6, t + ",0,0,0,0.99,0,0,0,1,0,0,0,0,0,0,0,0");
+  STRCMP_EQUAL("(no error)", load_error().c_str());
+  fixture::set_line(gt, 6, t + ",0,0,0,1.0101,0,0,0,1,0,0,0,0,0,0,0,0");
+  STRCMP_CONTAINS((gt + ":6: q_RS is not a unit quaternion (norm 1.0101): its norm must be within 0.01 of 1").c_str(),
+                  load_error().c_str());
+}
+
 TEST(BadInput, ResolutionMismatchWithSensorYaml) {
   const std::vector<uint8_t> px(41 * 30, 100);
   write_png_gray(image(1, 0), px.data(), 41, 30);

@@ -22,7 +22,11 @@ std::string why_implausible_speed(double v_mps) {
 }
 
 std::string why_not_unit_quaternion(double norm) {
-  if (std::fabs(norm - 1.0) <= layout::kGroundTruthQuaternionNormTolerance) return "";
+  // Against 1 -+ the tolerance, which round as 0.99 and 1.01 do: |norm - 1|
+  // of a norm of 1.01 is 0.010000000000000009, and a norm at the rule's own
+  // bound was refused.
+  constexpr double tol = layout::kGroundTruthQuaternionNormTolerance;
+  if (norm >= 1.0 - tol && norm <= 1.0 + tol) return "";
   return "is not a unit quaternion (norm " + format_double(norm) + "): its norm must be within " +
          format_double(layout::kGroundTruthQuaternionNormTolerance) + " of 1";
 }
