@@ -644,6 +644,9 @@ std::vector<Case> read_cases(const std::string& report) {
            "record " + std::to_string((at - 8) / 43 + 1) + " at byte " + std::to_string(at) +
                " (id 0x01, 85 bytes): longer than a measurement report (42 bytes)");
   }
+  // Cut after its header (was: a CSV of the header line, exit 0).
+  replay("the header alone", [](const std::string& b) { return b.substr(0, 8); },
+         "run.hidrep: no record after its \"LMVHID1\" header: a run writes a report for every frame pair, at least one");
   replay("no magic", [](const std::string& b) { return b.substr(8); }, "not a lumavel report file");
   replay("empty", [](const std::string&) { return std::string(); }, "not a lumavel report file");
   // 4 GB (sparse) of NUL bytes, the tool limited to 1 GB (was: read whole:

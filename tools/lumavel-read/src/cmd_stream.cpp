@@ -158,6 +158,11 @@ int cmd_replay(const std::string& file, const StreamOptions& o) {
     std::fprintf(stderr, "malformed report file %s\n", e.what());
     status = kExitFailure;
   }
+  // A run sends a report for every frame pair, at least one: a file holding
+  // its header alone was cut short (was: a CSV of the header line, exit 0).
+  if (in.record_index() == 0)
+    throw std::runtime_error(host::shown_path(file) + ": no record after its \"LMVHID1\" header: a run writes a report "
+                             "for every frame pair, at least one (a file cut short?)");
   sink.finish();
   if (out.file) out.file->commit();  // the good reports of a damaged file are kept
   return sink.malformed() > 0 ? kExitFailure : status;
