@@ -328,6 +328,28 @@ TEST(BadInput, SensorYamlBadValueNamesLine) {
   STRCMP_CONTAINS((y + ":" + std::to_string(line) + ": rate_hz: expected a number").c_str(), load_error().c_str());
 }
 
+// A key with no value was named at the line of the next token: 'rate_hz:'
+// followed by a comment and resolution said 'sensor.yaml:N+2: rate_hz:
+// expected a number'; the optional exposure_s the same.
+TEST(BadInput, SensorYamlKeyWithoutAValueNamesItsLine) {
+  const std::string y = m + "cam1/sensor.yaml";
+  const std::vector<std::string> intact = fixture::read_lines(y);
+  std::vector<std::string> lines = intact;
+  size_t line = 0;
+  for (size_t i = 0; i < lines.size(); ++i)
+    if (lines[i].rfind("rate_hz:", 0) == 0) lines[i] = "rate_hz:\n# nothing", line = i + 1;
+  CHECK(line != 0);
+  fixture::write_lines(y, lines);
+  STRCMP_CONTAINS((y + ":" + std::to_string(line) + ": rate_hz: no value after the key (empty, or null)").c_str(),
+                  load_error().c_str());
+  lines = intact;
+  lines.push_back("exposure_s:");
+  lines.push_back("# nothing");
+  fixture::write_lines(y, lines);
+  STRCMP_CONTAINS((y + ":" + std::to_string(intact.size() + 1) + ": exposure_s: no value after the key (empty, or null)").c_str(),
+                  load_error().c_str());
+}
+
 TEST(BadInput, SensorYamlShortList) {
   const std::string y = m + "cam1/sensor.yaml";
   std::vector<std::string> lines = fixture::read_lines(y);

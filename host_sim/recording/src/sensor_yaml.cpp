@@ -98,6 +98,14 @@ YAML::Node load_yaml(const std::string& path) {
   }
 }
 
+// A key with nothing after it holds a null node placed at the next token,
+// lines further on: 'rate_hz:' said 'sensor.yaml:16: rate_hz: expected a
+// number', 16 the line of the key after it. Refused at the key's own line.
+void refuse_empty_value(const YAML::Node& map, const char* key, const std::string& shown_key, const std::string& path) {
+  if (map[key].IsNull())
+    throw recording_error_at(path, key_line(map, key), shown_key + ": no value after the key (empty, or null)");
+}
+
 // `parent`: the mapping's own key, for keys inside one (T_BS.data).
 YAML::Node require(const YAML::Node& root, const char* key, const std::string& path, const char* parent = nullptr) {
   YAML::Node n = root[key];
@@ -106,6 +114,7 @@ YAML::Node require(const YAML::Node& root, const char* key, const std::string& p
     throw parent == nullptr || root.Mark().is_null() ? recording_error_in(path, what)
                                                      : recording_error_at(path, line_of(root), what);
   }
+  refuse_empty_value(root, key, parent ? std::string(parent) + "." + key : std::string(key), path);
   return n;
 }
 
@@ -198,6 +207,7 @@ double optional_number(const YAML::Node& root, const char* key, const std::strin
                        const std::string& range) {
   const YAML::Node n = root[key];
   if (!n) return -1.0;
+  refuse_empty_value(root, key, key, path);
   const double v = number(n, key, path);
   if (v < 0)
     throw recording_error_at(path, line_of(n), std::string(key) + " = " + format_double(v) + " must not be negative");
