@@ -373,6 +373,19 @@ TEST(ScenarioErrors, AListWhereTextOrAKeyBelongsIsNamed) {
   STRCMP_EQUAL("(accepted)", error_of(std::string("description:\n") + kGood).c_str());
 }
 
+// A key with no value was named at the next token's line: 'duration_s:'
+// before 'camera:' said 'bad.yaml:2: 'duration_s' must be a number', a
+// 'rate_hz:' at the end of its map the line of the map after it.
+TEST(ScenarioErrors, AKeyWithoutAValueNamesItsLine) {
+  STRCMP_EQUAL("bad.yaml:1: 'duration_s' has no value (empty, or null)",
+               error_of(replace(kGood, "duration_s: 2\n", "duration_s:\n")).c_str());
+  STRCMP_EQUAL("bad.yaml:4: 'rate_hz' has no value (empty, or null)",
+               error_of(replace(kGood, "  rate_hz: 60\n", "  rate_hz:\n")).c_str());
+  STRCMP_EQUAL("bad.yaml:12: 'z' has no value (empty, or null)",
+               error_of(replace(kGood, "      z: [-1, 1]\n", "      z: ~\n")).c_str());
+  STRCMP_EQUAL("(accepted)", error_of(replace(kGood, "    - from: [0, 2]\n", "    - name:\n      from: [0, 2]\n")).c_str());
+}
+
 // drops.frames: a frame past the recording's end was ignored and a frame
 // listed twice counted once, silently (the list said more than was dropped).
 TEST(ScenarioErrors, DroppedFramesBeyondTheRecordingOrRepeatedAreRefused) {

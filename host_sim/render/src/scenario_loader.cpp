@@ -61,6 +61,12 @@ class Reader {
           fail(kv.first, "key '" + shown_path(key) + "' is given again (first at line " + std::to_string(at->second) +
                              "): one value per key");
         seen.emplace(key, line);
+        // An empty value is a null placed at the next token, lines further on:
+        // 'duration_s:' said 'FILE:10: 'duration_s' must be a number', the
+        // next key's line. Said at its own; text (a description, a plane's
+        // name) may be empty.
+        if (kv.second.IsNull() && key != "description" && key != "name")
+          fail(kv.first, "'" + shown_path(key) + "' has no value (empty, or null)");
         check_unique_keys(kv.second, budget, limit);
       }
     } else if (n.IsSequence()) {
