@@ -283,6 +283,20 @@ TEST(ConfigText, ANulByteIsRefusedNotTruncated) {
                offline_refusal(std::string("look=le\0" "ft\n", 11)).c_str());
 }
 
+// Bytes that show nothing are shown as \xNN too: a byte-order mark before a
+// later key read 'unknown configuration key "height"', a binary file's bytes
+// and a C1 control (U+009B, a terminal's CSI) went out as they were. Text in
+// UTF-8 is shown as it is.
+TEST(ConfigText, InvisibleAndInvalidBytesInAMessageAreShownEscaped) {
+  DeviceSetup s = sample();
+  STRCMP_CONTAINS("rig.cfg:2: unknown configuration key \"\\xEF\\xBB\\xBFheight\"",
+                  error_of(s, "\xEF\xBB\xBFwidth=40\n\xEF\xBB\xBFheight=30\n").c_str());
+  STRCMP_EQUAL("rig.cfg:1: look: use left or right, not \"\\xFF\\xFEle\\xC2\\x9B2J\\xE2\\x80\\xAEft\"",
+               error_of(s, "look=\xFF\xFEle\xC2\x9B" "2J\xE2\x80\xAE" "ft\n").c_str());
+  STRCMP_EQUAL("rig.cfg:1: look: use left or right, not \"gauche \xC3\xA0 \xE5\xB7\xA6\"",
+               error_of(s, "look=gauche \xC3\xA0 \xE5\xB7\xA6\n").c_str());
+}
+
 // A value shown in a refusal is shown as shown_path shows it (control
 // characters as \xNN): look's, a kernel list's and a lens value's were sent
 // to the terminal as they were, escape sequences and all.

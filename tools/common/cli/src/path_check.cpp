@@ -9,6 +9,7 @@
 #include <cerrno>
 #include <chrono>
 #include <climits>
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <thread>
@@ -58,18 +59,48 @@ const char* special_kind(mode_t mode) {
   return "a special file";
 }
 
-// A message's text with ASCII control characters as \xNN (shown_path).
+// The length of the UTF-8 sequence at s[i] if it is valid and visible, else 0.
+// Bytes that are no character, C1 controls (U+0080..U+009F: U+009B is CSI to
+// a terminal) and the invisible format characters (a byte-order mark inside a
+// line, zero-width spaces, bidirectional overrides that reorder what follows)
+// are shown as \xNN: a key that began with a BOM read 'unknown configuration
+// key "height"', and a binary file's bytes went to the terminal as they were.
+size_t visible_utf8(const std::string& s, size_t i) {
+  const auto b = [&](size_t k) { return static_cast<unsigned char>(s[k]); };
+  const unsigned char c = b(i);
+  const size_t n = c >= 0xF0 && c <= 0xF4 ? 4 : c >= 0xE0 ? 3 : c >= 0xC2 && c < 0xE0 ? 2 : 0;
+  if (n == 0 || i + n > s.size()) return 0;
+  uint32_t cp = c & (n == 2 ? 0x1F : n == 3 ? 0x0F : 0x07);
+  for (size_t k = 1; k < n; ++k) {
+    if ((b(i + k) & 0xC0) != 0x80) return 0;
+    cp = (cp << 6) | (b(i + k) & 0x3F);
+  }
+  const uint32_t lowest[] = {0, 0, 0x80, 0x800, 0x10000};
+  if (cp < lowest[n] || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)) return 0;  // overlong, beyond, surrogate
+  const bool invisible = cp <= 0x9F || (cp >= 0x200B && cp <= 0x200F) || (cp >= 0x202A && cp <= 0x202E) ||
+                         (cp >= 0x2060 && cp <= 0x2069) || cp == 0xFEFF;
+  return invisible ? 0 : n;
+}
+
+// A message's text with control characters and bytes that show nothing as
+// \xNN (shown_path).
 std::string without_controls(const std::string& s) {
   std::string out;
-  for (const char ch : s) {
-    const auto c = static_cast<unsigned char>(ch);
-    if (c >= 0x20 && c != 0x7F) {
-      out += ch;
+  for (size_t i = 0; i < s.size();) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    if (c >= 0x20 && c < 0x7F) {
+      out += s[i++];
+      continue;
+    }
+    if (const size_t n = c >= 0x80 ? visible_utf8(s, i) : 0; n != 0) {
+      out.append(s, i, n);
+      i += n;
       continue;
     }
     char hex[8];
     std::snprintf(hex, sizeof hex, "\\x%02X", c);
     out += hex;
+    ++i;
   }
   return out;
 }
