@@ -539,6 +539,25 @@ TEST(BadInput, ImageThatIsAFolderOrADevice) {
                   load_error().c_str());
 }
 
+// A repeated frame's names are shown as every field is (was: an escape
+// sequence in the name sent to the terminal as it was).
+TEST(BadInput, ARepeatedFramesNamesAreShownLikeFields) {
+  const std::string csv = m + "cam0/data.csv";
+  std::vector<std::string> l = fixture::read_lines(csv);
+  const std::string t5 = l[6].substr(0, l[6].find(','));
+  const std::string name = std::to_string(fixture::frame_time(o, 5)) + ".png";
+  std::filesystem::create_symlink(name, m + "cam0/data/x\x1b[2Jy.png");
+  l[7] = l[7].substr(0, l[7].find(',')) + ",x\x1b[2Jy.png";
+  fixture::write_lines(csv, l);
+  STRCMP_CONTAINS((csv + ":8: filename 'x\\x1B[2Jy.png' is the same file as '" + name + "', the frame of line 7").c_str(),
+                  load_error().c_str());
+  l[7] = l[7].substr(0, l[7].find(',')) + ",./" + name + "\x1b[0m";
+  l[6] = t5 + "," + name + "\x1b[0m";
+  fixture::write_lines(csv, l);
+  std::filesystem::rename(image(0, 5), m + "cam0/data/" + name + "\x1b[0m");
+  STRCMP_CONTAINS((csv + ":8: filename './" + name + "\\x1B[0m' is also the frame of line 7").c_str(), load_error().c_str());
+}
+
 // A frame file that is a link to an earlier row's frame is that frame read
 // twice (was: exit 0, the repeated frame read as a standstill; E 0.82 ->
 // 1.30 % on wall_40x30), refused as a name given twice is.

@@ -117,7 +117,9 @@ std::string why_nul_in_name(const std::string& name) {
 std::string FrameNames::why_repeated(const std::string& name, long line, const std::string& path) {
   static const char* const kWhy = ": each row names its own image (a repeated frame would read as a standstill)";
   const auto [first, fresh] = line_of_.emplace(std::filesystem::path(name).lexically_normal().string(), line);
-  if (!fresh) return "filename '" + name + "' is also the frame of line " + std::to_string(first->second) + kWhy;
+  // Names through shown_path, as every field of a table (was: an escape
+  // sequence in a name went to the terminal).
+  if (!fresh) return "filename '" + shown_path(name) + "' is also the frame of line " + std::to_string(first->second) + kWhy;
   // Another name for an earlier row's file (a symbolic or hard link) is the
   // same frame read twice (was: exit 0, the repeated frame read as a standstill).
   struct stat st {};
@@ -126,7 +128,7 @@ std::string FrameNames::why_repeated(const std::string& name, long line, const s
       std::make_pair(static_cast<unsigned long long>(st.st_dev), static_cast<unsigned long long>(st.st_ino)),
       Seen{line, name, table_});
   if (new_file) return "";
-  return "filename '" + name + "' is the same file as '" + same->second.name + "', the frame of line " +
+  return "filename '" + shown_path(name) + "' is the same file as '" + shown_path(same->second.name) + "', the frame of line " +
          std::to_string(same->second.line) + (same->second.table != table_ ? " of " + same->second.table : "") +
          " (a link to it)" + kWhy;
 }
