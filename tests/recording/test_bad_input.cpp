@@ -142,6 +142,10 @@ TEST(BadInput, FrameNameOutsideTheDataFolder) {
   fixture::write_text(csv, intact);
   fixture::set_field(csv, 4, 1, "..x.png");  // a dotted name stays inside: only missing
   STRCMP_CONTAINS("cam0/data.csv:4: image file", load_error().c_str());
+  // Shown as every field is (was: the escape sequence sent to the terminal).
+  fixture::write_text(csv, intact);
+  fixture::set_field(csv, 4, 1, "../\x1b[2Jx.png");
+  STRCMP_CONTAINS("cam0/data.csv:4: filename '../\\x1B[2Jx.png' leaves cam0/data/", load_error().c_str());
 }
 
 // Old Mac line ends (CR only) make the file one line: said as such, not

@@ -59,7 +59,7 @@ CamRows read_cam_rows(const std::string& root, int cam, FrameNames& named) {
       throw recording_error_at(c.csv, r.line, "filename " + why);
     if (leaves_data_folder(name))
       throw recording_error_at(c.csv, r.line,
-                               "filename '" + name + "' leaves " + layout::kCamDir[cam] +
+                               "filename '" + shown_path(name) + "' leaves " + layout::kCamDir[cam] +
                                    "/data/ (names are relative to it, with no '..' and no leading '/')");
     const std::string path = dir + "/data/" + name;
     if (const std::string why = why_not_a_file(path); !why.empty())
