@@ -120,6 +120,16 @@ TEST(ImageIo, FormatIsChosenBySignatureNotName) {
   CHECK(read_gray_image(path("really_pgm.png")).px == px);
 }
 
+// A frame's name is a table's field: shown as one (was: an escape sequence
+// in a data.csv or images.txt name went to the terminal with the refusal).
+TEST(ImageIo, TheNameOfARefusedImageIsShownLikeAField) {
+  fixture::write_text(path("a\x1b[2Jb.png"), "junk");
+  STRCMP_CONTAINS((dir.path() + "/a\\x1B[2Jb.png: not a PNG or binary PGM file").c_str(),
+                  error_of([&] { read_gray_image(path("a\x1b[2Jb.png")); }).c_str());
+  STRCMP_CONTAINS((dir.path() + "/c\\x1B[2Jd.png: does not exist").c_str(),
+                  error_of([&] { read_gray_image(path("c\x1b[2Jd.png")); }).c_str());
+}
+
 TEST(ImageIo, ColourPngIsRefusedNamingTheFile) {
   write_png_raw(path("rgb.png"), 4, 4, 8, PNG_COLOR_TYPE_RGB);
   const std::string e = error_of([&] { read_gray_image(path("rgb.png")); });
