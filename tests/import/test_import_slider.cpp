@@ -338,6 +338,13 @@ TEST(ImportSlider, DamagedDatasetsAreRefusedNamingTheLine) {
       // Image errors name images.txt's line; a size mismatch gives the sizes.
       {[&] { std::filesystem::remove(d + "/images/frame_00000004.png"); },
        "images.txt:5: " + d + "/images/frame_00000004.png: does not exist"},
+      // Its name shown as a field is (was: an escape sequence sent to the terminal).
+      {[&] {
+         const std::vector<uint8_t> px(40 * kH, 9);
+         write_png_gray(d + "/images/f\x1b[2J.png", px.data(), 40, kH);
+         line5("images.txt", [](const std::string& l) { return l.substr(0, l.find(' ')) + " images/f\x1b[2J.png"; });
+       },
+       "images.txt:5: " + d + "/images/f\\x1B[2J.png is 40x36, but " + d + "/images/frame_00000000.png (line 1) is 48x36"},
       {[&] {
          const std::vector<uint8_t> px(40 * kH, 9);
          write_png_gray(d + "/images/frame_00000004.png", px.data(), 40, kH);

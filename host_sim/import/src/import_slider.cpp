@@ -200,7 +200,7 @@ ImportSliderSummary import_slider(const std::string& data_dir, const std::string
       auto size = [](const GrayImage& g) { return std::to_string(g.width) + "x" + std::to_string(g.height); };
       if (img[i].width != first.width || img[i].height != first.height)
         throw recording_error_at(images_txt, f.line,
-                                 f.path + " is " + size(img[i]) + ", but " + d.frames[first_i].path + " (line " +
+                                 shown_path(f.path) + " is " + size(img[i]) + ", but " + shown_path(d.frames[first_i].path) + " (line " +
                                      std::to_string(d.frames[first_i].line) + ") is " + size(first) +
                                      ": every frame must have the same size");
     }
