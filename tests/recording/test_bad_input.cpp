@@ -230,6 +230,16 @@ TEST(BadInput, ResolutionMismatchWithSensorYaml) {
   STRCMP_CONTAINS("resolution [40, 30]", e.c_str());
 }
 
+// The frame's name is a data.csv field, shown as one (was: an escape
+// sequence in it sent to the terminal with the refusal).
+TEST(BadInput, AFrameOfTheWrongSizeIsNamedLikeAField) {
+  const std::vector<uint8_t> px(41 * 30, 100);
+  write_png_gray(m + "cam1/data/f\x1b[2J.png", px.data(), 41, 30);
+  fixture::set_field(m + "cam1/data.csv", 4, 1, "f\x1b[2J.png");
+  STRCMP_CONTAINS((m + "cam1/data/f\\x1B[2J.png: image is 41x30, sensor.yaml says resolution [40, 30]").c_str(),
+                  full_error().c_str());
+}
+
 TEST(BadInput, WrongSizeLaterFrame) {
   const std::vector<uint8_t> px(40 * 29, 100);
   write_png_gray(image(0, 7), px.data(), 40, 29);

@@ -5,6 +5,7 @@
 #include "lumavel/core/binning.hpp"
 #include "lumavel/core/clip_match.hpp"
 #include "lumavel/host/image_io.hpp"
+#include "lumavel/host/path_check.hpp"
 #include "lumavel/host/recording_layout.hpp"
 #include "lumavel/host/rig.hpp"
 
@@ -70,7 +71,7 @@ void FileStereoCamera::decode_into(size_t index, Slot& slot) const {
       throw RecordingError(frame + e.what());
     }
     if (img[c].width != s.width || img[c].height != s.height)
-      throw RecordingError(frame + f.path[c] + ": image is " + std::to_string(img[c].width) + "x" +
+      throw RecordingError(frame + shown_path(f.path[c]) + ": image is " + std::to_string(img[c].width) + "x" +
                            std::to_string(img[c].height) + ", sensor.yaml says resolution [" +
                            std::to_string(s.width) + ", " + std::to_string(s.height) + "]");
     view[c] = ImageView{img[c].px.data(), static_cast<uint16_t>(img[c].width), static_cast<uint16_t>(img[c].height),
@@ -98,7 +99,7 @@ void FileStereoCamera::decode_into(size_t index, Slot& slot) const {
       view[c].pixels = img[c].px.data();
     }
     if (!bin_area(view[c], slot.px[c].data(), width_, height_))
-      throw RecordingError(frame_of(c) + f.path[c] + ": cannot bin to the working resolution");
+      throw RecordingError(frame_of(c) + shown_path(f.path[c]) + ": cannot bin to the working resolution");
   }
 }
 
