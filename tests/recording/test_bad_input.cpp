@@ -235,9 +235,14 @@ TEST(BadInput, ResolutionMismatchWithSensorYaml) {
 TEST(BadInput, AFrameOfTheWrongSizeIsNamedLikeAField) {
   const std::vector<uint8_t> px(41 * 30, 100);
   write_png_gray(m + "cam1/data/f\x1b[2J.png", px.data(), 41, 30);
+  const std::string intact = fixture::read_text(m + "cam1/data.csv");
   fixture::set_field(m + "cam1/data.csv", 4, 1, "f\x1b[2J.png");
   STRCMP_CONTAINS((m + "cam1/data/f\\x1B[2J.png: image is 41x30, sensor.yaml says resolution [40, 30]").c_str(),
                   full_error().c_str());
+  // The first frame is checked on loading.
+  fixture::write_text(m + "cam1/data.csv", intact);
+  fixture::set_field(m + "cam1/data.csv", 2, 1, "f\x1b[2J.png");
+  STRCMP_CONTAINS((m + "cam1/data/f\\x1B[2J.png: frame 0 of cam1 is 41x30").c_str(), load_error().c_str());
 }
 
 TEST(BadInput, WrongSizeLaterFrame) {

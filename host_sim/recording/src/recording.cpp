@@ -191,7 +191,7 @@ std::vector<GroundTruthSample> read_groundtruth(const std::string& csv) {
 void check_first_frame(const std::string& image, int cam, const CameraSensor& s, const std::string& yaml) {
   const GrayImage img = read_gray_image(image, s.width, s.height);  // of another size: not decoded
   if (img.width != s.width || img.height != s.height)
-    throw recording_error_in(image, "frame 0 of " + std::string(layout::kCamDir[cam]) + " is " +
+    throw recording_error_in(shown_path(image), "frame 0 of " + std::string(layout::kCamDir[cam]) + " is " +
                                         std::to_string(img.width) + "x" + std::to_string(img.height) + ", but " +
                                         yaml + " says resolution [" + std::to_string(s.width) + ", " +
                                         std::to_string(s.height) + "]");

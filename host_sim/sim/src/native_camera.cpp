@@ -3,6 +3,7 @@
 #include <cstring>
 
 #include "lumavel/host/image_io.hpp"
+#include "lumavel/host/path_check.hpp"
 #include "lumavel/host/recording_layout.hpp"
 
 namespace lumavel::host {
@@ -24,7 +25,7 @@ hal::CaptureStatus NativeStereoCamera::capture(hal::StereoImage& out) {
     try {
       const GrayImage img = read_gray_image(f.path[c], width_, height_);  // of another size: not decoded
       if (img.width != width_ || img.height != height_) {
-        error_ = frame + f.path[c] + ": image is " + std::to_string(img.width) + "x" + std::to_string(img.height) +
+        error_ = frame + shown_path(f.path[c]) + ": image is " + std::to_string(img.width) + "x" + std::to_string(img.height) +
                  ", sensor.yaml says resolution [" + std::to_string(width_) + ", " + std::to_string(height_) + "]";
         return hal::CaptureStatus::kError;
       }
