@@ -206,6 +206,27 @@ TEST(ImportSlider, AFailedImportLeavesNoRecording) {
   CHECK_FALSE(std::filesystem::exists(tmp.path() + "/rec/mav0"));
 }
 
+// A baseline longer than the frames' travel was refused with "baseline
+// longer than the travel?", the same words as for a slider that barely moved;
+// now the frames' own travel is said.
+TEST(ImportSlider, ABaselineLongerThanTheFramesTravelSaysTheTravel) {
+  fixture::TempDir tmp;
+  const std::string d = tmp.path() + "/data";
+  write_dataset(d);
+  ImportSliderOptions o;
+  o.baseline = 0.5;
+  try {
+    import_slider(d, tmp.path() + "/rec", o);
+    FAIL("a baseline longer than the travel was accepted");
+  } catch (const RecordingError& e) {
+    STRCMP_EQUAL((d + "/groundtruth.txt: no frame has a partner 0.5 m further on: the frames span 0.09 m of the "
+                      "slider's travel (x 0.1025 .. 0.1925 m), and the baseline (--baseline) must be shorter")
+                     .c_str(),
+                 e.what());
+  }
+  CHECK_FALSE(std::filesystem::exists(tmp.path() + "/rec/mav0"));
+}
+
 // Written over, an earlier recording kept its frames beside the new ones
 // (120 old PNGs in cam0/data with 10 new) and was lost without a word.
 TEST(ImportSlider, AnExistingRecordingIsRefusedUnlessForced) {

@@ -158,6 +158,23 @@ void check_truth_spans_a_frame(const std::vector<double>& x, const SliderDataset
   throw recording_error_in(gt_file, b);
 }
 
+// No frame has one h further on: said with the frames' own travel, so that
+// a slider that barely moved is told from a baseline too long for its run.
+RecordingError no_partner(const std::vector<double>& x, double baseline, const std::string& gt_file) {
+  double lo = INFINITY, hi = -INFINITY;
+  for (double v : x)
+    if (!std::isnan(v)) {
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
+    }
+  char b[320];
+  std::snprintf(b, sizeof b,
+                "no frame has a partner %.6g m further on: the frames span %.6g m of the slider's travel (x %.6g .. "
+                "%.6g m), and the baseline (--baseline) must be shorter",
+                baseline, hi - lo, lo, hi);
+  return recording_error_in(gt_file, b);
+}
+
 }  // namespace
 
 ImportSliderSummary import_slider(const std::string& data_dir, const std::string& out_rec,
@@ -181,9 +198,7 @@ ImportSliderSummary import_slider(const std::string& data_dir, const std::string
   for (size_t i = 0; i < x.size(); ++i) x[i] = slider_position_at(d.poses, d.frames[i].t);
   check_truth_spans_a_frame(x, d, gt_file);
   const std::vector<ShiftedPair> pairs = plan_time_shift_pairs(x, options.baseline);
-  if (pairs.empty())
-    throw recording_error_in(gt_file, "no frame has a partner " + std::to_string(options.baseline) +
-                                          " m further on (baseline longer than the travel?)");
+  if (pairs.empty()) throw no_partner(x, options.baseline, gt_file);
 
   std::vector<GrayImage> img(d.frames.size());
   const std::string images_txt = data_dir + "/images.txt";
