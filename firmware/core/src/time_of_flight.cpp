@@ -92,8 +92,9 @@ bool TimeOfFlight::search(const TofTrackInput& in, int trail, int64_t want_ns, i
   }
   bool found = false;
   int64_t best_dd = 1, best_span = 0;  // of the best segment, for its uncertainty ...
-  int64_t best_fr = -1;                // ... its chord's fraction (-1: at a frame) ...
-  uint16_t best_back = 0;              // ... and place, for its bend (chord_time)
+  int64_t best_fr = 0;                 // ... its place: the fraction along segment best_back ...
+  bool best_inside = false;            // ... inside it (not at a frame), for its bend (chord_time)
+  uint16_t best_back = 0;
   int32_t best_step[kMaxKernels];
   int64_t turned = 0;  // |rotation| summed frame by frame back to a (Q28): a turn that reverses does not cancel
   for (uint16_t back = 0; back + 1 < count_; ++back) {
@@ -176,27 +177,27 @@ bool TimeOfFlight::search(const TofTrackInput& in, int trail, int64_t want_ns, i
     out.turn = static_cast<AngleQ28>(std::min<int64_t>(turned, fx::kInt32Max));
     best_dd = dd;
     best_span = span;
-    best_fr = inside ? fr : -1;
+    best_fr = fr;
+    best_inside = inside;
     best_back = back;
     for (uint8_t k = 0; k < in.count; ++k) best_step[k] = step_q24[k];
-    out.y_then = a.y + static_cast<TravelQ16Ns>((fx::travel_between(b.y, a.y) * fr) >> 16);
-  }
-  if (found && best_fr >= 0) {
-    // The chosen point's time along its segment's bend (chord_time; the
-    // choice and the gates took the chord's: the shift is at most
-    // kTofChordMaxShift of a frame, and one segment's bend costs a division).
-    const int64_t fr = chord_time(lead, best_back, in.count, best_step, best_dd, best_fr);
-    if (fr != best_fr) {
-      const TofFrame& b = at(best_back);
-      const TofFrame& a = at(static_cast<uint16_t>(best_back + 1));
-      const int64_t tau = static_cast<int64_t>(now.t_ns) - (static_cast<int64_t>(a.t_ns) + ((best_span * fr) >> 16));
-      if (tau > 0) {
-        out.stau_ns = trail == 0 ? tau : -tau;
-        out.y_then = a.y + static_cast<TravelQ16Ns>((fx::travel_between(b.y, a.y) * fr) >> 16);
-      }
-    }
   }
   if (found) {
+    const TofFrame& b = at(best_back);
+    const TofFrame& a = at(static_cast<uint16_t>(best_back + 1));
+    int64_t fr = best_fr;
+    if (best_inside) {
+      // The chosen point's time along its segment's bend (chord_time; the
+      // choice and the gates took the chord's: the shift is at most
+      // kTofChordMaxShift of a frame, and one segment's bend costs a division).
+      const int64_t bent = chord_time(lead, best_back, in.count, best_step, best_dd, best_fr);
+      const int64_t tau = static_cast<int64_t>(now.t_ns) - (static_cast<int64_t>(a.t_ns) + ((best_span * bent) >> 16));
+      if (tau > 0) {
+        out.stau_ns = trail == 0 ? tau : -tau;
+        fr = bent;
+      }
+    }
+    out.y_then = a.y + static_cast<TravelQ16Ns>((fx::travel_between(b.y, a.y) * fr) >> 16);
     // Timing uncertainty: the residual over the segment's step, in frames, times the step.
     // (res / dd in Q32 up to half a step squared; beyond, where the window's gate
     // took the match, in Q16: at most kTofMaxPathResidualLong^2.)

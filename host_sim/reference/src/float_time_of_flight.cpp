@@ -37,7 +37,8 @@ bool FloatTimeOfFlight::search(int trail, double max_rotation, double want_ns, d
   const FloatTofFrame& now = at(0);
   const FloatTofFrame& before = at(1);
   const double motion = (now.f[trail] - before.f[trail]).squaredNorm();
-  double best_fr = -1, best_dd = 1, best_span = 0;  // the chosen point's chord (the core's)
+  double best_fr = 0, best_dd = 1, best_span = 0;  // the chosen point's chord (the core's)
+  bool best_inside = false;
   size_t best_back = 0;
   Eigen::VectorXd best_step;
   bool found = false;
@@ -85,23 +86,27 @@ bool FloatTimeOfFlight::search(int trail, double max_rotation, double want_ns, d
     out.stau_ns = stau;
     out.res = res;
     out.sig_ns = span * std::sqrt(res / dd);
-    out.y_then = a.y + fr * (b.y - a.y);
     out.turn = turned;
-    best_fr = inside ? fr : -1;
+    best_fr = fr;
+    best_inside = inside;
     best_back = back;
     best_step = d;
     best_dd = dd;
     best_span = span;
   }
-  if (found && best_fr >= 0) {  // the chosen point's time along its bend (the core's comment)
-    const double fr = chord_time(lead, best_back, best_step, best_dd, best_fr);
+  if (found) {
     const FloatTofFrame& b = at(best_back);
     const FloatTofFrame& a = at(best_back + 1);
-    const double tau = static_cast<double>(now.t_ns) - (static_cast<double>(a.t_ns) + best_span * fr);
-    if (tau > 0) {
-      out.stau_ns = trail == 0 ? tau : -tau;
-      out.y_then = a.y + fr * (b.y - a.y);
+    double fr = best_fr;
+    if (best_inside) {  // the chosen point's time along its bend (the core's comment)
+      const double bent = chord_time(lead, best_back, best_step, best_dd, best_fr);
+      const double tau = static_cast<double>(now.t_ns) - (static_cast<double>(a.t_ns) + best_span * bent);
+      if (tau > 0) {
+        out.stau_ns = trail == 0 ? tau : -tau;
+        fr = bent;
+      }
     }
+    out.y_then = a.y + fr * (b.y - a.y);
   }
   return found;
 }
