@@ -240,6 +240,20 @@ TEST(Cli, RenderToDashIsRefused) {
   CHECK(!exists(dir.path() + "/-"));
 }
 
+// The preset option reads as one name in the help (it showed 'NAME:PRESET',
+// which users took for a camera name and a preset) and its refusal says the
+// option once (it said '--camera-mismatch: --camera-mismatch cam:x: ...').
+TEST(Cli, RenderCameraMismatchTakesOnePresetName) {
+  Outcome r = sim("render --help");
+  LONGS_EQUAL(0, r.code);
+  STRCMP_CONTAINS("--camera-mismatch PRESET ", r.out.c_str());
+  CHECK(r.out.find("NAME:PRESET") == std::string::npos);
+  r = sim("render a.yaml out --camera-mismatch cam:cheap_pair");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("--camera-mismatch: 'cam:cheap_pair' is not a preset (one of: ideal, cheap_pair, differing_pair, "
+                  "cheap_pair_ae, tone_pair)", r.err.c_str());
+}
+
 // render's summary goes to standard output, progress to standard error; -q
 // silences both, as its help says (it said 'no summary on standard error',
 // where there was none).

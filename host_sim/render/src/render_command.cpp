@@ -181,14 +181,14 @@ void add_render_command(cli::Tool& tool) {
   for (const auto& p : render::photometric_presets()) presets += std::string("\n    ") + p.name + ": " + p.what;
   c->add_option("--camera-mismatch", a->ov.camera_mismatch,
                 "photometric preset for cam0 and cam1, replacing the scenario's photometric block:" + presets)
-      ->type_name("NAME")
+      ->type_name("PRESET")
       ->check(CLI::Validator(
           [](const std::string& v) {
             return render::find_photometric_preset(v) ? std::string()
-                                                      : "--camera-mismatch " + v + ": not a preset (one of: " +
+                                                      : "'" + v + "' is not a preset (one of: " +
                                                             render::photometric_preset_names() + ")";
           },
-          "PRESET"));
+          ""));  // (no description: CLI11 would append it to the type name)
   c->add_option("--seed", a->ov.seed, "seed of pixel noise, fixed patterns, gyro noise and random frame drops, >= 0")
       ->type_name("N")
       ->check(cli::whole_number_in(0, 9007199254740992LL));
