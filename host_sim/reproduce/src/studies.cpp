@@ -94,10 +94,12 @@ Study real_rig_study(bool quick) {
            "fall-off 30 vs 36 %, per-pixel and per-column fixed pattern). The photo wall of Table I (14 m in "
            "4 s at 4 m) runs with matched and with mismatched cameras, and with cameras that differ only in "
            "gain, black level and vignetting (`differing_pair`: gain 1.00 vs 0.85, black level 10 vs 12, corner "
-           "fall-off 30 vs 36 %). Two rows go beyond what the photometric match models (no target; docs/design.md, \"Beyond "
-           "the model\"): the wall with cameras whose tone curves differ (`tone_pair`: cam1 gamma 1.05, twins "
-           "otherwise), and the wide-lens slalom of the lens study with `differing_pair` cameras, a rig that never "
-           "turns little enough for the match to learn. Every run as `run` does it by default: the darker camera's frames clamped "
+           "fall-off 30 vs 36 %). The last rows go beyond what the photometric match models (no target; docs/design.md, "
+           "\"Beyond the model\"): the wall with cameras whose tone curves differ (`tone_pair`: cam1 gamma 1.05, twins "
+           "otherwise); the wide-lens slalom of the lens study with `differing_pair` cameras, a rig that never "
+           "turns little enough for the match to learn; and the photo wall under 100 Hz lamp flicker of 15 % "
+           "(`flicker_wall.yaml`, 60 Hz frames, exposure 0), with matched cameras and with the two presets that "
+           "have black levels, over which the division by the brightness does not cancel the ripple. Every run as `run` does it by default: the darker camera's frames clamped "
            "where the brighter one clips (docs/design.md, \"Clip match\"), the photometric match learning the rest.",
            "E", {}};
   const double len = quick ? 4 : -1;
@@ -126,6 +128,14 @@ Study real_rig_study(bool quick) {
                       "photo wall, tone curves differ (`tone_pair`)", -1, "tone_pair"});
   st.cases.push_back({"lens_slalom_differing", "wide_lens_slalom.yaml", -1, -1, -1, len, {{40, 30}},
                       "wide-lens slalom (hfov 90, +-1 rad/s), `differing_pair`", -1, "differing_pair"});
+  // Lamp flicker over the cameras' black levels (the division by N cancels a
+  // common gain only): twins, then the two presets with black levels.
+  for (const char* preset : {"", "differing_pair", "cheap_pair"}) {
+    const std::string p = preset;
+    st.cases.push_back({"wall_flicker" + (p.empty() ? std::string("_matched") : "_" + p), "flicker_wall.yaml", -1, -1,
+                        -1, len, {{40, 30}},
+                        "photo wall under 100 Hz flicker" + (p.empty() ? std::string() : ", `" + p + "`"), -1, p});
+  }
   return st;
 }
 
