@@ -735,7 +735,7 @@ std::vector<Case> render_cases() {
                  write_text(d + "/photo.pgm", "P5\n2 2\n255\n" + std::string(4, '\x80'));
                  replace_in(d + "/scenario.yaml", "duration_s: 0.1", "duration_s: 300000");
                  replace_in(d + "/scenario.yaml", "rate_hz: 60", "rate_hz: 10000");
-               }, Expect::kRefused, "scenario.yaml", "camera rate_hz = 10000 Hz for duration_s = 300000 s is 3e+09 frame pairs", {}});
+               }, Expect::kRefused, "scenario.yaml", "camera rate_hz = 10000 Hz for duration_s = 300000 s is 3000000001 frame pairs", {}});
   // 4096x4096 frames, render limited to 200 MB: each of its 2 threads holds a
   // frame's radiance, 150 MB (was: "error: std::bad_alloc", naming nothing).
   c.push_back({"render: 4096x4096 frames in 200 MB", "render", [](const std::string& d) {

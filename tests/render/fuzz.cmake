@@ -15,7 +15,9 @@ set(_render ${PROJECT_SOURCE_DIR}/host_sim/render)
 set(_lens ${PROJECT_SOURCE_DIR}/host/lens)
 set(_srcs ${_render}/src/scenario_loader.cpp ${_lens}/src/lens_distortion.cpp ${_render}/src/photometric_presets.cpp
           ${CMAKE_CURRENT_SOURCE_DIR}/fuzz_scenario_loader.cpp ${PROJECT_SOURCE_DIR}/tools/common/cli/src/path_check.cpp
-          ${PROJECT_SOURCE_DIR}/tools/common/cli/src/decimal_text.cpp ${PROJECT_SOURCE_DIR}/tools/common/cli/src/line_ends.cpp)
+          ${PROJECT_SOURCE_DIR}/tools/common/cli/src/decimal_text.cpp ${PROJECT_SOURCE_DIR}/tools/common/cli/src/line_ends.cpp
+          ${PROJECT_SOURCE_DIR}/host_sim/recording/src/csv_table.cpp
+          ${PROJECT_SOURCE_DIR}/host_sim/recording/src/recording_error.cpp)
 file(GLOB _hdrs ${_render}/include/lumavel/host/render/*.hpp ${_lens}/include/lumavel/host/*.hpp)
 find_package(Eigen3 3.3 REQUIRED NO_MODULE)
 get_target_property(_eigen_inc Eigen3::Eigen INTERFACE_INCLUDE_DIRECTORIES)

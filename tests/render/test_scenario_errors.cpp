@@ -436,3 +436,32 @@ TEST(ScenarioErrors, ASinusoidGoingAboveWhiteIsRefused) {
   STRCMP_EQUAL("(accepted)", error_of(replace(kGood, wall, "{type: sinusoid, mean: 200, amplitude: 55}")).c_str());
   STRCMP_EQUAL("(accepted)", error_of(replace(kGood, wall, "{type: sinusoid, mean: 128}")).c_str());  // the defaults
 }
+
+// A number in a refusal is the value read, in full: the messages printed six
+// digits, so 'rate_hz: 10000.0001' said "'rate_hz' = 10000 is out of range
+// [0.1, 10000]", a refusal its own rule allows (a sum of mean and amplitude
+// just above 255 said 255, a frame number 1.23457e+06, a sample count 1e+07).
+TEST(ScenarioErrors, ANumberInARefusalIsTheValueInFull) {
+  std::string e = error_of(replace(kGood, "rate_hz: 60", "rate_hz: 10000.0001"));
+  STRCMP_CONTAINS("bad.yaml:4: 'rate_hz' = 10000.0001 is out of range [0.1, 10000]", e.c_str());
+  e = error_of(replace(kGood, "speed: 0.5", "speed: -1000.0000001"));
+  STRCMP_CONTAINS("bad.yaml:7: 'speed' = -1000.0000001 is out of range [-1000, 1000]", e.c_str());
+  e = error_of(replace(kGood, "{type: uniform, value: 90}", "{type: sinusoid, mean: 127.5000001, amplitude: 127.5}"));
+  STRCMP_CONTAINS("bad.yaml:13: sinusoid 'mean' = 127.5000001 plus its 'amplitude' = 127.5 is 255.0000001: ",
+                  e.c_str());
+  e = error_of(std::string(kGood) + "drops: {frames: [1234567]}\n");
+  STRCMP_CONTAINS("bad.yaml:14: 'frames' = 1234567 is not a frame of the recording: frame numbers must be below its "
+                  "frame count, 120 (duration_s 2 s x rate_hz 60 Hz)",
+                  e.c_str());
+  Scenario s = parse_scenario(replace(kGood, "duration_s: 2\n", "duration_s: 200000.0001\n"), "big.yaml");
+  s.imu.rate_hz = 100;
+  s.groundtruth_rate_hz = 100;
+  try {
+    check_render_size(s);
+    FAIL("accepted");
+  } catch (const ScenarioError& x) {
+    STRCMP_EQUAL("big.yaml: camera rate_hz = 60 Hz for duration_s = 200000.0001 s is 12000001 frame pairs: a render "
+                 "makes at most 10000000 (shorten the duration or lower the rate)",
+                 x.what());
+  }
+}

@@ -2,6 +2,7 @@
 // typo is an error naming file and line, never a silently ignored setting.
 #include "lumavel/host/render/scenario_loader.hpp"
 
+#include "lumavel/host/csv_table.hpp"
 #include "lumavel/host/decimal_text.hpp"
 #include "lumavel/host/image_io.hpp"
 #include "lumavel/host/lens_distortion.hpp"
@@ -33,6 +34,12 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kPi = 3.14159265358979323846;
 // The brightest a surface is (8-bit white): the patterns' levels lie in 0..kWhite.
 constexpr double kWhite = 255;
+
+// A number as a message shows it: the shortest text that reads back as the
+// value (format_double), never rounded to 6 digits as a stream prints it:
+// 'rate_hz: 10000.0001' said "'rate_hz' = 10000 is out of range [0.1, 10000]",
+// a refusal of a value its own rule allows.
+std::string shown_number(double v) { return format_double(v); }
 
 class Reader {
  public:
@@ -117,9 +124,8 @@ class Reader {
     }
     if (!std::isfinite(v)) fail(n, "'" + key + "' must be finite");
     if (v < lo || v > hi) {
-      std::ostringstream os;
-      os << "'" << key << "' = " << v << " is out of range [" << lo << ", " << hi << "]";
-      fail(n, os.str());
+      fail(n, "'" + key + "' = " + shown_number(v) + " is out of range [" + shown_number(lo) + ", " + shown_number(hi) +
+                  "]");
     }
     return v;
   }
@@ -230,10 +236,9 @@ void read_camera_response(const Reader& r, const YAML::Node& n, const std::strin
       }
     }
     if (lo < 0.05 || hi > 2) {
-      std::ostringstream os;
-      os << "'vignetting' = [" << c[0] << ", " << c[1] << "] gives 1 + v1 r^2 + v2 r^4 from " << lo << " to " << hi
-         << " over the image; it must stay within [0.05, 2]";
-      r.fail(v, os.str());
+      r.fail(v, "'vignetting' = [" + shown_number(c[0]) + ", " + shown_number(c[1]) +
+                    "] gives 1 + v1 r^2 + v2 r^4 from " + shown_number(lo) + " to " + shown_number(hi) +
+                    " over the image; it must stay within [0.05, 2]");
     }
     p.vignetting[0] = c[0];
     p.vignetting[1] = c[1];
@@ -369,19 +374,18 @@ void read_pattern(const Reader& r, const YAML::Node& n, PatternSpec& p,
     // mean). A brightness cannot be negative: refused.
     const YAML::Node blamed = n["amplitude"] ? n["amplitude"] : n["mean"] ? n["mean"] : n;
     if (p.amplitude > p.mean) {
-      std::ostringstream os;
-      os << "sinusoid 'amplitude' = " << p.amplitude << " is larger than its 'mean' = " << p.mean
-         << ": the brightness, mean - amplitude at the troughs, would go below 0 and be clipped to black; a "
-            "brightness cannot be negative, so amplitude must be at most the mean";
-      r.fail(blamed, os.str());
+      r.fail(blamed,
+             "sinusoid 'amplitude' = " + shown_number(p.amplitude) +
+                 " is larger than its 'mean' = " + shown_number(p.mean) +
+                 ": the brightness, mean - amplitude at the troughs, would go below 0 and be clipped to black; a "
+                 "brightness cannot be negative, so amplitude must be at most the mean");
     }
     // Above 255 it was clipped to white, silently (flattened crests, another mean).
     if (p.mean + p.amplitude > kWhite) {
-      std::ostringstream os;
-      os << "sinusoid 'mean' = " << p.mean << " plus its 'amplitude' = " << p.amplitude << " is "
-         << p.mean + p.amplitude << ": the brightness, mean + amplitude at the crests, would go above " << kWhite
-         << " (white) and be clipped; amplitude must be at most " << kWhite << " - mean";
-      r.fail(blamed, os.str());
+      r.fail(blamed, "sinusoid 'mean' = " + shown_number(p.mean) + " plus its 'amplitude' = " +
+                         shown_number(p.amplitude) + " is " + shown_number(p.mean + p.amplitude) +
+                         ": the brightness, mean + amplitude at the crests, would go above " + shown_number(kWhite) +
+                         " (white) and be clipped; amplitude must be at most " + shown_number(kWhite) + " - mean");
     }
     if (n["period_m"]) {
       const auto v = r.list(n["period_m"], "period_m", 2, 1e-4, 1e6);
@@ -507,11 +511,11 @@ void read_drops(const Reader& r, const YAML::Node& n, Scenario& s) {
       const YAML::Node e = f[k];
       if (v != std::floor(v)) r.fail(f, "'frames' must be whole frame indices");
       if ((first_ns + v * period_ns) * 1e-9 >= s.duration_s) {
-        std::ostringstream os;
-        os << "'frames' = " << v << " is not a frame of the recording: frame numbers must be below its frame count, "
-           << frames << " (duration_s " << s.duration_s << " s x rate_hz " << s.camera.rate_hz << " Hz"
-           << (s.camera.first_frame_s != 0 ? ", from first_frame_s" : "") << ")";
-        r.fail(e, os.str());
+        r.fail(e, "'frames' = " + std::to_string(static_cast<long long>(v)) +
+                      " is not a frame of the recording: frame numbers must be below its frame count, " +
+                      std::to_string(static_cast<long long>(frames)) + " (duration_s " + shown_number(s.duration_s) +
+                      " s x rate_hz " + shown_number(s.camera.rate_hz) + " Hz" +
+                      (s.camera.first_frame_s != 0 ? ", from first_frame_s" : "") + ")");
       }
       const int i = static_cast<int>(v);
       const int line = e.Mark().line + 1;
@@ -635,11 +639,10 @@ void check_render_size(const Scenario& s) {
   const auto check = [&s](const char* what, const char* rate_key, double rate_hz, double from_s) {
     const double n = std::floor((s.duration_s - std::min(from_s, 0.0)) * rate_hz) + 1;
     if (n <= kMaxRenderSamples) return;
-    std::ostringstream os;
-    os << s.file << ": " << rate_key << " = " << rate_hz << " Hz for duration_s = " << s.duration_s << " s is "
-       << n << " " << what << ": a render makes at most " << kMaxRenderSamples
-       << " (shorten the duration or lower the rate)";
-    throw ScenarioError(os.str());
+    throw ScenarioError(s.file + ": " + rate_key + " = " + shown_number(rate_hz) + " Hz for duration_s = " +
+                        shown_number(s.duration_s) + " s is " + std::to_string(static_cast<long long>(n)) + " " + what +
+                        ": a render makes at most " + std::to_string(static_cast<long long>(kMaxRenderSamples)) +
+                        " (shorten the duration or lower the rate)");
   };
   check("frame pairs", "camera rate_hz", s.camera.rate_hz, s.camera.first_frame_s);
   check("gyro samples", "imu rate_hz", s.imu.rate_hz, s.imu.offset_s);
