@@ -72,6 +72,19 @@ TEST(ConfigText, ErrorsNameTheFileLineAndKey) {
                error_of(s, "gyro_offset_learning=2\n").c_str());
 }
 
+// A lens value is kept in 1/32768 rad steps, -1 to 32767/32768 rad: one just
+// below 1 rad rounds to 1, beyond the table, and was refused as '0.999985 rad
+// is outside [-1, 1)', a refusal its own words allow.
+TEST(ConfigText, ALensValueThatRoundsTo1RadSaysSo) {
+  DeviceSetup s = sample();
+  STRCMP_EQUAL("rig.cfg:1: lens_cam0 value 2: 0.999985 rad rounds to 1 rad in the table's steps of 1/32768 rad, "
+               "outside [-1, 1): at most 0.99997 rad (32767/32768)",
+               error_of(s, "lens_cam0=0.5,0.999985\n").c_str());
+  STRCMP_EQUAL("rig.cfg:1: lens_cam0 value 1: -1.00002 rad is outside [-1, 1)",
+               error_of(s, "lens_cam0=-1.00002\n").c_str());
+  STRCMP_EQUAL("", error_of(s, "lens_cam0=-1,0.99997,0.999984\n").c_str());
+}
+
 TEST(ConfigText, LensLengthMustMatchTheWidth) {
   DeviceSetup s = sample();
   host::apply_setting(s, "width=64");

@@ -133,7 +133,13 @@ std::vector<EdgeOffsetQ15> parse_lens(const std::string& key, const std::string&
       if (!e.beyond_field) throw std::runtime_error(where + ": \"" + shown_path(item) + "\" is " + e.what());
       q = INT32_MAX;
     }
-    if (q < -32768 || q > 32767) throw std::runtime_error(where + ": " + item + " rad is outside [-1, 1)");
+    // A value just below 1 rad rounds to 32768/32768 = 1 (was: "0.999985 rad
+    // is outside [-1, 1)", a refusal its own words allow): said as such.
+    if (q == 32768)
+      throw std::runtime_error(where + ": " + shown_path(item) +
+                               " rad rounds to 1 rad in the table's steps of 1/32768 rad, outside [-1, 1): at most "
+                               "0.99997 rad (32767/32768)");
+    if (q < -32768 || q > 32767) throw std::runtime_error(where + ": " + shown_path(item) + " rad is outside [-1, 1)");
     out.push_back(static_cast<EdgeOffsetQ15>(q));
     if (comma == std::string::npos) break;
     start = comma + 1;
