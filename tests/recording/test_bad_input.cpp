@@ -919,3 +919,30 @@ TEST(BadInput, ATableLargerThanTheMemoryIsNamedAtItsRow) {
                 "than the memory there is").c_str(),
                e.c_str());
 }
+
+// The recording's own path is shown as its frames' names are: a recording
+// folder named 'e<ESC>[2Jrec' (given on the command line, or found by a glob)
+// sent the escape sequence to the terminal with every refusal of a table or
+// a sensor.yaml ('.../imu0/data.csv:5: ...'), and again where a message names
+// a second file (the other camera's table).
+TEST(BadInput, TheRecordingsPathIsShownLikeAField) {
+  const std::string odd = fixture::write_recording(dir.path() + "/e\x1b[2Jrec", o);
+  const std::string shown = dir.path() + "/e\\x1B[2Jrec/mav0/";
+  fixture::set_field(odd + "/mav0/imu0/data.csv", 5, 1, "nan");
+  std::string e = error_of([&] { load_recording(odd); });
+  STRCMP_CONTAINS((shown + "imu0/data.csv:5: column 'w_RS_S_x [rad s^-1]': value 'nan' is not finite").c_str(),
+                  e.c_str());
+  CHECK(e.find('\x1b') == std::string::npos);
+  const std::string odd2 = fixture::write_recording(dir.path() + "/f\x1b[2Jrec", o);
+  const std::string shown2 = dir.path() + "/f\\x1B[2Jrec/mav0/";
+  std::vector<std::string> l = fixture::read_lines(odd2 + "/mav0/cam1/data.csv");
+  l.pop_back();
+  fixture::write_lines(odd2 + "/mav0/cam1/data.csv", l);
+  e = error_of([&] { load_recording(odd2); });
+  STRCMP_CONTAINS((shown2 + "cam0/data.csv:" + std::to_string(l.size() + 1) + ": unpaired frame: timestamp " +
+                   std::to_string(fixture::frame_time(o, static_cast<int>(l.size()) - 1)) + " has no row in " + shown2 +
+                   "cam1/data.csv")
+                      .c_str(),
+                  e.c_str());
+  CHECK(e.find('\x1b') == std::string::npos);
+}

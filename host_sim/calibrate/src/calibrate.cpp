@@ -9,6 +9,7 @@
 
 #include "lumavel/host/file_camera.hpp"
 #include "lumavel/host/motion_direction.hpp"
+#include "lumavel/host/path_check.hpp"
 #include "lumavel/host/recording_error.hpp"
 #include "lumavel/host/rig.hpp"
 #include "lumavel/host/rig_settings_check.hpp"
@@ -267,9 +268,9 @@ Calibration calibrate_misalignment(const Recording& rec, const CalibrationOption
   // overflow an int.
   const double shift_steps = opt.max_shift_deg * M_PI / 180 / g.step;
   if (!(g.step > 0) || !(2 * shift_steps + 10 < 10.0 * width))
-    throw RecordingError(rec.root + "/cam0/sensor.yaml and cam1/sensor.yaml: the view both cameras share is " +
-                         deg(hi - lo) + " deg wide, too narrow for the +-" + deg(opt.max_shift_deg * M_PI / 180) +
-                         " deg shift search");
+    throw RecordingError(
+        shown_path(rec.root) + "/cam0/sensor.yaml and cam1/sensor.yaml: the view both cameras share is " +
+        deg(hi - lo) + " deg wide, too narrow for the +-" + deg(opt.max_shift_deg * M_PI / 180) + " deg shift search");
   g.n = static_cast<int>((hi - lo) / g.step);
   const int max_shift = static_cast<int>(shift_steps);
   // Below one step of the grid the search was +-0 steps: nothing registered,
@@ -312,7 +313,7 @@ Calibration calibrate_misalignment(const Recording& rec, const CalibrationOption
   // A mirrored camera's images move against the other's: registering them
   // gave a misalignment to send to a board, exit 0.
   if (motion.mirrored())
-    throw RecordingError(rec.root + ": " +
+    throw RecordingError(shown_path(rec.root) + ": " +
                          opposite_motion_text(motion.opposite(), motion.same() + motion.opposite(), rec.root) +
                          "; they cannot be registered");
   std::vector<double> heading(times.size(), 0.0);

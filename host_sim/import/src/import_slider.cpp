@@ -246,11 +246,11 @@ ImportSliderSummary import_slider(const std::string& data_dir, const std::string
   bool made_here = !path_present(mav0);
   std::error_code not_a_folder;
   if (!made_here && std::filesystem::is_directory(out_rec, not_a_folder)) {
-    if (!options.force) throw recording_error_in(shown_path(mav0), "already exists (use --force to replace it)");
+    if (!options.force) throw recording_error_in(mav0, "already exists (use --force to replace it)");
     // Nor may --force delete what it is about to read: the images are read
     // while the recording is written, after the old one is gone.
     if (lies_inside(data_dir, mav0))
-      throw recording_error_in(shown_path(data_dir), "lies inside " + shown_path(mav0) +
+      throw recording_error_in(data_dir, "lies inside " + shown_path(mav0) +
                                                          ", which --force would delete before reading it: write the "
                                                          "recording to another folder");
     std::filesystem::remove_all(mav0);

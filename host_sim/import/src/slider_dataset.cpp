@@ -79,7 +79,7 @@ void check_increasing(double prev, long prev_line, double t, const std::string& 
 SliderDataset read_slider_dataset(const std::string& dir) {
   // (was: '/nonexistent/images.txt: does not exist', as if only the file were missing)
   if (const std::string why = why_not_a_folder(dir, kSliderDatasetFolder); !why.empty())
-    throw recording_error_in(shown_path(dir), why);
+    throw recording_error_in(dir, why);
   SliderDataset d;
   const std::string images = dir + "/images.txt";
   FrameNames named;

@@ -27,15 +27,16 @@ struct FileCloser {
 };
 using FilePtr = std::unique_ptr<std::FILE, FileCloser>;
 
-// The path through shown_path: its name is a table's field (a data.csv or
-// images.txt row), whose escape sequences went to the terminal as they were.
+// The path is shown through shown_path (recording_error_in): its name is a
+// table's field (a data.csv or images.txt row), whose escape sequences went to
+// the terminal as they were.
 std::vector<uint8_t> read_whole_file(const std::string& path) {
-  if (const std::string why = why_not_a_file(path); !why.empty()) throw recording_error_in(shown_path(path), why);
+  if (const std::string why = why_not_a_file(path); !why.empty()) throw recording_error_in(path, why);
   FilePtr f(std::fopen(path.c_str(), "rb"));
-  if (!f) throw recording_error_in(shown_path(path), std::string("cannot open image: ") + std::strerror(errno));
+  if (!f) throw recording_error_in(path, std::string("cannot open image: ") + std::strerror(errno));
   std::vector<uint8_t> bytes;
   const auto too_big = [&](uint64_t n) {
-    return recording_error_in(shown_path(path), "the file is " + std::to_string(n) + " bytes: more than an 8-bit grayscale image of "
+    return recording_error_in(path, "the file is " + std::to_string(n) + " bytes: more than an 8-bit grayscale image of "
                                     "at most " + std::to_string(kMaxSide) + "x" + std::to_string(kMaxSide) +
                                     " pixels takes (at most " + std::to_string(kMaxImageFileBytes) + " bytes are read)");
   };
@@ -51,7 +52,7 @@ std::vector<uint8_t> read_whole_file(const std::string& path) {
     bytes.insert(bytes.end(), buf, buf + got);
     if (bytes.size() > kMaxImageFileBytes) throw too_big(bytes.size());  // grew while read
   }
-  if (std::ferror(f.get())) throw recording_error_in(shown_path(path), "read error");
+  if (std::ferror(f.get())) throw recording_error_in(path, "read error");
   return bytes;
 }
 
@@ -295,7 +296,7 @@ GrayImage decode(const uint8_t* data, size_t size, const std::string& name, Expe
   } else {
     problem = "not a PNG or binary PGM file";
   }
-  if (!problem.empty()) throw recording_error_in(shown_path(name), problem);
+  if (!problem.empty()) throw recording_error_in(name, problem);
   return img;
 }
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "lumavel/host/path_check.hpp"
+
 namespace lumavel::host {
 
 MotionDirectionCheck::MotionDirectionCheck(int width, int height, int u_sign0, int u_sign1)
@@ -72,7 +74,7 @@ std::string opposite_motion_text(size_t opposite, size_t counted, const std::str
          std::to_string(counted) +
          " frames where both moved a working column or more. The cameras look the same way (T_BS), so any motion "
          "of the rig moves both images the same way: the images of one camera are mirrored left-right, or upside "
-         "down where its T_BS says upright (" + root + "/cam0/sensor.yaml, cam1/sensor.yaml)";
+         "down where its T_BS says upright (" + shown_path(root) + "/cam0/sensor.yaml, cam1/sensor.yaml)";
 }
 
 }  // namespace lumavel::host

@@ -90,11 +90,11 @@ std::vector<FramePairEntry> pair_frames(const CamRows& c0, const CamRows& c1) {
     } else if (have0 && (!have1 || c0.rows[i].t_ns < c1.rows[j].t_ns)) {
       throw recording_error_at(c0.csv, c0.rows[i].line,
                                "unpaired frame: timestamp " + std::to_string(c0.rows[i].t_ns) + " has no row in " +
-                                   c1.csv);
+                                   shown_path(c1.csv));
     } else {
       throw recording_error_at(c1.csv, c1.rows[j].line,
                                "unpaired frame: timestamp " + std::to_string(c1.rows[j].t_ns) + " has no row in " +
-                                   c0.csv);
+                                   shown_path(c0.csv));
     }
   }
   return out;
@@ -191,9 +191,9 @@ std::vector<GroundTruthSample> read_groundtruth(const std::string& csv) {
 void check_first_frame(const std::string& image, int cam, const CameraSensor& s, const std::string& yaml) {
   const GrayImage img = read_gray_image(image, s.width, s.height);  // of another size: not decoded
   if (img.width != s.width || img.height != s.height)
-    throw recording_error_in(shown_path(image), "frame 0 of " + std::string(layout::kCamDir[cam]) + " is " +
+    throw recording_error_in(image, "frame 0 of " + std::string(layout::kCamDir[cam]) + " is " +
                                         std::to_string(img.width) + "x" + std::to_string(img.height) + ", but " +
-                                        yaml + " says resolution [" + std::to_string(s.width) + ", " +
+                                        shown_path(yaml) + " says resolution [" + std::to_string(s.width) + ", " +
                                         std::to_string(s.height) + "]");
 }
 
@@ -203,7 +203,7 @@ void check_same_resolution(const Recording& rec, const std::string yaml[2]) {
   if (a.width == b.width && a.height == b.height) return;
   throw recording_error_at(yaml[1], b.line.resolution,
                            "resolution [" + std::to_string(b.width) + ", " + std::to_string(b.height) + "] differs from " +
-                               yaml[0] + ":" + std::to_string(a.line.resolution) + " resolution [" +
+                               shown_path(yaml[0]) + ":" + std::to_string(a.line.resolution) + " resolution [" +
                                std::to_string(a.width) + ", " + std::to_string(a.height) +
                                "]: both cameras must have the same resolution");
 }
@@ -218,9 +218,9 @@ void check_is_recording(const std::string& dir) {
   const std::string parent = slash == std::string::npos ? "." : slash == 0 ? "/" : dir.substr(0, slash);
   const std::string hint = " (docs/recording-format.md): give the recording folder REC, or REC/mav0";
   if (has("sensor.yaml") || has("data.csv"))
-    throw recording_error_in(shown_path(dir), "is the folder of one sensor (it holds sensor.yaml or data.csv), not a "
+    throw recording_error_in(dir, "is the folder of one sensor (it holds sensor.yaml or data.csv), not a "
                                               "recording" + hint + " (here " + shown_path(parent) + " or its parent)");
-  throw recording_error_in(shown_path(dir), "is not a recording folder: it holds no mav0/, cam0/, cam1/ or imu0/" + hint);
+  throw recording_error_in(dir, "is not a recording folder: it holds no mav0/, cam0/, cam1/ or imu0/" + hint);
 }
 
 void count_gaps(Recording& rec) {
@@ -253,7 +253,7 @@ void check_groundtruth_coverage(const Recording& rec, const std::string& gt_csv,
   if (std::any_of(v.begin(), v.end(), [](double x) { return !std::isnan(x); })) return;
   throw recording_error_in(gt_csv, "the ground-truth samples (t = " + std::to_string(rec.groundtruth.front().t_ns) +
                                        " .. " + std::to_string(rec.groundtruth.back().t_ns) +
-                                       " ns) cover none of the frames of " + cam_csv + " (t = " +
+                                       " ns) cover none of the frames of " + shown_path(cam_csv) + " (t = " +
                                        std::to_string(t.front()) + " .. " + std::to_string(t.back()) +
                                        " ns): no frame can be compared (remove the file for a run without ground truth)");
 }
@@ -287,7 +287,7 @@ void check_gyro_coverage(Recording& rec, const std::string& imu_csv, const std::
   const bool none = f.size() == 1 ? !covers(f[0].t_ns, f[0].t_ns) : covered == 0;
   if (none)
     throw recording_error_in(imu_csv, "the gyro samples (t = " + std::to_string(g0) + " .. " + std::to_string(g1) +
-                                          " ns) cover none of the intervals between the frames of " + cam_csv +
+                                          " ns) cover none of the intervals between the frames of " + shown_path(cam_csv) +
                                           " (t = " + std::to_string(f.front().t_ns) + " .. " +
                                           std::to_string(f.back().t_ns) + " ns): no heading change can be measured");
 }
@@ -297,7 +297,7 @@ Recording load_recording(const std::string& dir_arg) {
   std::string dir = dir_arg;
   while (dir.size() > 1 && dir.back() == '/') dir.pop_back();  // "rec/" -> "rec": clean paths in messages
   if (const std::string why = why_not_a_folder(dir, "recording folder"); !why.empty())
-    throw recording_error_in(shown_path(dir), why == "does not exist" ? "recording folder does not exist" : why);
+    throw recording_error_in(dir, why == "does not exist" ? "recording folder does not exist" : why);
   if (path_present(dir + "/mav0") && !is_dir(dir + "/mav0"))  // REC/mav0 is the data when it is there
     throw recording_error_in(dir + "/mav0", why_not_a_folder(dir + "/mav0"));
   check_is_recording(dir);

@@ -31,7 +31,7 @@ RecordingWriter::RecordingWriter(const std::string& rec_dir, const CameraSensor&
   // onto a file said 'OUT/mav0/cam0/data: cannot create folder: Not a directory').
   if (path_present(rec_dir))
     if (const std::string why = why_not_a_folder(rec_dir, "folder to write the recording in"); !why.empty())
-      throw recording_error_in(shown_path(rec_dir), why);
+      throw recording_error_in(rec_dir, why);
   for (int c = 0; c < 2; ++c) {
     const std::string dir = root_ + "/" + layout::kCamDir[c];
     make_dirs(dir + "/data");

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "lumavel/host/path_check.hpp"
 #include "lumavel/host/recording_error.hpp"
 #include "lumavel/host/recording_layout.hpp"
 #include "lumavel/host/rig.hpp"
@@ -15,7 +16,10 @@ std::string setting_source(const Recording& rec, const std::string& setting) {
   const std::string cam[2] = {rec.root + "/" + layout::kCamDir[0] + "/sensor.yaml",
                               rec.root + "/" + layout::kCamDir[1] + "/sensor.yaml"};
   // "FILE:LINE" of a key, or "FILE" when the recording was not read from files.
-  auto at = [](const std::string& file, long line) { return line > 0 ? file + ":" + std::to_string(line) : file; };
+  // (through shown_path, as recording_error_at shows a file)
+  auto at = [](const std::string& file, long line) {
+    return line > 0 ? shown_path(file) + ":" + std::to_string(line) : shown_path(file);
+  };
   for (int i = 0; i < 2; ++i) {
     const std::string c = "cam[" + std::to_string(i) + "].";
     if (setting == c + "fu" || setting == c + "cu")
@@ -30,12 +34,12 @@ std::string setting_source(const Recording& rec, const std::string& setting) {
   if (setting == "frame_period")
     return rec.frames.size() < 2
                ? at(cam[0], rec.cam[0].line.rate_hz) + ": rate_hz (one frame: the frame period is 1 / rate_hz)"
-               : rec.root + "/" + layout::kCamDir[0] + "/data.csv: the median interval between frames";
+               : shown_path(rec.root + "/" + layout::kCamDir[0] + "/data.csv") + ": the median interval between frames";
   if (setting == "gyro_gap")
     return rec.imu_samples.size() < 2
                ? at(rec.root + "/" + layout::kImuDir + "/sensor.yaml", rec.imu.line.rate_hz) +
                      ": rate_hz (one gyro sample: its period is 1 / rate_hz)"
-               : rec.root + "/" + layout::kImuDir + "/data.csv: the median interval between samples";
+               : shown_path(rec.root + "/" + layout::kImuDir + "/data.csv") + ": the median interval between samples";
   if (setting == "kernels")
     return at(cam[0], rec.cam[0].line.intrinsics) + ": the field of view (resolution and intrinsics) sizes the kernels";
   if (setting == "cam[].elevation_scale")  // from the lens model: the intrinsics and the coefficients
@@ -47,7 +51,7 @@ std::string setting_source(const Recording& rec, const std::string& setting) {
            at(std::string(layout::kCamDir[1]) + "/sensor.yaml", rec.cam[1].line.distortion) +
            ": distortion_coefficients";
   if (setting == "width" || setting == "height") return "the working size (--width/--height)";
-  return rec.root + ": the estimator configuration derived from it";
+  return shown_path(rec.root) + ": the estimator configuration derived from it";
 }
 
 namespace {
@@ -57,7 +61,9 @@ namespace {
 // (T_BS) push them out of both views; otherwise the narrower view is short.
 std::string kernels_source(const Recording& rec, const EstimatorSettings& s) {
   auto file = [&](int i) { return rec.root + "/" + layout::kCamDir[i] + "/sensor.yaml"; };
-  auto at = [](const std::string& f, long line) { return line > 0 ? f + ":" + std::to_string(line) : f; };
+  auto at = [](const std::string& f, long line) {
+    return line > 0 ? shown_path(f) + ":" + std::to_string(line) : shown_path(f);
+  };
   const double apart = std::remainder(s.cam[1].axis_yaw - s.cam[0].axis_yaw, 2 * M_PI) * 180 / M_PI;
   if (std::fabs(apart) > 10) {
     char deg[32];

@@ -129,7 +129,7 @@ std::string FrameNames::why_repeated(const std::string& name, long line, const s
       Seen{line, name, table_});
   if (new_file) return "";
   return "filename '" + shown_path(name) + "' is the same file as '" + shown_path(same->second.name) + "', the frame of line " +
-         std::to_string(same->second.line) + (same->second.table != table_ ? " of " + same->second.table : "") +
+         std::to_string(same->second.line) + (same->second.table != table_ ? " of " + shown_path(same->second.table) : "") +
          " (a link to it)" + kWhy;
 }
 
