@@ -465,3 +465,28 @@ TEST(ScenarioErrors, ANumberInARefusalIsTheValueInFull) {
                  x.what());
   }
 }
+
+// The scenario's file name is shown as its words are (4861290): a scenario
+// named 'sc<ESC>[2J.yaml' sent the escape sequence to the terminal with each
+// refusal ('sc[2J.yaml:4: ...'), the YAML reader's and the size check's too.
+TEST(ScenarioErrors, TheScenariosNameIsShownLikeAField) {
+  try {
+    parse_scenario(replace(kGood, "rate_hz: 60", "rate_hz: -5"), "sc\x1b[2J.yaml");
+    FAIL("accepted");
+  } catch (const ScenarioError& e) {
+    STRCMP_CONTAINS("sc\\x1B[2J.yaml:4: 'rate_hz' = -5 is out of range", e.what());
+  }
+  try {
+    parse_scenario("duration_s: [1\n", "sc\x1b[2J.yaml");
+    FAIL("accepted");
+  } catch (const ScenarioError& e) {
+    STRCMP_CONTAINS("sc\\x1B[2J.yaml:2: YAML syntax: ", e.what());
+  }
+  Scenario s = parse_scenario(replace(kGood, "duration_s: 2\n", "duration_s: 200000\n"), "sc\x1b[2J.yaml");
+  try {
+    check_render_size(s);
+    FAIL("accepted");
+  } catch (const ScenarioError& e) {
+    STRCMP_CONTAINS("sc\\x1B[2J.yaml: camera rate_hz = 60 Hz for duration_s = 200000 s is ", e.what());
+  }
+}

@@ -73,7 +73,7 @@ void check_before_render(const render::Scenario& s, const std::string& out) {
                                "no frames (" + std::to_string(n) + " before duration_s, all dropped)");
     check_runnable_unwritten(rec);
   } catch (const RecordingError& e) {
-    throw render::ScenarioError(s.file + ": the recording it describes is one lumavel-sim run refuses (nothing "
+    throw render::ScenarioError(shown_path(s.file) + ": the recording it describes is one lumavel-sim run refuses (nothing "
                                 "rendered): " + e.what());
   }
 }
@@ -104,7 +104,7 @@ int render_to_folder(RenderArgs& a) {
   const std::string mav0 = a.out + "/mav0";
   std::error_code not_there;  // (symlink_status: a dangling link is there too, the writer cannot make mav0 on it)
   if (std::filesystem::exists(std::filesystem::symlink_status(mav0, not_there))) {
-    if (!a.force) throw std::runtime_error(mav0 + " already exists (use --force to replace it)");
+    if (!a.force) throw std::runtime_error(shown_path(mav0) + " already exists (use --force to replace it)");
     // --force deleted the scenario and its photos with the old recording when
     // they lay inside it: the scenario silently (already read), a photo with
     // "photo does not exist" (decoded later). What the render reads is kept.
@@ -113,7 +113,7 @@ int render_to_folder(RenderArgs& a) {
       if (p.pattern.kind == render::PatternKind::Photo) reads.push_back(p.pattern.file);
     for (const std::string& r : reads)
       if (lies_inside(r, mav0))
-        throw std::runtime_error(r + ": lies inside " + mav0 +
+        throw std::runtime_error(shown_path(r) + ": lies inside " + shown_path(mav0) +
                                  ", which --force would delete: the render reads it; write the recording to "
                                  "another folder");
     std::filesystem::remove_all(mav0);
@@ -138,7 +138,7 @@ int render_to_folder(RenderArgs& a) {
                   "--resolution",
                   s.camera.width, s.camera.height, a.opt.threads, a.opt.threads == 1 ? "" : "s", kBytesPerPixel,
                   kBytesPerPixel * s.camera.width * s.camera.height / 1e6);
-    throw std::runtime_error(s.file + ": " + b);
+    throw std::runtime_error(shown_path(s.file) + ": " + b);
   } catch (...) {
     std::error_code ignored;
     std::filesystem::remove_all(mav0, ignored);
@@ -185,7 +185,7 @@ void add_render_command(cli::Tool& tool) {
       ->check(CLI::Validator(
           [](const std::string& v) {
             return render::find_photometric_preset(v) ? std::string()
-                                                      : "'" + v + "' is not a preset (one of: " +
+                                                      : "'" + shown_path(v) + "' is not a preset (one of: " +
                                                             render::photometric_preset_names() + ")";
           },
           ""));  // (no description: CLI11 would append it to the type name)

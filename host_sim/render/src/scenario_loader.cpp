@@ -414,7 +414,7 @@ void read_pattern(const Reader& r, const YAML::Node& n, PatternSpec& p,
     p.file = resolve_path(f.Scalar(), base_dir);
     p.file_at = r.at(f);
     if (const std::string why = why_not_a_file(p.file); !why.empty()) r.fail(f, "photo '" + shown_path(p.file) + "' " + why);
-    if (!std::ifstream(p.file)) r.fail(f, "cannot open photo '" + p.file + "'");
+    if (!std::ifstream(p.file)) r.fail(f, "cannot open photo '" + shown_path(p.file) + "'");
     if (!n["size_m"]) r.fail(n, "photo pattern needs 'size_m: [width, height]'");
     const auto v = r.list(n["size_m"], "size_m", 2, 1e-4, 1e6);
     p.width_m = v[0];
@@ -533,32 +533,35 @@ void read_drops(const Reader& r, const YAML::Node& n, Scenario& s) {
 
 Scenario parse_scenario(const std::string& text, const std::string& name,
                         const std::string& base_dir) {
-  const Reader r(name);
+  // The file's name as every message shows it (was: a scenario named
+  // 'sc<ESC>[2J.yaml' sent the escape sequence to the terminal with each refusal).
+  const std::string shown = shown_path(name);
+  const Reader r(shown);
   if (const yaml_text::BadLine bad = yaml_text::why_bad_line(text); bad.line != 0)
-    throw ScenarioError(name + ":" + std::to_string(bad.line) + ": " + bad.why);
+    throw ScenarioError(shown + ":" + std::to_string(bad.line) + ": " + bad.why);
   // YAML::Load reads the first document only: whatever follows a '---' (or a
   // '...' end marker) after some content was ignored, silently, and the
   // render made from the first part. Refused, as in a sensor.yaml (scanned
   // in the text: yaml-cpp's LoadAll can loop on malformed input).
   if (const yaml_text::NotOneDocument bad = yaml_text::why_not_one_document(text); bad.line != 0)
-    throw ScenarioError(name + ":" + std::to_string(bad.line) + ": " + bad.why +
+    throw ScenarioError(shown + ":" + std::to_string(bad.line) + ": " + bad.why +
                         ": a scenario is one map of KEY: VALUE lines");
   YAML::Node root;
   try {
     root = YAML::Load(text);
   } catch (const YAML::DeepRecursion& e) {
     // yaml-cpp's own words for it are "bad file" (was: 'YAML syntax: bad file', no rule said).
-    throw ScenarioError(name + ":" + std::to_string(e.mark.line + 1) + ": YAML nested " + std::to_string(e.depth()) +
+    throw ScenarioError(shown + ":" + std::to_string(e.mark.line + 1) + ": YAML nested " + std::to_string(e.depth()) +
                         " levels deep, as deep as the YAML reader goes: a scenario is one map of KEY: VALUE lines "
                         "(host_sim/scenarios/README.md)");
   } catch (const YAML::ParserException& e) {
-    throw ScenarioError(name + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax: " + e.msg +
+    throw ScenarioError(shown + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax: " + e.msg +
                         yaml_text::tab_indent_note(text, e.mark.line + 1));
   }
   if (root.IsNull())
-    throw ScenarioError(name + ": empty file: a scenario holds KEY: VALUE lines (host_sim/scenarios/README.md)");
+    throw ScenarioError(shown + ": empty file: a scenario holds KEY: VALUE lines (host_sim/scenarios/README.md)");
   if (!root.IsMap())
-    throw ScenarioError(name + ":" + std::to_string(root.Mark().line + 1) +
+    throw ScenarioError(shown + ":" + std::to_string(root.Mark().line + 1) +
                         ": a scenario must be a YAML map of KEY: VALUE lines (host_sim/scenarios/README.md)");
   try {
     const size_t limit = std::max<size_t>(1000000, text.size());
@@ -598,7 +601,7 @@ Scenario parse_scenario(const std::string& text, const std::string& name,
     if (root["drops"]) read_drops(r, root["drops"], s);
     return s;
   } catch (const YAML::Exception& e) {
-    throw ScenarioError(name + ":" + std::to_string(e.mark.line + 1) + ": " + e.msg);
+    throw ScenarioError(shown + ":" + std::to_string(e.mark.line + 1) + ": " + e.msg);
   }
 }
 
@@ -608,7 +611,7 @@ Scenario load_scenario(const std::string& path) {
   if (const std::string why = why_too_big_for_text(path, "a scenario holds a few hundred lines"); !why.empty())
     throw ScenarioError(shown_path(path) + ": " + why);
   std::ifstream in(path);
-  if (!in) throw ScenarioError(path + ": cannot open scenario file: " + std::strerror(errno));
+  if (!in) throw ScenarioError(shown_path(path) + ": cannot open scenario file: " + std::strerror(errno));
   std::stringstream ss;
   ss << in.rdbuf();
   const auto slash = path.find_last_of('/');
@@ -627,7 +630,7 @@ void apply_overrides(Scenario& s, const Overrides& o) {
   if (!o.camera_mismatch.empty()) {
     const PhotometricPreset* p = find_photometric_preset(o.camera_mismatch);
     if (!p)
-      throw ScenarioError("camera mismatch preset '" + o.camera_mismatch +
+      throw ScenarioError("camera mismatch preset '" + shown_path(o.camera_mismatch) +
                           "' is not one of: " + photometric_preset_names());
     s.camera.photometric = p->cams;
     s.camera.photometric_preset = p->name;
@@ -639,7 +642,7 @@ void check_render_size(const Scenario& s) {
   const auto check = [&s](const char* what, const char* rate_key, double rate_hz, double from_s) {
     const double n = std::floor((s.duration_s - std::min(from_s, 0.0)) * rate_hz) + 1;
     if (n <= kMaxRenderSamples) return;
-    throw ScenarioError(s.file + ": " + rate_key + " = " + shown_number(rate_hz) + " Hz for duration_s = " +
+    throw ScenarioError(shown_path(s.file) + ": " + rate_key + " = " + shown_number(rate_hz) + " Hz for duration_s = " +
                         shown_number(s.duration_s) + " s is " + std::to_string(static_cast<long long>(n)) + " " + what +
                         ": a render makes at most " + std::to_string(static_cast<long long>(kMaxRenderSamples)) +
                         " (shorten the duration or lower the rate)");
