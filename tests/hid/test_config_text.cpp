@@ -324,3 +324,35 @@ TEST(ConfigText, ControlCharactersInARefusedValueAreShownEscaped) {
   STRCMP_EQUAL("rig.cfg:1: \"look=\\x07le\" is followed by a NUL byte (character 9): not a KEY=VALUE setting",
                error_of(s, std::string("look=\ale\0" "ft\n", 12)).c_str());
 }
+
+// The file's name is shown as its values are: a configuration file named
+// 'rig<ESC>[2J.cfg' cleared the terminal with its refusals ('rig[2J.cfg:1:
+// width = 0: ...'), as a line with CR-only ends and the offline check did.
+TEST(ConfigText, TheFilesNameIsShownLikeAValue) {
+  DeviceSetup s = sample();
+  STRCMP_EQUAL("rig\\x1B[2J.cfg:1: tau_us = fast: not a whole number; tau_us must be 1000..10000000 us",
+               [&] {
+                 try {
+                   host::apply_settings_text(s, "tau_us=fast\n", "rig\x1b[2J.cfg");
+                 } catch (const std::runtime_error& e) {
+                   return std::string(e.what());
+                 }
+                 return std::string();
+               }()
+                   .c_str());
+  const std::string path = "/tmp/lumavel_config_text_" + std::to_string(::getpid()) + "\x1b[2J.cfg";
+  { std::ofstream(path, std::ios::binary) << "height=30\nwidth=0\n"; }
+  std::string why;
+  try {
+    host::GivenSettings g;
+    g.add_file(path);
+    host::check_settings_offline(g);
+  } catch (const std::runtime_error& e) {
+    why = e.what();
+  }
+  std::remove(path.c_str());
+  STRCMP_EQUAL(("/tmp/lumavel_config_text_" + std::to_string(::getpid()) +
+                "\\x1B[2J.cfg:2: width = 0: width must be 16..160 columns")
+                   .c_str(),
+               why.c_str());
+}

@@ -242,7 +242,7 @@ std::string read_settings_file(const std::string& path) {
       !why.empty())
     throw std::runtime_error(shown_path(path) + ": " + why);
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path + ": cannot open configuration file: " + std::strerror(errno));
+  if (!in) throw std::runtime_error(shown_path(path) + ": cannot open configuration file: " + std::strerror(errno));
   std::ostringstream text;
   text << in.rdbuf();
   return text.str();
@@ -251,6 +251,8 @@ std::string read_settings_file(const std::string& path) {
 // Calls f(line_number, line) for every setting line (no comment, no blank)
 // of the file `name`. Lines end as a recording table's do: LF or CR LF; a CR
 // with more after it (CR-only line ends) is refused at its line, saying so.
+// The name goes into messages through shown_path, as every name does (was: a
+// file named 'rig<ESC>[2J.cfg' cleared the terminal with its refusals).
 template <typename F>
 void for_each_setting_line(const std::string& text, const std::string& name, F f) {
   std::istringstream in(text);
@@ -258,7 +260,7 @@ void for_each_setting_line(const std::string& text, const std::string& name, F f
   for (size_t n = 1; std::getline(in, line); ++n) {
     if (n == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);  // UTF-8 byte-order mark
     if (const std::string why = why_cr_inside_line(line); !why.empty())
-      throw std::runtime_error(name + ":" + std::to_string(n) + ": " + why);
+      throw std::runtime_error(shown_path(name) + ":" + std::to_string(n) + ": " + why);
     if (!line.empty() && line.back() == '\r') line.pop_back();
     const size_t start = line.find_first_not_of(" \t");
     if (start == std::string::npos || line[start] == '#') continue;
@@ -344,7 +346,7 @@ void apply_settings_text(DeviceSetup& s, const std::string& text, const std::str
     try {
       apply_setting(s, line);
     } catch (const std::runtime_error& e) {
-      throw std::runtime_error(name + ":" + std::to_string(n) + ": " + e.what());
+      throw std::runtime_error(shown_path(name) + ":" + std::to_string(n) + ": " + e.what());
     }
   });
 }
@@ -379,7 +381,7 @@ void GivenSettings::add_file(const std::string& path) {
   const std::string text = read_settings_file(path);
   const size_t first = items.size();
   for_each_setting_line(text, path, [&](size_t n, const std::string& line) {
-    const std::string where = path + ":" + std::to_string(n);
+    const std::string where = shown_path(path) + ":" + std::to_string(n);
     add(line, where);
     if (const GivenSetting* earlier = given_before(first))
       throw std::runtime_error(where + ": " + items.back().key + " is given again (first at " + earlier->where +
