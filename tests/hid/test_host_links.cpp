@@ -107,6 +107,41 @@ TEST(HostLinks, NotAReportFile) {
   std::remove(path.c_str());
 }
 
+// The file's name is shown as every name is (shown_path): a report file named
+// 'r<ESC>[2J.hidrep' cleared the terminal of lumavel-read replay with 'not a
+// lumavel report file' and with a damaged record's refusal.
+TEST(HostLinks, AReportFilesNameIsShownLikeAField) {
+  const std::string path = temp_path("r\x1b[2J.hidrep");
+  const std::string shown = temp_path("r\\x1B[2J.hidrep");
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  std::fputs("timestamp_ns,v\n", f);
+  std::fclose(f);
+  try {
+    host::ReportFileReader in(path);
+    FAIL("accepted");
+  } catch (const std::runtime_error& e) {
+    STRCMP_EQUAL((shown + ": not a lumavel report file (no \"LMVHID1\" header)").c_str(), e.what());
+  }
+  {
+    host::ReportFileWriter w(path);
+    const uint8_t a[3] = {1, 2, 3};
+    w.write(a, 3);
+  }
+  f = std::fopen(path.c_str(), "ab");
+  std::fputc(0, f);  // a zero-length record
+  std::fclose(f);
+  host::ReportFileReader in(path);
+  std::vector<uint8_t> r;
+  CHECK_TRUE(in.next(r));
+  try {
+    in.next(r);
+    FAIL("a zero-length record accepted");
+  } catch (const std::runtime_error& e) {
+    STRCMP_EQUAL((shown + ": record 2 at byte 12: zero-length record").c_str(), e.what());
+  }
+  std::remove(path.c_str());
+}
+
 TEST(HostLinks, ErrorsNameTheDeviceAndSayWhatToDo) {
   const std::string unknown = open_error("usb:foo");
   CHECK_TRUE(contains(unknown, "usb:foo"));

@@ -152,7 +152,7 @@ int cmd_replay(const std::string& file, const StreamOptions& o) {
   try {
     while ((o.count == 0 || sink.measurements() < o.count) && in.next(rec))
       sink.take(rec.data(), rec.size(),
-                "in " + file + " record " + std::to_string(in.record_index()) + " at byte " +
+                "in " + host::shown_path(file) + " record " + std::to_string(in.record_index()) + " at byte " +
                     std::to_string(in.record_offset()));
   } catch (const std::runtime_error& e) {
     std::fprintf(stderr, "malformed report file %s\n", e.what());

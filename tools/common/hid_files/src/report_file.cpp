@@ -13,13 +13,13 @@ constexpr size_t kMagicSize = sizeof(kReportFileMagic) - 1;
 std::string why() { return std::strerror(errno); }
 }  // namespace
 
-ReportFileWriter::ReportFileWriter(const std::string& path) : f_(nullptr), path_(path) {
+ReportFileWriter::ReportFileWriter(const std::string& path) : f_(nullptr), path_(shown_path(path)) {
   std::string cannot;
   f_ = open_for_writing(path, "wb", cannot);
-  if (f_ == nullptr) throw std::runtime_error(path + ": cannot create report file: " + cannot);
+  if (f_ == nullptr) throw std::runtime_error(path_ + ": cannot create report file: " + cannot);
   if (std::fwrite(kReportFileMagic, 1, kMagicSize, f_) != kMagicSize) {
     std::fclose(f_);
-    throw std::runtime_error(path + ": cannot write report file: " + why());
+    throw std::runtime_error(path_ + ": cannot write report file: " + why());
   }
 }
 
@@ -35,17 +35,17 @@ bool ReportFileWriter::write(const uint8_t* report, size_t len) {
 
 bool ReportFileWriter::flush() { return std::fflush(f_) == 0; }
 
-ReportFileReader::ReportFileReader(const std::string& path) : f_(nullptr), path_(path) {
+ReportFileReader::ReportFileReader(const std::string& path) : f_(nullptr), path_(shown_path(path)) {
   // A FIFO is read as it is written (a live feed); folders and devices are refused.
   if (const std::string why = why_not_a_file(path, "report file"); !why.empty() && why.rfind("is a FIFO", 0) != 0)
-    throw std::runtime_error(shown_path(path) + ": " + why);
+    throw std::runtime_error(path_ + ": " + why);
   f_ = std::fopen(path.c_str(), "rb");
-  if (f_ == nullptr) throw std::runtime_error(path + ": cannot open report file: " + why());
+  if (f_ == nullptr) throw std::runtime_error(path_ + ": cannot open report file: " + why());
   char magic[kMagicSize];
   if (std::fread(magic, 1, kMagicSize, f_) != kMagicSize ||
       std::memcmp(magic, kReportFileMagic, kMagicSize) != 0) {
     std::fclose(f_);
-    throw std::runtime_error(path + ": not a lumavel report file (no \"LMVHID1\" header)");
+    throw std::runtime_error(path_ + ": not a lumavel report file (no \"LMVHID1\" header)");
   }
 }
 

@@ -25,7 +25,7 @@ class ReportFileWriter {
 
  private:
   std::FILE* f_;
-  std::string path_;
+  std::string path_;  // as messages show it (shown_path): a name given on the command line
 };
 
 class ReportFileReader {
@@ -44,7 +44,7 @@ class ReportFileReader {
 
  private:
   std::FILE* f_;
-  std::string path_;
+  std::string path_;  // as messages show it (shown_path): a name given on the command line
   size_t index_ = 0;
   long offset_ = 0;
 };
