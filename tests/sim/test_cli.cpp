@@ -64,6 +64,24 @@ TEST(Cli, HelpAndVersion) {
     STRCMP_CONTAINS(opt, r.out.c_str());
 }
 
+// A usage error shows the arguments as a name is shown (shown_path's
+// escapes): CLI11 and the validators put them in as they were typed, and
+// 'lumavel-sim r<ESC>[2Jun' (a name a glob expanded, say) cleared the
+// terminal with "unknown command 'r[2Jun'"; an option's value or an
+// unexpected argument the same.
+TEST(Cli, AUsageErrorShowsTheArgumentsEscaped) {
+  Outcome r = sim("\"$(printf 'r\\033[2Jun')\"");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_EQUAL("lumavel-sim: unknown command 'r\\x1B[2Jun'\n(see lumavel-sim --help)\n", r.err.c_str());
+  r = sim("run rec --engine \"$(printf 'x\\033[2J')\"");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("--engine: unknown engine 'x\\x1B[2J' (expected fixed, float or vo)", r.err.c_str());
+  r = sim("run rec \"$(printf -- '--w\\033[2J')\"");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("The following argument was not expected: --w\\x1B[2J\n", r.err.c_str());
+  CHECK(r.err.find('\x1b') == std::string::npos);
+}
+
 // One style: every command's help starts with its usage line and ends with
 // the exit status.
 TEST(Cli, EveryCommandHasUsageFirstAndTheExitStatus) {

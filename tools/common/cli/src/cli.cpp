@@ -2,6 +2,7 @@
 
 #include "lumavel/host/path_check.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -116,6 +117,21 @@ std::string stdout_write_error() {
   return std::string("standard output: write error") + (!flushed && err != 0 ? ": " + std::string(std::strerror(err)) : "");
 }
 
+// A parse error's text line by line through shown_text: CLI11 and the
+// validators put the arguments in as they were typed (was: 'lumavel-sim
+// r<ESC>[2Jun', a name a glob expanded, cleared the terminal with "unknown
+// command 'r[2Jun'"; an option's value likewise).
+std::string shown_lines(const std::string& text) {
+  std::string out;
+  for (size_t at = 0; at <= text.size();) {
+    const size_t end = std::min(text.find('\n', at), text.size());
+    out += host::shown_text(text.substr(at, end - at));
+    if (end < text.size()) out += '\n';
+    at = end + 1;
+  }
+  return out;
+}
+
 }  // namespace
 
 int Tool::run(int argc, const char* const* argv) {
@@ -153,7 +169,7 @@ int Tool::run(int argc, const char* const* argv) {
       what = rest.empty() ? "a command is needed" : "unknown command '" + rest.front() + "'";
     }
     while (!what.empty() && std::isspace(static_cast<unsigned char>(what.back()))) what.pop_back();
-    std::fprintf(stderr, "%s: %s\n(see %s --help)\n", who.c_str(), what.c_str(), who.c_str());
+    std::fprintf(stderr, "%s: %s\n(see %s --help)\n", who.c_str(), shown_lines(what).c_str(), who.c_str());
     return kExitUsage;
   }
   const CLI::App* chosen = deepest();

@@ -285,6 +285,8 @@ bool lies_inside(const std::string& path, const std::string& folder) {
   return std::mismatch(f.begin(), f.end(), p.begin(), p.end()).first == f.end();
 }
 
+std::string shown_text(const std::string& text) { return without_controls(text); }
+
 std::string shown_path(const std::string& path) {
   constexpr size_t kShown = 200, kEnds = 60;
   if (path.size() <= kShown) return without_controls(path);

@@ -120,5 +120,8 @@ class FrameNames {
 // (5000 characters)"); ASCII control characters are shown as \xNN, never
 // sent to the terminal as they are (a binary file's escape sequences).
 std::string shown_path(const std::string& path);
+// `text` as shown_path shows it, but in full, never shortened: for a message
+// that holds a value somewhere inside it (a command-line parser's).
+std::string shown_text(const std::string& text);
 
 }  // namespace lumavel::host
