@@ -946,3 +946,30 @@ TEST(BadInput, TheRecordingsPathIsShownLikeAField) {
                   e.c_str());
   CHECK(e.find('\x1b') == std::string::npos);
 }
+
+// Kernels outside a view are blamed on the camera whose view cannot hold
+// them, its view said: a cam1 whose principal point lay off its image (cu =
+// -39 px of 40 columns: the optical axis, where the kernels are centred,
+// outside the view) was blamed on cam0's sensor.yaml, whose intrinsics were
+// right, since their focal lengths were the same ('cam0/sensor.yaml:17: the
+// field of view (resolution and intrinsics) sizes the kernels: ...').
+TEST(BadInput, KernelsOutsideAViewBlameTheCameraThatCannotHoldThem) {
+  fixture::replace_in(m + "cam1/sensor.yaml", "19.5, 14.5]", "-39, 14.5]");
+  const Recording r = load_recording(rec);
+  std::string e = error_of([&] { check_rig_settings(r, derive_settings(r, default_working_size(r))); });
+  STRCMP_CONTAINS((m + "cam1/sensor.yaml:17: intrinsics: cam1's view spans ").c_str(), e.c_str());
+  STRCMP_CONTAINS(" deg from its optical axis (fu 36 px, cu -39 px at 40 columns); the kernels are centred on the "
+                  "optical axis and sized by cam0's view: cam0's view spans -29.0 .. 29.0 deg from its optical axis "
+                  "(fu 36 px, cu 19.5 px at 40 columns): kernels (order:sigma rad) = ",
+                  e.c_str());
+  // A narrower cam1 (a longer focal length) than cam0, which sizes the kernels.
+  fixture::replace_in(m + "cam1/sensor.yaml", "-39, 14.5]", "19.5, 14.5]");
+  fixture::replace_in(m + "cam0/sensor.yaml", "intrinsics: [36, 36", "intrinsics: [16, 16");
+  const Recording r2 = load_recording(rec);
+  e = error_of([&] { check_rig_settings(r2, derive_settings(r2, default_working_size(r2))); });
+  STRCMP_CONTAINS((m + "cam1/sensor.yaml:17: intrinsics: cam1's view spans -29.0 .. 29.0 deg from its optical axis "
+                       "(fu 36 px, cu 19.5 px at 40 columns); the kernels are centred on the optical axis and sized by "
+                       "cam0's view: cam0's view spans -51.1 .. 51.0 deg")
+                      .c_str(),
+                  e.c_str());
+}

@@ -1,5 +1,6 @@
 #include "lumavel/host/rig_settings_check.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -58,7 +59,8 @@ namespace {
 
 // A kernel outside a view: say which camera is to blame. The kernels are
 // centred between the two optical axes, so cameras that look different ways
-// (T_BS) push them out of both views; otherwise the narrower view is short.
+// (T_BS) push them out of both views; otherwise the camera whose view cannot
+// hold them (its field of view and principal point) is, with its view said.
 std::string kernels_source(const Recording& rec, const EstimatorSettings& s) {
   auto file = [&](int i) { return rec.root + "/" + layout::kCamDir[i] + "/sensor.yaml"; };
   auto at = [](const std::string& f, long line) {
@@ -73,9 +75,49 @@ std::string kernels_source(const Recording& rec, const EstimatorSettings& s) {
            " degrees apart in yaw; they must look the same way (a misalignment of a few degrees at most), and the "
            "kernels, centred between them, fall outside a view";
   }
-  const int narrow = s.cam[1].fu > s.cam[0].fu ? 1 : 0;  // the longer focal length sees less
-  return at(file(narrow), rec.cam[narrow].line.intrinsics) +
-         ": the field of view (resolution and intrinsics) sizes the kernels";
+  // Whether camera i's view holds the kernels alone (the other camera
+  // replaced by it), as validate() tries each. A principal point far off the
+  // image's centre puts the optical axis, where the kernels are centred, at
+  // (or beyond) an edge: a cam1 with cu = -39 px of 40 columns was blamed on
+  // cam0, whose intrinsics were right, their focal lengths being the same.
+  auto holds_alone = [&](int i) {
+    EstimatorSettings t = s;
+    t.cam[1 - i] = s.cam[i];
+    try {
+      (void)to_fixed_config(t);
+    } catch (const SettingsError& e) {
+      return e.setting() != "kernels";
+    }
+    return true;
+  };
+  // "cam1's view spans 41.9 .. 61.3 deg from its optical axis (fu 42.89 px, cu -39 px)"
+  auto view = [&](int i) {
+    const CameraModel& c = s.cam[i];
+    double a = 0, b = 0;
+    if (c.edges.size() == static_cast<size_t>(s.width) + 1) {
+      a = std::remainder(c.edges.front() - c.axis_yaw, 2 * M_PI);
+      b = std::remainder(c.edges.back() - c.axis_yaw, 2 * M_PI);
+    } else {
+      a = c.u_sign * std::atan((-0.5 - c.cu) / c.fu);
+      b = c.u_sign * std::atan((s.width - 0.5 - c.cu) / c.fu);
+    }
+    char t[160];
+    std::snprintf(t, sizeof t,
+                  "cam%d's view spans %.1f .. %.1f deg from its optical axis (fu %.4g px, cu %.4g px at %d columns)", i,
+                  std::min(a, b) * 180 / M_PI, std::max(a, b) * 180 / M_PI, c.fu, c.cu, s.width);
+    return std::string(t);
+  };
+  const bool holds0 = holds_alone(0), holds1 = holds_alone(1);
+  // Neither alone: both are short; one alone: that one; each alone: the
+  // two views differ, and the narrower is short of the kernels cam0's sizes.
+  const int i = !holds0 ? (holds1 ? 0 : -1) : !holds1 ? 1 : s.cam[1].fu > s.cam[0].fu ? 1 : 0;
+  const std::string rule = "the kernels are centred on the optical axis and sized by cam0's view";
+  if (i < 0)
+    return at(file(0), rec.cam[0].line.intrinsics) + " and " + at(file(1), rec.cam[1].line.intrinsics) +
+           ": intrinsics: " + view(0) + "; " + view(1) + "; " + rule;
+  return at(file(i), rec.cam[i].line.intrinsics) + ": intrinsics: " + view(i) + "; " + rule +
+         (i == 1 ? ": " + view(0) : std::string()) +
+         (holds0 && holds1 ? " (the two cameras must see about the same view)" : "");
 }
 
 }  // namespace
