@@ -224,6 +224,16 @@ TEST(ConfigText, OfflineCheckRefusesNothingValid) {
 
 // A UTF-8 byte-order mark, CRLF line ends and spaces around = are read as
 // editors write them.
+// A file saved as UTF-16 (Notepad's "Unicode", Windows PowerShell's '>') is
+// said as such: it was '"\xFF\xFEw" is followed by a NUL byte (character 4):
+// not a KEY=VALUE setting'.
+TEST(ConfigText, AFileInUtf16IsSaidAsSuch) {
+  DeviceSetup s = sample();
+  STRCMP_EQUAL("rig.cfg:1: the file is UTF-16 text (little-endian: it starts with the byte-order mark FF FE): the "
+               "tools read ASCII or UTF-8 text (save it as UTF-8)",
+               error_of(s, std::string("\xFF\xFEw\0=\0" "4\0" "0\0\n\0", 12)).c_str());
+}
+
 TEST(ConfigText, ByteOrderMarkCrlfAndSpacesAreAccepted) {
   DeviceSetup s = sample();
   STRCMP_EQUAL("", error_of(s, "\xEF\xBB\xBFwidth = 64\r\n  tau_us=  250000 \r\nlook =right\n").c_str());

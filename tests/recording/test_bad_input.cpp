@@ -973,3 +973,36 @@ TEST(BadInput, KernelsOutsideAViewBlameTheCameraThatCannotHoldThem) {
                       .c_str(),
                   e.c_str());
 }
+
+// A table or a sensor.yaml saved as UTF-16 (Notepad's "Unicode", Windows
+// PowerShell's '>') is said as such at line 1: it was 'missing header line',
+// 'first column is '#\x00t\x00...'', a CR inside the line (CR LF ends) or, in
+// a sensor.yaml, 'a NUL byte at character 4 (a binary or damaged file?)'.
+TEST(BadInput, ATableOrSensorYamlInUtf16IsSaidAsSuch) {
+  auto utf16le = [](const std::string& text, bool bom) {
+    std::string out = bom ? "\xFF\xFE" : "";
+    for (char c : text) out += std::string(1, c) + '\0';
+    return out;
+  };
+  const std::string csv = m + "cam0/data.csv", yaml = m + "cam1/sensor.yaml";
+  const std::string table = fixture::read_text(csv), sensor = fixture::read_text(yaml);
+  const std::string rule = ": the tools read ASCII or UTF-8 text (save it as UTF-8)";
+  fixture::write_text(csv, utf16le(table, true));
+  STRCMP_EQUAL((csv + ":1: the file is UTF-16 text (little-endian: it starts with the byte-order mark FF FE)" + rule)
+                   .c_str(),
+               load_error().c_str());
+  std::string crlf;
+  for (char c : table) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+  fixture::write_text(csv, utf16le(crlf, false));
+  STRCMP_EQUAL((csv + ":1: the file is UTF-16 text (little-endian, without a byte-order mark: a NUL byte after each "
+                      "character)" + rule)
+                   .c_str(),
+               load_error().c_str());
+  fixture::write_text(csv, table);
+  fixture::write_text(yaml, utf16le(sensor, true));
+  STRCMP_EQUAL((yaml + ":1: the file is UTF-16 text (little-endian: it starts with the byte-order mark FF FE)" + rule)
+                   .c_str(),
+               load_error().c_str());
+  fixture::write_text(yaml, sensor);
+  STRCMP_EQUAL("(no error)", load_error().c_str());
+}

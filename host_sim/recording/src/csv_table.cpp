@@ -101,6 +101,10 @@ bool next_table_line(std::istream& in, std::vector<char>& buf, std::string& out,
                                                " characters: not a row of this table (a binary or damaged file?)");
     if (!full) {
       if (in.fail()) in.clear(std::ios::eofbit);  // the last line, read: the next call ends
+      // A UTF-16 or UTF-32 file is said as such at its first line (was:
+      // 'missing header line', or a CR inside it for CR LF ends).
+      if (line == 1)
+        if (const std::string why = why_wide_text(out); !why.empty()) throw recording_error_at(path, line, why);
       // CR LF ends a line; a CR with more after it is a file of CR-only
       // lines, which would otherwise read as one long header.
       if (const std::string why = why_cr_inside_line(out); !why.empty()) throw recording_error_at(path, line, why);

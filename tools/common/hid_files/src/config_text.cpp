@@ -258,6 +258,9 @@ void for_each_setting_line(const std::string& text, const std::string& name, F f
   std::istringstream in(text);
   std::string line;
   for (size_t n = 1; std::getline(in, line); ++n) {
+    if (n == 1)
+      if (const std::string why = why_wide_text(line); !why.empty())
+        throw std::runtime_error(shown_path(name) + ":1: " + why);
     if (n == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);  // UTF-8 byte-order mark
     if (const std::string why = why_cr_inside_line(line); !why.empty())
       throw std::runtime_error(shown_path(name) + ":" + std::to_string(n) + ": " + why);

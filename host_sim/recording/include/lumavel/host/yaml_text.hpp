@@ -60,7 +60,8 @@ inline NotOneDocument why_not_one_document(const std::string& text) {
   return out;
 }
 
-// The first line that yaml-cpp would misread, and why: a carriage return
+// The first line that yaml-cpp would misread, and why: a first line of
+// UTF-16 or UTF-32 text (why_wide_text's reason), a carriage return
 // before more text (why_cr_inside_line's reason; yaml-cpp ends lines at LF
 // and CR LF only, so a file of CR-only line ends is one long line to it, read
 // as a comment, "empty file", when it starts with '#'), or a NUL byte (taken
@@ -73,7 +74,8 @@ inline BadLine why_bad_line(const std::string& text) {
   BadLine out{0, ""};
   for_each_line(text, [&](long n, const std::string& l) {
     if (out.line != 0) return;
-    if (std::string why = why_cr_inside_line(l); !why.empty()) out = {n, why};
+    if (std::string wide = n == 1 ? why_wide_text(l) : ""; !wide.empty()) out = {n, wide};
+    else if (std::string why = why_cr_inside_line(l); !why.empty()) out = {n, why};
     else if (const size_t nul = l.find('\0'); nul != std::string::npos)
       out = {n, "a NUL byte at character " + std::to_string(nul + 1) + ": a YAML file is text (a binary or damaged file?)"};
   });
