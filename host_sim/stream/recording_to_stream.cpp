@@ -10,6 +10,7 @@
 
 #include "lumavel/host/file_camera.hpp"
 #include "lumavel/host/file_gyro.hpp"
+#include "lumavel/host/output_file.hpp"
 #include "lumavel/host/path_check.hpp"
 #include "lumavel/host/recording.hpp"
 #include "lumavel/host/recording_error.hpp"
@@ -40,11 +41,12 @@ int main(int argc, char** argv) {
     }
     lumavel::host::FileStereoCamera camera(rec, w, h);
     lumavel::host::FileGyro gyro(rec);
-    lumavel::stream::StreamWriter o{std::fopen(argv[2], "wb")};
-    if (o.f == nullptr) {
-      std::fprintf(stderr, "%s: cannot open for writing\n", argv[2]);
-      return 1;
-    }
+    // Written aside and moved into place once whole (OutputFile): a frame
+    // that failed to decode left the pairs before it as OUT.lvs, a shorter
+    // stream that lumavel_app_host ran, exit 0; a write error is said with
+    // its reason (was: 'cannot open for writing', 'write failed').
+    lumavel::host::OutputFile out(argv[2], "the stream");
+    lumavel::stream::StreamWriter o{out.get()};
     o.header(w, h);
     std::vector<uint8_t> px[2];
     px[0].resize(static_cast<size_t>(w) * static_cast<size_t>(h));
@@ -60,8 +62,7 @@ int main(int argc, char** argv) {
       if (st == lumavel::hal::CaptureStatus::kEnd) break;
       if (st == lumavel::hal::CaptureStatus::kError) {
         std::fprintf(stderr, "%s\n", camera.error().c_str());
-        std::fclose(o.f);
-        return 1;
+        return 1;  // the stream left unwritten (out's destructor)
       }
       while (have_next && next.t_ns <= img.t_ns) {
         o.gyro(next.t_ns, next.rate_z);
@@ -78,11 +79,9 @@ int main(int argc, char** argv) {
       o.gyro(next.t_ns, next.rate_z);
       ++samples;
     }
-    if (std::fclose(o.f) != 0) {
-      std::fprintf(stderr, "%s: write failed\n", argv[2]);
-      return 1;
-    }
-    std::fprintf(stderr, "%s: %zu frames at %dx%d, %zu gyro samples\n", argv[2], frames, w, h, samples);
+    out.commit();
+    std::fprintf(stderr, "%s: %zu frames at %dx%d, %zu gyro samples\n", lumavel::host::shown_path(argv[2]).c_str(),
+                 frames, w, h, samples);
     return 0;
   } catch (const std::exception& e) {  // RecordingError names file and line/frame
     std::fprintf(stderr, "%s\n", e.what());
