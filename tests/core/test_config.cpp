@@ -77,6 +77,38 @@ TEST(Config, HostQuantisationRefusesWhatDoesNotFit) {
   CHECK_THROWS(std::invalid_argument, host::to_fixed_config(s));
 }
 
+// A time in a refusal is the one its rule is checked on, whole microseconds:
+// a frame period of 1.000000501 s (1000001 us) said 'frame period = 1 s:
+// frame period must be 1 ms..1 s', a refusal its own words allow (a gyro gap
+// of 1.0000005 s the same).
+TEST(Config, ATimeInARefusalIsItsWholeMicroseconds) {
+  auto s = test::SyntheticRig{}.settings();
+  s.frame_period = 1.000000501;
+  s.max_gap = 4;
+  try {
+    host::to_fixed_config(s);
+    FAIL("accepted");
+  } catch (const std::invalid_argument& e) {
+    STRCMP_EQUAL("frame period = 1.000001 s: frame period must be 1 ms..1 s", e.what());
+  }
+  s = test::SyntheticRig{}.settings();
+  s.gyro_gap = 1.0000005;
+  try {
+    host::to_fixed_config(s);
+    FAIL("accepted");
+  } catch (const std::invalid_argument& e) {
+    STRCMP_EQUAL("gyro gap = 1.000001 s: gyro gap must be 0.1 ms..1 s", e.what());
+  }
+  s = test::SyntheticRig{}.settings();
+  s.frame_period = 0.0009994;  // 999 us
+  try {
+    host::to_fixed_config(s);
+    FAIL("accepted");
+  } catch (const std::invalid_argument& e) {
+    STRCMP_EQUAL("frame period = 0.000999 s: frame period must be 1 ms..1 s", e.what());
+  }
+}
+
 TEST(Config, EstimatorKeepsItsConfigurationOnError) {
   Estimator* est = new Estimator;
   CHECK(est->configure(good()) == ConfigError::kOk);

@@ -20,6 +20,22 @@ std::string g(double v) {
   return b;
 }
 
+// Seconds as the configuration holds them, in whole microseconds (micros),
+// which its rules are checked on: %g showed a frame period of 1.000000501 s,
+// 1000001 us, as 'frame period = 1 s: frame period must be 1 ms..1 s', a
+// refusal its own words allow. "1.000001", "0.016667", "0.000017" (%g
+// for what is not a microsecond or more, and for what %f would print long).
+std::string us_text(double seconds) {
+  const double us = std::round(seconds * 1e6);
+  if (!(std::fabs(us) < 1e15) || (us != 0 && std::fabs(us) < 1)) return g(seconds);
+  char b[64];
+  std::snprintf(b, sizeof b, "%.6f", us / 1e6);
+  std::string t = b;
+  t.erase(t.find_last_not_of('0') + 1);
+  if (t.back() == '.') t.pop_back();
+  return t;
+}
+
 // `what` names the setting in messages ("focal length fu"), `setting` is
 // its EstimatorSettings member, `unit` follows the value.
 struct Field {
@@ -69,13 +85,13 @@ std::pair<std::string, std::string> offending(const EstimatorSettings& s, Config
       return {cam_setting(i, "axis_yaw"), "cam" + std::to_string(i) + " axis yaw = " + g(s.cam[i].axis_yaw) + " rad"};
     }
     case ConfigError::kBaseline: return {"baseline", "baseline h = " + g(s.baseline) + " m"};
-    case ConfigError::kTau: return {"tau", "observer tau = " + g(s.tau) + " s"};
-    case ConfigError::kFramePeriod: return {"frame_period", "frame period = " + g(s.frame_period) + " s"};
-    case ConfigError::kMaxGap: return {"max_gap", "max gap = " + g(s.max_gap) + " s"};
-    case ConfigError::kGyroGap: return {"gyro_gap", "gyro gap = " + g(s.gyro_gap) + " s"};
+    case ConfigError::kTau: return {"tau", "observer tau = " + us_text(s.tau) + " s"};
+    case ConfigError::kFramePeriod: return {"frame_period", "frame period = " + us_text(s.frame_period) + " s"};
+    case ConfigError::kMaxGap: return {"max_gap", "max gap = " + us_text(s.max_gap) + " s"};
+    case ConfigError::kGyroGap: return {"gyro_gap", "gyro gap = " + us_text(s.gyro_gap) + " s"};
     case ConfigError::kLowTexture: return {"low_texture", "low-texture threshold = " + g(s.low_texture)};
     case ConfigError::kStill:
-      return {"still_distance", "still distance = " + g(s.still_distance) + " m, duration " + g(s.still_min) + " s"};
+      return {"still_distance", "still distance = " + g(s.still_distance) + " m, duration " + us_text(s.still_min) + " s"};
     case ConfigError::kColumnEdges: return {"cam[].edges", "a lens column-edge table"};
     case ConfigError::kKernelCount:
     case ConfigError::kKernelOrder:
