@@ -1006,3 +1006,19 @@ TEST(BadInput, ATableOrSensorYamlInUtf16IsSaidAsSuch) {
   fixture::write_text(yaml, sensor);
   STRCMP_EQUAL("(no error)", load_error().c_str());
 }
+
+// The exposure's bound, 10 / rate_hz, is said in four digits, or as many more
+// as it takes to lie below the value refused: at 60 Hz 'exposure_s: 0.1667'
+// said 'exposure_s = 0.1667 must be 0..0.1667 s', a refusal its own words
+// allow (10 / 60 is 0.16666...).
+TEST(BadInput, AnExposuresBoundIsSaidBelowTheValueItRefuses) {
+  const std::string y0 = m + "cam0/sensor.yaml";
+  fixture::replace_in(y0, "rate_hz: 100", "rate_hz: 60");
+  fixture::write_text(y0, fixture::read_text(y0) + "exposure_s: 0.1667\n");
+  STRCMP_CONTAINS("exposure_s = 0.1667 must be 0..0.16667 s (at most 10 frame periods, 10 / rate_hz)",
+                  load_error().c_str());
+  fixture::replace_in(y0, "exposure_s: 0.1667", "exposure_s: 0.16667");
+  STRCMP_CONTAINS("exposure_s = 0.16667 must be 0..0.166667 s", load_error().c_str());
+  fixture::replace_in(y0, "exposure_s: 0.16667", "exposure_s: 0.5");
+  STRCMP_CONTAINS("exposure_s = 0.5 must be 0..0.1667 s", load_error().c_str());
+}

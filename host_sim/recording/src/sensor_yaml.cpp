@@ -8,7 +8,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <cstdlib>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <sstream>
 
@@ -24,10 +26,16 @@ namespace {
 
 long line_of(const YAML::Node& n) { return n.Mark().line + 1; }  // yaml-cpp lines are 0-based
 
-// A derived bound for a message (10 / 60 Hz as 0.1667, not 0.16666666666666666).
-std::string four_digits(double v) {
+// A derived upper bound for the message refusing `refused` (10 / 60 Hz as
+// 0.1667, not 0.16666666666666666), with as many more digits as it takes to
+// lie below the value refused: 'exposure_s = 0.1667 must be 0..0.1667 s' was
+// a refusal its own words allow (now 0..0.16667 s).
+std::string bound_below(double bound, double refused) {
   char b[32];
-  std::snprintf(b, sizeof b, "%.4g", v);
+  for (int digits = 4; digits <= 17; ++digits) {
+    std::snprintf(b, sizeof b, "%.*g", digits, bound);
+    if (std::strtod(b, nullptr) < refused) break;
+  }
   return b;
 }
 
@@ -202,9 +210,10 @@ Pose read_pose(const YAML::Node& root, const std::string& path) {
 
 // -1 when absent (the optional physical quantities are never negative: a
 // negative value in the file is an error, not a way to say "absent"). At
-// most `hi`, `range` saying the range and its unit ("0..10 rad/s/sqrt(Hz)").
+// most `hi`, `range` saying the range and its unit ("0..10 rad/s/sqrt(Hz)")
+// for the value it refuses.
 double optional_number(const YAML::Node& root, const char* key, const std::string& path, double hi,
-                       const std::string& range) {
+                       const std::function<std::string(double)>& range) {
   const YAML::Node n = root[key];
   if (!n) return -1.0;
   refuse_empty_value(root, key, key, path);
@@ -212,7 +221,7 @@ double optional_number(const YAML::Node& root, const char* key, const std::strin
   if (v < 0)
     throw recording_error_at(path, line_of(n), std::string(key) + " = " + format_double(v) + " must not be negative");
   if (v > hi)
-    throw recording_error_at(path, line_of(n), std::string(key) + " = " + format_double(v) + " must be " + range);
+    throw recording_error_at(path, line_of(n), std::string(key) + " = " + format_double(v) + " must be " + range(v));
   return v;
 }
 
@@ -318,10 +327,11 @@ CameraSensor read_camera_yaml(const std::string& path) {
   c.line.distortion = line_of(dc);
   c.T_BS = read_pose(root, path);
   c.line.T_BS = key_line(root, "T_BS");
-  c.exposure_s = optional_number(root, "exposure_s", path, kMaxExposureFrames / c.rate_hz,
-                                 "0.." + four_digits(kMaxExposureFrames / c.rate_hz) + " s (at most " +
-                                     format_double(kMaxExposureFrames) + " frame periods, " +
-                                     format_double(kMaxExposureFrames) + " / rate_hz)");
+  const double longest = kMaxExposureFrames / c.rate_hz;
+  c.exposure_s = optional_number(root, "exposure_s", path, longest, [&](double refused) {
+    return "0.." + bound_below(longest, refused) + " s (at most " + format_double(kMaxExposureFrames) +
+           " frame periods, " + format_double(kMaxExposureFrames) + " / rate_hz)";
+  });
   c.comment = optional_text(root, "comment");
   return c;
 }
@@ -332,10 +342,12 @@ ImuSensor read_imu_yaml(const std::string& path) {
   ImuSensor s;
   s.rate_hz = read_rate(root, path, s.line.rate_hz);
   s.T_BS = read_pose(root, path);
-  s.gyroscope_noise_density = optional_number(root, "gyroscope_noise_density", path, kMaxGyroNoiseDensity,
-                                              "0.." + format_double(kMaxGyroNoiseDensity) + " rad/s/sqrt(Hz)");
-  s.gyroscope_random_walk = optional_number(root, "gyroscope_random_walk", path, kMaxGyroRandomWalk,
-                                            "0.." + format_double(kMaxGyroRandomWalk) + " rad/s^2/sqrt(Hz)");
+  s.gyroscope_noise_density = optional_number(root, "gyroscope_noise_density", path, kMaxGyroNoiseDensity, [](double) {
+    return "0.." + format_double(kMaxGyroNoiseDensity) + " rad/s/sqrt(Hz)";
+  });
+  s.gyroscope_random_walk = optional_number(root, "gyroscope_random_walk", path, kMaxGyroRandomWalk, [](double) {
+    return "0.." + format_double(kMaxGyroRandomWalk) + " rad/s^2/sqrt(Hz)";
+  });
   s.comment = optional_text(root, "comment");
   return s;
 }
