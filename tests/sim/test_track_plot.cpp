@@ -39,6 +39,16 @@ TEST(TrackPlot, EstimateTruthAndErrorPanels) {
   STRCMP_CONTAINS("time (s)", svg.c_str());
 }
 
+// The title is the recording's name: one with a control character or a byte
+// that is no UTF-8 (a folder named 'e<ESC>[2Jrec', or 'caf\xE9' in Latin-1)
+// made an SVG that is not well-formed XML, which no browser opens.
+TEST(TrackPlot, ATitleXmlCannotHoldIsShownEscaped) {
+  const std::string svg = track_svg(track(50, true), "e\x1b[2Jrec caf\xE9 <&>");
+  STRCMP_CONTAINS("e\\x1B[2Jrec caf\\xE9 &lt;&amp;&gt;", svg.c_str());
+  CHECK(svg.find('\x1b') == std::string::npos);
+  CHECK(svg.find('\xE9') == std::string::npos);
+}
+
 TEST(TrackPlot, WithoutTruthOnlyTheEstimate) {
   const std::string svg = track_svg(track(500, false), "x");
   LONGS_EQUAL(1, count(svg, "<polyline"));

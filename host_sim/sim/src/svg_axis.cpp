@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "lumavel/host/path_check.hpp"
+
 namespace lumavel::host::svg {
 
 std::string fmt(const char* f, double v) {
@@ -12,7 +14,12 @@ std::string fmt(const char* f, double v) {
   return b;
 }
 
-std::string escape(const std::string& t) {
+// Text for an SVG (UTF-8 XML): its markup characters as entities, and what
+// XML cannot hold, control characters and bytes that are no UTF-8, shown as
+// \xNN (shown_text): a recording folder named 'e<ESC>[2Jrec', whose name is
+// the plot's title, made a plot no browser opens ('not well-formed'), exit 0.
+std::string escape(const std::string& text) {
+  const std::string t = shown_text(text);
   std::string o;
   for (char c : t) {
     if (c == '<') o += "&lt;";
