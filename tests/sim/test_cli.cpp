@@ -408,6 +408,19 @@ TEST(Cli, ARecordingRunFromInsideIsNamedByItsFolder) {
   CHECK(r.err.find("recording: 12 frame pairs") == std::string::npos);
 }
 
+// The summary names the recording, the plot and the --hid file as every
+// message does: a recording folder named 'e<ESC>[2Jrec' cleared the terminal
+// with the summary's first line, its plot's name and the report file's too.
+TEST(Cli, TheSummaryShowsTheNamesEscaped) {
+  fixture::write_recording(dir.path() + "/e\x1b[2Jrec");
+  const Outcome r = sim("run \"$(printf 'e\\033[2Jrec')\" -o est.csv --hid \"file:$(printf 'h\\033[2J.hidrep')\"");
+  LONGS_EQUAL(0, r.code);
+  STRCMP_CONTAINS("e\\x1B[2Jrec: 12 frame pairs", r.err.c_str());
+  STRCMP_CONTAINS("plot: e\\x1B[2Jrec_estimates.svg\n", r.err.c_str());
+  STRCMP_CONTAINS("hid: 12 reports sent through file:h\\x1B[2J.hidrep, 0 overruns", r.err.c_str());
+  CHECK(r.err.find('\x1b') == std::string::npos);
+}
+
 TEST(Cli, PhotometricMatchCanBeTurnedOff) {
   rec();
   Outcome r = sim("run rec -o est.csv --no-photometric-match");

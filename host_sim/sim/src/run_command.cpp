@@ -403,7 +403,7 @@ int run(const RunArgs& a) {
                             ? static_cast<double>(rec.frames.back().t_ns - rec.frames.front().t_ns) * 1e-9
                             : 0.0;
     std::fprintf(stderr, "%s: %zu frame pairs over %.3f s, %s engine, %dx%d working%s, %.0f frames/s (engine %.1f us/frame)\n",
-                 recording_name(a.rec).c_str(), result.frames, span, engine_name(options.engine),
+                 shown_path(recording_name(a.rec)).c_str(), result.frames, span, engine_name(options.engine),
                  result.width, result.height, working_size_origin(a, rec).c_str(),
                  result.wall_s > 0 ? static_cast<double>(result.frames) / result.wall_s : 0.0,
                  result.frames ? 1e6 * result.step_s / static_cast<double>(result.frames) : 0.0);
@@ -428,8 +428,12 @@ int run(const RunArgs& a) {
     std::fprintf(stderr, "%s\n", gyro_offset_line(options.engine, !a.no_gyro_offset_learning, result.track, last.gyro_offset).c_str());
     std::fprintf(stderr, "%s\n", photometric_line(options.engine, !a.no_photometric_match, last.photometric).c_str());
     std::fprintf(stderr, "%s\n", clip_line(options, result).c_str());
-    if (want_plot) std::fprintf(stderr, "plot: %s\n", plot_to_stdout ? "standard output" : plot.c_str());
-    if (hid) std::fprintf(stderr, "hid: %u reports sent through %s, %u overruns\n", hid->sent(), a.hid.c_str(), hid->overruns());
+    // The names as every message shows them (was: a recording folder named
+    // 'e<ESC>[2Jrec' cleared the terminal with the summary's first line).
+    if (want_plot) std::fprintf(stderr, "plot: %s\n", plot_to_stdout ? "standard output" : shown_path(plot).c_str());
+    if (hid)
+      std::fprintf(stderr, "hid: %u reports sent through %s, %u overruns\n", hid->sent(), shown_path(a.hid).c_str(),
+                   hid->overruns());
     if (hid && a.hid_linger_s != 0) {
       if (a.hid_linger_s < 0) std::fprintf(stderr, "hid: answering feature reports until interrupted\n");
       else std::fprintf(stderr, "hid: answering feature reports for %g s\n", a.hid_linger_s);
