@@ -904,6 +904,27 @@ TEST(Cli, CalibrateSuggestsNothingItCannotKnow) {
   STRCMP_CONTAINS("send to a board: lumavel-read config set misalignment_rad=", r.out.c_str());
 }
 
+// The names calibrate --write puts in its file's comments are shown as
+// every name is: a line break in one (a recording folder named
+// 'fine<LF>width=160') ended the comment, and the file written, exit 0, held
+// a line 'width=160 (lumavel-sim calibrate --write)' that config set refuses.
+// The summaries of render and calibrate show the names the same way.
+TEST(Cli, CalibrateWritesNamesIntoItsCommentsEscaped) {
+  const std::string scenario = LUMAVEL_SOURCE_DIR "/host_sim/scenarios/paper_sim_misaligned.yaml";
+  const std::string odd = "\"$(printf 'fine\\nwidth=160')\"";
+  Outcome r = sim("render '" + scenario + "' " + odd + " --resolution 160x120 --duration 2");
+  LONGS_EQUAL(0, r.code);
+  STRCMP_CONTAINS("fine\\x0Awidth=160/mav0: ", r.out.c_str());
+  r = sim("calibrate " + odd + " --quiet --write \"$(printf 'c\\033.cfg')\"");
+  LONGS_EQUAL(0, r.code);
+  STRCMP_CONTAINS("wrote c\\x1B.cfg (", r.out.c_str());
+  const std::vector<std::string> lines = fixture::read_lines(dir.path() + "/c\x1b.cfg");
+  STRCMP_EQUAL("# lumavel device configuration for fine\\x0Awidth=160 (lumavel-sim calibrate --write)",
+               lines.at(0).c_str());
+  STRCMP_EQUAL("# send with: lumavel-read config set --file c\\x1B.cfg", lines.at(1).c_str());
+  CHECK(lines.at(2).rfind("width=", 0) == 0);
+}
+
 // run counts a gyro hole and flags its frames; calibrate said nothing of it
 // (found by the corrupted-input campaign, tests/corpus/cli_campaign.cpp).
 TEST(Cli, CalibrateSaysTheRecordingHasGaps) {

@@ -143,15 +143,20 @@ int calibrate(CalibrateArgs& a) {
     return 0;
   }
   const DeviceSetup setup = device_setup_from_recording(rec, write_size, c.misalignment);
-  const std::string text = "# lumavel device configuration for " + a.rec + " (lumavel-sim calibrate --write)\n" +
-                           "# send with: lumavel-read config set --file " + a.write_path + "\n" + format_setup(setup);
+  // The names through shown_path: a line break in one (a recording folder
+  // named 'rec<LF>width=160') ended the comment, and the file written, exit 0,
+  // held a line 'width=160 (lumavel-sim calibrate --write)' that config set
+  // refuses.
+  const std::string text = "# lumavel device configuration for " + shown_path(a.rec) +
+                           " (lumavel-sim calibrate --write)\n" + "# send with: lumavel-read config set --file " +
+                           shown_path(a.write_path) + "\n" + format_setup(setup);
   // A FIFO nobody reads: refused, not waited on. A file that cannot be
   // written whole is not left half-written, to be sent to a board.
   write_file(a.write_path, text, "the configuration file");
   std::printf("wrote %s (%dx%d working, lens tables: %s); send to a board: lumavel-read config set --file %s\n",
-              a.write_path.c_str(), setup.config.width, setup.config.height,
+              shown_path(a.write_path).c_str(), setup.config.width, setup.config.height,
               setup.config.lens == 0 ? "none, pinhole" : setup.config.lens == 3 ? "both cameras" : "one camera",
-              a.write_path.c_str());
+              shown_path(a.write_path).c_str());
   return 0;
 }
 

@@ -190,7 +190,7 @@ ImportSliderSummary import_slider(const std::string& data_dir, const std::string
   const std::vector<GroundTruthSample> truth = body_groundtruth(d.poses, options.baseline, gt_file);
   if (d.calib.k3 != 0)
     std::fprintf(stderr, "import-slider: warning: %s: k3 = %g dropped (the recording format has k1 k2 p1 p2)\n",
-                 (data_dir + "/calib.txt").c_str(), d.calib.k3);
+                 shown_path(data_dir + "/calib.txt").c_str(), d.calib.k3);
 
   ImportSliderSummary sum;
   sum.frames_in = d.frames.size();
@@ -320,7 +320,7 @@ void add_import_slider_command(cli::Tool& tool) {
         std::printf("import-slider: %zu of %zu frames paired at h = %g m (largest blended frame spacing %.4f m), "
                     "%zu gyro samples, %zu ground-truth samples -> %s\n",
                     s.pairs, s.frames_in, a->o.baseline, s.max_blend_gap_m, s.imu_samples, s.groundtruth_samples,
-                    a->out.c_str());
+                    shown_path(a->out).c_str());
         return 0;
       });
   c->add_option("DATA_DIR", a->data, "the dataset folder (images.txt, groundtruth.txt, calib.txt)")

@@ -155,7 +155,7 @@ int render_to_folder(RenderArgs& a) {
     std::printf(
         "%s: %d frame pairs (%d dropped) %dx%d, %zu gyro samples, %zu ground-truth samples, "
         "max %d sub-frames, %s, %.1f s\n",
-        mav0.c_str(), r.frames - r.dropped, r.dropped, s.camera.width, s.camera.height, r.imu_samples,
+        shown_path(mav0).c_str(), r.frames - r.dropped, r.dropped, s.camera.width, s.camera.height, r.imu_samples,
         r.groundtruth_samples, r.max_subframes, bg.c_str(), r.seconds);
   }
   check_runnable(a.out);
