@@ -84,3 +84,17 @@ if(EXISTS /dev/full)
     message(FATAL_ERROR "the stream written to /dev/full: expected exit 1 and its reason, got exit ${rc}: ${err}")
   endif()
 endif()
+# lumavel_make_test_stream the same: a stream too short for its lens upload
+# was refused, exit 1, but left behind without the upload.
+file(REMOVE ${WORK}/short.lvs)
+execute_process(COMMAND ${GEN} short.lvs 40 30 2 1 --lens barrel WORKING_DIRECTORY ${WORK} RESULT_VARIABLE rc
+                ERROR_VARIABLE err)
+if(NOT rc EQUAL 1 OR NOT err MATCHES "2 frames are too few to upload the lens" OR EXISTS ${WORK}/short.lvs)
+  message(FATAL_ERROR "a test stream too short for its lens: expected exit 1 and no short.lvs, got exit ${rc}: ${err}")
+endif()
+if(EXISTS /dev/full)
+  execute_process(COMMAND ${GEN} /dev/full 40 30 5 WORKING_DIRECTORY ${WORK} RESULT_VARIABLE rc ERROR_VARIABLE err)
+  if(NOT rc EQUAL 1 OR NOT err MATCHES "^/dev/full: write error: No space left on device")
+    message(FATAL_ERROR "a test stream written to /dev/full: expected exit 1 and its reason, got exit ${rc}: ${err}")
+  endif()
+endif()

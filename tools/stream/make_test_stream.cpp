@@ -15,10 +15,13 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "lumavel/app/estimator_config.hpp"
+#include "lumavel/host/output_file.hpp"
 #include "lumavel/protocol/descriptor.hpp"
 #include "lumavel/protocol/device_config.hpp"
 #include "lumavel/protocol/reports.hpp"
@@ -130,11 +133,18 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "%s: --lens needs width <= 254\n", argv[0]);
     return 2;
   }
-  lumavel::stream::StreamWriter o{std::fopen(argv[1], "wb")};
-  if (o.f == nullptr) {
-    std::fprintf(stderr, "%s: cannot open for writing\n", argv[1]);
+  // Written aside and moved into place once whole (OutputFile): a stream too
+  // short for its lens upload was refused, exit 1, but left behind without
+  // it; a write error is said with its reason (was: 'cannot open for
+  // writing', 'write failed').
+  std::unique_ptr<lumavel::host::OutputFile> out;
+  try {
+    out = std::make_unique<lumavel::host::OutputFile>(argv[1], "the stream");
+  } catch (const std::runtime_error& e) {
+    std::fprintf(stderr, "%s\n", e.what());
     return 1;
   }
+  lumavel::stream::StreamWriter o{out->get()};
   o.header(w, h);
 
   std::vector<uint8_t> px(static_cast<size_t>(w) * static_cast<size_t>(h));
@@ -184,10 +194,12 @@ int main(int argc, char** argv) {
   }
   if (next_set < pending.size() || (lens != Lens::kNone && pending.empty())) {
     std::fprintf(stderr, "%s: %d frames are too few to upload the lens\n", argv[0], frames);
-    return 1;
+    return 1;  // the stream left unwritten (out's destructor)
   }
-  if (std::fclose(o.f) != 0) {
-    std::fprintf(stderr, "%s: write failed\n", argv[1]);
+  try {
+    out->commit();
+  } catch (const std::runtime_error& e) {
+    std::fprintf(stderr, "%s\n", e.what());
     return 1;
   }
   return 0;
