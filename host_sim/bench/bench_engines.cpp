@@ -55,9 +55,7 @@ Frames load_frames(const Recording& rec, EngineKind kind, int w, int h) {
     const lumavel::hal::CaptureStatus st = camera.capture(img);
     if (st == lumavel::hal::CaptureStatus::kEnd) break;
     if (st == lumavel::hal::CaptureStatus::kError) throw RecordingError(camera.error());
-    while (gyro < rec.imu_samples.size()) {
-      if (rec.imu_samples[gyro++].t_ns >= img.t_ns) break;
-    }
+    gyro = gyro_samples_through(rec, gyro, img.t_ns);
     f.cam[0].push_back(b0);
     f.cam[1].push_back(b1);
     f.t.push_back(img.t_ns);

@@ -53,6 +53,18 @@ const char* const kEstimatesHeader =
     "timestamp_ns,v_xb_mps,distance_m,heading_rad,status,gyro_offset_radps,v_direct_mps,texture,v_differential_mps,"
     "tof_s,scale";
 
+size_t gyro_samples_through(const Recording& rec, size_t next, uint64_t t_ns) {
+  const std::vector<ImuSample>& g = rec.imu_samples;
+  // The first sample at or after t was pushed already (for an earlier frame:
+  // a gyro slower than the frames): none more. Was: one more every frame, so
+  // that a 20 Hz gyro under 60 Hz frames ran ahead of them, the estimator
+  // held its oldest rate backwards and raised GYRO_GAP on nearly every frame.
+  if (next > 0 && g[next - 1].t_ns >= t_ns) return next;
+  while (next < g.size())
+    if (g[next++].t_ns >= t_ns) break;  // the first sample at or after the frame is the last pushed
+  return next;
+}
+
 bool has_lens_distortion(const Recording& rec) { return lens_applies(rec.cam[0]) || lens_applies(rec.cam[1]); }
 
 bool undistorts_frames(const Recording& rec, const RunOptions& options) {
@@ -163,11 +175,8 @@ RunResult run_recording(const Recording& rec, const EstimatorSettings& settings,
     if (st == hal::CaptureStatus::kEnd) break;
     if (st == hal::CaptureStatus::kError) throw RecordingError(camera_error());
     const auto engine_start = Clock::now();
-    while (gyro < rec.imu_samples.size()) {
-      const ImuSample& s = rec.imu_samples[gyro++];
-      engine.push_gyro(s.t_ns, body_yaw_rate(rec.imu, s));
-      if (s.t_ns >= img.t_ns) break;  // the first sample at or after the frame is the last pushed
-    }
+    for (const size_t end = gyro_samples_through(rec, gyro, img.t_ns); gyro < end; ++gyro)
+      engine.push_gyro(rec.imu_samples[gyro].t_ns, body_yaw_rate(rec.imu, rec.imu_samples[gyro]));
     const EngineEstimate e = engine.step(img.t_ns, buf0.data(), buf1.data());
     in_engine += Clock::now() - engine_start;
     motion.add(buf0.data(), buf1.data());

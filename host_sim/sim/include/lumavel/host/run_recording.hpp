@@ -96,6 +96,13 @@ bool undistorts_frames(const Recording& rec, const RunOptions& options);
 // Whether either camera's sensor.yaml gives non-zero distortion coefficients.
 bool has_lens_distortion(const Recording& rec);
 
+// The end (exclusive) of the gyro samples to push before the frame at t_ns,
+// `next` being the first not pushed yet: every sample up to and including the
+// first one at or after t_ns, none when that one was pushed for an earlier
+// frame (a gyro slower than the frames). The firmware's App::push_gyro_until
+// does the same.
+size_t gyro_samples_through(const Recording& rec, size_t next, uint64_t t_ns);
+
 // Runs the engine over `rec`. For each frame pair, pushes every gyro sample up
 // to and including the first one at or after the frame time, then steps.
 // Writes the CSV to `csv` when not null. `progress(done, total)` is called
