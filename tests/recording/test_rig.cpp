@@ -153,6 +153,25 @@ TEST(Rig, SlowGyroWidensTheGyroGap) {
   DOUBLES_EQUAL(0.1, s.gyro_gap, 1e-12);
 }
 
+// Frames at 1.25 Hz (a period the core takes, up to 1 s): the observer
+// bridges intervals of 2.5 periods, not the default 0.5 s, which was shorter
+// than one frame interval (was: run refused the recording with "max gap =
+// 0.5 s: max gap must be one frame period..4 s"; at 2 Hz with a microsecond of
+// jitter every frame restarted the observer).
+TEST(Rig, SlowFramesWidenTheMaxGap) {
+  fixture::TempDir dir;
+  fixture::Options o;
+  o.frames = 4;
+  o.frame_dt = 800000000;
+  const Recording rec = load_recording(fixture::write_recording(dir.path() + "/rec", o));
+  const EstimatorSettings s = derive_settings(rec, {});
+  DOUBLES_EQUAL(2.0, s.max_gap, 1e-12);
+  check_rig_settings(rec, s);  // the core takes it
+  fixture::Options fast;  // 100 Hz: the default holds
+  DOUBLES_EQUAL(EstimatorSettings{}.max_gap,
+                derive_settings(load_recording(fixture::write_recording(dir.path() + "/fast", fast)), {}).max_gap, 0);
+}
+
 TEST(Rig, PinholeCamerasHaveNoEdgeTable) {
   CameraSensor c = fixture::left_camera(640, 480, 0.0);
   c.distortion = {0, 0, 0, 0};

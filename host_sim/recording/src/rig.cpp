@@ -223,6 +223,10 @@ std::vector<double> lens_elevation_scales(const CameraSensor& c, int work_width)
 
 double gyro_gap_s(double imu_period_s) { return std::max(EstimatorSettings{}.gyro_gap, 2.5 * imu_period_s); }
 
+double max_gap_s(double frame_period_s) {
+  return std::min(config::spec(config::Quantity::kMaxGap).hi, std::max(EstimatorSettings{}.max_gap, 2.5 * frame_period_s));
+}
+
 WorkingSize default_working_size(const Recording& rec) {
   return {default_columns(rec.cam[0].width), default_rows(rec.cam[0].height)};
 }
@@ -279,6 +283,7 @@ EstimatorSettings derive_settings(const Recording& rec, WorkingSize size) {
   }
   s.frame_period = rec.frame_period_s;
   s.gyro_gap = gyro_gap_s(rec.imu_period_s);
+  s.max_gap = max_gap_s(rec.frame_period_s);
   const double hfov = horizontal_fov(rec.cam[0]);
   s.kernels = default_kernels(hfov);
   s.elevation_band = config::elevation_band_for(hfov);

@@ -58,6 +58,15 @@ std::vector<double> lens_elevation_scales(const CameraSensor& c, int work_width)
 // so that a slow gyro does not look like a gyro gap at every frame.
 double gyro_gap_s(double imu_period_s);
 
+// The longest frame interval the observer bridges for frames every
+// `frame_period_s`: the settings' default (0.5 s), or 2.5 nominal periods for
+// slow frames (one dropped pair bridged, as at the default's 60 Hz), at most
+// the core's 4 s. Was the default always: at 2 Hz a jitter of a microsecond
+// restarted the observer on every frame, and below 2 Hz (a frame period of
+// 0.5..1 s, which the core takes) run refused the recording over "max gap =
+// 0.5 s", a setting the recording does not give.
+double max_gap_s(double frame_period_s);
+
 // Throws RecordingError, naming a sensor.yaml's resolution line, when `size`
 // is larger than a camera's sensor on either axis: frames are binned down,
 // never up. derive_settings checks it after taking a line-scan sensor's
