@@ -80,6 +80,28 @@ TEST(MotionDirection, SlowMotionOrAFewFramesSayNothing) {
   CHECK_FALSE(slow.mirrored() || still.mirrored() || few.mirrored());
 }
 
+// One camera's image stands still while the other's moves: a flat view (a
+// covered lens, plain grey) or one frame delivered again and again. Was:
+// exit 0, V near 0 against 3.5 m/s (E 99 %) with no fault flag and nothing
+// said (the engines' low-texture test sees the other camera's texture).
+TEST(MotionDirection, ACameraThatStandsStillWhileTheOtherMovesIsSaid) {
+  MotionDirectionCheck intact(kW, kH, -1, -1), flat(kW, kH, -1, -1), frozen(kW, kH, -1, -1), still(kW, kH, -1, -1);
+  const std::vector<uint8_t> grey(static_cast<size_t>(kW * kH), 128);
+  for (int i = 0; i < 30; ++i) {
+    intact.add(frame(2.0 * i).data(), frame(2.0 * i + 1.5).data());
+    flat.add(frame(2.0 * i).data(), grey.data());
+    frozen.add(frame(1.5).data(), frame(2.0 * i).data());  // cam0 stuck on one frame
+    still.add(frame(0).data(), frame(1.5).data());        // the rig standing still
+  }
+  LONGS_EQUAL(-1, intact.still_camera());
+  LONGS_EQUAL(1, flat.still_camera());
+  LONGS_EQUAL(29, flat.alone(0));
+  LONGS_EQUAL(0, frozen.still_camera());
+  LONGS_EQUAL(29, frozen.alone(1));
+  LONGS_EQUAL(-1, still.still_camera());
+  STRCMP_CONTAINS("cam1's images did not move on 29 of the 29 frames", still_camera_text(1, 29, 29, "R").c_str());
+}
+
 // A recording whose cam1 images are mirrored left-right ran with exit 0 and
 // E near 100 %, nothing said. The run says it, even with -q; the intact one
 // says nothing.
@@ -112,5 +134,34 @@ TEST(MotionDirection, RunWarnsOfAMirroredCamera) {
                 "images the same way: the images of one camera are mirrored left-right, or upside down where its T_BS "
                 "says upright (" + rec + "/mav0/cam0/sensor.yaml, cam1/sensor.yaml). The estimates are not to be "
                 "trusted\n").c_str(),
+               fixture::read_text(err).c_str());
+}
+
+// Through the command line: cam1's frames plain grey, cam0's moving (was:
+// exit 0, nothing said).
+TEST(MotionDirection, RunWarnsOfACameraThatStandsStill) {
+  fixture::TempDir dir;
+  fixture::Options o;
+  o.frames = 40;
+  const std::string rec = fixture::write_recording(dir.path() + "/rec", o);
+  for (int i = 0; i < o.frames; ++i)
+    for (int c = 0; c < 2; ++c) {
+      std::vector<uint8_t> px(static_cast<size_t>(o.width * o.height), 128);
+      const std::vector<uint8_t> row = frame(2.0 * i);
+      if (c == 0)
+        for (int v = 0; v < o.height; ++v)
+          for (int u = 0; u < o.width; ++u) px[static_cast<size_t>(v * o.width + u)] = row[static_cast<size_t>(u)];
+      write_png_gray(rec + "/mav0/cam" + std::to_string(c) + "/data/" + std::to_string(fixture::frame_time(o, i)) +
+                         ".png",
+                     px.data(), o.width, o.height);
+    }
+  const std::string err = dir.path() + "/stderr.txt";
+  const std::string run = "'" LUMAVEL_SIM_EXE "' run '" + rec + "' -q -o /dev/null --plot /dev/null 2>'" + err + "'";
+  LONGS_EQUAL(0, std::system(run.c_str()));
+  STRCMP_EQUAL(("run: warning: cam1's images did not move on 39 of the 39 frames where either camera's moved a "
+                "working column or more, while cam0's did: the two cameras look the same way (T_BS), so the rig's "
+                "motion moves both images. cam1 sees nothing that moves (its lens covered or blocked by something "
+                "plain) or delivers the same frame again and again (" + rec + "/mav0/cam1/); V is not observable "
+                "from one camera. The estimates are not to be trusted\n").c_str(),
                fixture::read_text(err).c_str());
 }

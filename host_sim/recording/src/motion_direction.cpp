@@ -59,7 +59,13 @@ void MotionDirectionCheck::add(const uint8_t* cam0, const uint8_t* cam1) {
     previous_[c].swap(p);
     p.resize(static_cast<size_t>(width_));
   }
+  const bool had_previous = have_previous_;
   have_previous_ = true;
+  if (!had_previous) return;
+  // One image moved a column or more, the other's did not (stood still, or
+  // showed no motion that its previous frame explains).
+  for (int c = 0; c < 2; ++c)
+    if (moved[c] != 0 && moved[1 - c] == 0) ++alone_[c];
   if (moved[0] == 0 || moved[1] == 0) return;
   ((moved[0] > 0) == (moved[1] > 0) ? same_ : opposite_) += 1;
 }
@@ -67,6 +73,25 @@ void MotionDirectionCheck::add(const uint8_t* cam0, const uint8_t* cam1) {
 bool MotionDirectionCheck::mirrored() const {
   return opposite_ >= kMotionMinOppositeFrames &&
          static_cast<double>(opposite_) >= kMotionOppositeShare * static_cast<double>(same_ + opposite_);
+}
+
+int MotionDirectionCheck::still_camera() const {
+  for (int c = 0; c < 2; ++c) {
+    const size_t counted = same_ + opposite_ + alone_[0] + alone_[1];
+    if (alone_[1 - c] >= kMotionMinOppositeFrames &&
+        static_cast<double>(alone_[1 - c]) >= kMotionOppositeShare * static_cast<double>(counted))
+      return c;
+  }
+  return -1;
+}
+
+std::string still_camera_text(int still, size_t alone, size_t counted, const std::string& root) {
+  const std::string s = "cam" + std::to_string(still), m = "cam" + std::to_string(1 - still);
+  return s + "'s images did not move on " + std::to_string(alone) + " of the " + std::to_string(counted) +
+         " frames where either camera's moved a working column or more, while " + m +
+         "'s did: the two cameras look the same way (T_BS), so the rig's motion moves both images. " + s +
+         " sees nothing that moves (its lens covered or blocked by something plain) or delivers the same frame "
+         "again and again (" + root + "/" + s + "/); V is not observable from one camera";
 }
 
 std::string opposite_motion_text(size_t opposite, size_t counted, const std::string& root) {

@@ -387,6 +387,9 @@ int run(const RunArgs& a) {
     std::fprintf(stderr, "run: warning: %s. The estimates are not to be trusted\n",
                  opposite_motion_text(result.motion_opposite, result.motion_same + result.motion_opposite, rec.root)
                      .c_str());
+  if (result.still_camera >= 0)
+    std::fprintf(stderr, "run: warning: %s. The estimates are not to be trusted\n",
+                 still_camera_text(result.still_camera, result.motion_alone, result.motion_counted, rec.root).c_str());
   if (plot_out) {
     const std::string svg = track_svg(result.track, recording_name(a.rec) + ": V_xb, " + engine_name(options.engine) +
                                                         " engine, " + std::to_string(result.width) + "x" +

@@ -37,6 +37,16 @@ class MotionDirectionCheck {
   size_t opposite() const { return opposite_; }  // ... opposite ways
   // Opposite on kMotionMinOppositeFrames or more and on kMotionOppositeShare of the counted frames.
   bool mirrored() const;
+  // Frames where camera c's image moved a working column or more and the
+  // other camera's did not move at all (a flat view, or a frozen image).
+  size_t alone(int c) const { return alone_[c]; }
+  // The camera whose image stood still while the other's moved, on
+  // kMotionMinOppositeFrames or more and on kMotionOppositeShare of the
+  // frames where either moved: its lens is covered or blocked by something
+  // plain, or it delivers one frame over and over, and the stereo difference
+  // says nothing of V (the engines' low-texture test, on rms(F1 - F0), sees
+  // the other camera's texture). -1: none.
+  int still_camera() const;
 
  private:
   // The shift (columns, + towards larger u) from the previous profile to this one, 0 when not clear.
@@ -46,11 +56,16 @@ class MotionDirectionCheck {
   std::vector<double> profile_[2], previous_[2];
   bool have_previous_ = false;
   size_t same_ = 0, opposite_ = 0;
+  size_t alone_[2] = {0, 0};
 };
 
 // What a mirrored camera looks like, for run's warning and calibrate's
 // refusal: "cam0's and cam1's images moved opposite ways on N of the M
 // frames ... (ROOT/cam0/sensor.yaml, cam1/sensor.yaml)".
 std::string opposite_motion_text(size_t opposite, size_t counted, const std::string& root);
+
+// What a still camera looks like, for run's warning: "cam1's images did not
+// move on N of the M frames where cam0's moved ...".
+std::string still_camera_text(int still, size_t alone, size_t counted, const std::string& root);
 
 }  // namespace lumavel::host

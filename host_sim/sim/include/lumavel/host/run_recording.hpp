@@ -66,6 +66,10 @@ struct RunResult {
   // opposite ways (motion_direction.hpp); mirrored: one image is mirrored.
   size_t motion_same = 0, motion_opposite = 0;
   bool mirrored = false;
+  // A camera whose images stood still while the other's moved (still_camera()
+  // of motion_direction.hpp; -1: none), on motion_alone of motion_counted frames.
+  int still_camera = -1;
+  size_t motion_alone = 0, motion_counted = 0;
   double wall_s = 0;              // time spent in the frame loop
   double step_s = 0;              // of which in the engine (push_gyro and step): its compute time
 };
