@@ -172,6 +172,22 @@ TEST(Rig, SlowFramesWidenTheMaxGap) {
                 derive_settings(load_recording(fixture::write_recording(dir.path() + "/fast", fast)), {}).max_gap, 0);
 }
 
+// A 2 Hz gyro: refused naming its sample interval and the rate it needs (was:
+// "imu0/data.csv: the median interval between samples: gyro gap = 1.25 s:
+// gyro gap must be 0.1 ms..1 s", a derived setting the recording does not give).
+TEST(Rig, TooSlowAGyroIsRefusedNamingItsInterval) {
+  fixture::TempDir dir;
+  fixture::Options o;
+  o.frame_dt = 100000000;
+  o.gyro_dt = 500000000;
+  const Recording rec = load_recording(fixture::write_recording(dir.path() + "/rec", o));
+  const std::string e = error_of([&] { check_rig_settings(rec, derive_settings(rec, {})); });
+  STRCMP_CONTAINS("imu0/data.csv: the median interval between samples, 0.5 s (the gyro gap is the larger of 0.05 s "
+                  "and 2.5 of them: the gyro must sample every 0.4 s or faster): gyro gap = 1.25 s: gyro gap must be "
+                  "0.1 ms..1 s",
+                  e.c_str());
+}
+
 TEST(Rig, PinholeCamerasHaveNoEdgeTable) {
   CameraSensor c = fixture::left_camera(640, 480, 0.0);
   c.distortion = {0, 0, 0, 0};

@@ -10,8 +10,18 @@
 #include "lumavel/host/recording_layout.hpp"
 #include "lumavel/host/rig.hpp"
 #include "lumavel/host/sensor_yaml.hpp"
+#include "lumavel/units/config_fields.hpp"
 
 namespace lumavel::host {
+namespace {
+
+std::string g(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%g", v);
+  return b;
+}
+
+}  // namespace
 
 std::string setting_source(const Recording& rec, const std::string& setting) {
   const std::string cam[2] = {rec.root + "/" + layout::kCamDir[0] + "/sensor.yaml",
@@ -40,7 +50,10 @@ std::string setting_source(const Recording& rec, const std::string& setting) {
     return rec.imu_samples.size() < 2
                ? at(rec.root + "/" + layout::kImuDir + "/sensor.yaml", rec.imu.line.rate_hz) +
                      ": rate_hz (one gyro sample: its period is 1 / rate_hz)"
-               : shown_path(rec.root + "/" + layout::kImuDir + "/data.csv") + ": the median interval between samples";
+               : shown_path(rec.root + "/" + layout::kImuDir + "/data.csv") + ": the median interval between samples, " +
+                     g(rec.imu_period_s) + " s (the gyro gap is the larger of " + g(EstimatorSettings{}.gyro_gap) +
+                     " s and 2.5 of them: the gyro must sample every " +
+                     g(config::spec(config::Quantity::kGyroGap).hi / 2.5) + " s or faster)";
   if (setting == "kernels")
     return at(cam[0], rec.cam[0].line.intrinsics) + ": the field of view (resolution and intrinsics) sizes the kernels";
   if (setting == "cam[].elevation_scale")  // from the lens model: the intrinsics and the coefficients
