@@ -188,6 +188,21 @@ TEST(Rig, TooSlowAGyroIsRefusedNamingItsInterval) {
                   e.c_str());
 }
 
+// A sensor read out through a window off its centre: principal point at
+// column 500 of 640. The kernels sized to the whole view reached past the
+// right edge and the recording was refused ("a kernel's +-2.5 sigma core
+// falls outside a camera's view"); they are sized to the narrower side now.
+// A centred camera keeps the kernels of its whole view.
+TEST(Rig, KernelsFitAnOffCentrePrincipalPoint) {
+  Recording r = rig(pose(kLeftX, kLeftY, kLeftZ, -0.04), pose(kLeftX, kLeftY, kLeftZ, 0.04));
+  const EstimatorSettings centred = derive_settings(r, {});
+  DOUBLES_EQUAL(std::atan(320.0 / 500) / 4, centred.kernels[0].sigma, 1e-12);
+  for (CameraSensor& c : r.cam) c.cu = 500;
+  const EstimatorSettings s = derive_settings(r, {});
+  check_rig_settings(r, s);  // the core takes it
+  DOUBLES_EQUAL(std::atan(139.5 / 500) / 4, s.kernels[0].sigma, 1e-12);
+}
+
 TEST(Rig, PinholeCamerasHaveNoEdgeTable) {
   CameraSensor c = fixture::left_camera(640, 480, 0.0);
   c.distortion = {0, 0, 0, 0};

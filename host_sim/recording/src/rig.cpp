@@ -221,6 +221,30 @@ std::vector<double> lens_elevation_scales(const CameraSensor& c, int work_width)
   return scales;
 }
 
+namespace {
+
+// Whether the settings' kernels reach past a camera's view (the core's rule,
+// through to_fixed_config).
+bool kernels_outside_view(const EstimatorSettings& s) {
+  try {
+    (void)to_fixed_config(s);
+  } catch (const SettingsError& e) {
+    return e.setting() == "kernels";
+  }
+  return false;
+}
+
+// The smaller angle (rad) from a camera's optical axis to its image's left or
+// right edge, of the two cameras (pinhole: the outer edges of the edge pixels).
+double narrower_half_view(const CameraSensor& a, const CameraSensor& b) {
+  double least = HUGE_VAL;
+  for (const CameraSensor* c : {&a, &b})
+    least = std::min({least, std::atan((c->cu + 0.5) / c->fu), std::atan((c->width - 0.5 - c->cu) / c->fu)});
+  return least;
+}
+
+}  // namespace
+
 double gyro_gap_s(double imu_period_s) { return std::max(EstimatorSettings{}.gyro_gap, 2.5 * imu_period_s); }
 
 double max_gap_s(double frame_period_s) {
@@ -286,6 +310,13 @@ EstimatorSettings derive_settings(const Recording& rec, WorkingSize size) {
   s.max_gap = max_gap_s(rec.frame_period_s);
   const double hfov = horizontal_fov(rec.cam[0]);
   s.kernels = default_kernels(hfov);
+  // An off-centre principal point (a sensor read out through a window off its
+  // centre): the kernels, centred on the optical axis and sized to the whole
+  // view, can reach past the image's nearer edge. Only then are they sized to
+  // twice the narrower side's reach (was: refused, "a kernel's +-2.5 sigma
+  // core falls outside a camera's view", blaming the field of view). A
+  // camera whose principal point is near the centre keeps the kernels above.
+  if (kernels_outside_view(s)) s.kernels = default_kernels(2 * narrower_half_view(rec.cam[0], rec.cam[1]));
   s.elevation_band = config::elevation_band_for(hfov);
   return s;
 }
