@@ -247,6 +247,11 @@ double narrower_half_view(const CameraSensor& a, const CameraSensor& b) {
 
 double gyro_gap_s(double imu_period_s) { return std::max(EstimatorSettings{}.gyro_gap, 2.5 * imu_period_s); }
 
+double focal_length_mismatch(const Recording& rec) {
+  const CameraSensor &a = rec.cam[0], &b = rec.cam[1];
+  return std::max(std::fabs(b.fu / a.fu - 1), std::fabs(b.fv / a.fv - 1));
+}
+
 double max_gap_s(double frame_period_s) {
   return std::min(config::spec(config::Quantity::kMaxGap).hi, std::max(EstimatorSettings{}.max_gap, 2.5 * frame_period_s));
 }
