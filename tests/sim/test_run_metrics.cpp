@@ -66,6 +66,18 @@ TEST(RunMetrics, FirstSecondIsLeftOutOfWorstAndMean) {
   DOUBLES_EQUAL(std::sqrt((100 * 9.0 + 199 * 0.01 + 0.16) / 300), m.rms, 1e-9);  // RMS covers the whole run
 }
 
+// A rig standing still, estimated exactly: the worst error, 0, is at the
+// first frame after the first second (was: "worst |err| 0 m/s at t = 0.000
+// s", a time inside the second the figure leaves out).
+TEST(RunMetrics, AnExactRunsWorstErrorIsAfterTheFirstSecond) {
+  std::vector<TrackPoint> track;
+  for (int i = 0; i < 300; ++i) track.push_back(pt(0.01 * i, 0.0, 0.0));
+  const RunMetrics m = compute_metrics(track);
+  DOUBLES_EQUAL(0, m.worst_after, 0);
+  DOUBLES_EQUAL(1.0, m.worst_after_t, 1e-9);
+  STRCMP_CONTAINS("worst |err| 0 m/s at t = 1.000 s", format_metrics(m).c_str());
+}
+
 TEST(RunMetrics, PointsWithoutTruthAreIgnored) {
   const std::vector<TrackPoint> track = {pt(0, 5, kNan), pt(0.01, 1.1, 1.0), pt(0.02, 7, kNan)};
   const RunMetrics m = compute_metrics(track);

@@ -62,7 +62,9 @@ RunMetrics compute_metrics(const std::vector<TrackPoint>& track, const MetricOpt
       ++m.after_count;
       after_abs += std::fabs(err);
       after_signed += err;
-      if (std::fabs(err) > m.worst_after) {
+      // (the first frame after it sets the time too: an estimate without any
+      // error said "worst |err| 0 m/s at t = 0.000 s", inside the excluded second)
+      if (std::fabs(err) > m.worst_after || m.after_count == 1) {
         m.worst_after = static_cast<double>(std::fabs(err));
         m.worst_after_t = t;
       }
