@@ -41,6 +41,18 @@ TEST(RunMetrics, EIsATimeAverageAcrossGaps) {
   DOUBLES_EQUAL(100 * 0.8 / 4.0, m.l1_percent, 1e-9);  // L1 is not time-weighted
 }
 
+// An hour between two frames weighs 10 median intervals, not the hour (was:
+// the frame after the pause weighed 3600 s against 3 s of the rest, and E was
+// that one frame's error: 0.26 % for a run whose other frames err by 1 %).
+TEST(RunMetrics, APauseWeighsAtMostTenFrameIntervals) {
+  std::vector<TrackPoint> track;
+  for (int i = 0; i < 20; ++i) track.push_back(pt(0.01 * i, 1.1, 1.0));
+  track.push_back(pt(3600.2, 1.5, 1.0));
+  const RunMetrics m = compute_metrics(track);
+  // weights: 20 x 10 ms at .1, 100 ms at .5
+  DOUBLES_EQUAL(100 * (0.2 * 0.1 + 0.1 * 0.5) / 0.3, m.e_percent, 1e-9);
+}
+
 TEST(RunMetrics, SlowSamplesAreLeftOutOfEButCounted) {
   const std::vector<TrackPoint> track = {pt(0.00, 1.2, 1.0), pt(0.01, 0.03, 0.01), pt(0.02, 0.8, 1.0),
                                          pt(0.03, -0.049, -0.04)};

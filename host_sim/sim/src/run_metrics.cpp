@@ -21,8 +21,9 @@ std::vector<double> point_weights(const std::vector<TrackPoint>& track) {
   for (size_t i = 1; i < track.size(); ++i) d.push_back(static_cast<double>(track[i].t_ns - track[i - 1].t_ns));
   std::vector<double> sorted = d;
   std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(sorted.size() / 2), sorted.end());
-  w[0] = sorted[sorted.size() / 2] * 1e-9;
-  for (size_t i = 1; i < track.size(); ++i) w[i] = d[i - 1] * 1e-9;
+  const double median = sorted[sorted.size() / 2];
+  w[0] = median * 1e-9;
+  for (size_t i = 1; i < track.size(); ++i) w[i] = std::min(d[i - 1], kMaxWeightIntervals * median) * 1e-9;
   return w;
 }
 

@@ -16,6 +16,11 @@ struct TrackPoint {
   uint16_t status = 0;  // lumavel::StatusFlag bits of the estimate
 };
 
+// E weighs each frame by the time since the previous frame, at most this
+// many median frame intervals: a pause of the recording (an hour between two
+// frames) does not weigh as its length (it made E one frame's error).
+constexpr double kMaxWeightIntervals = 10;
+
 struct MetricOptions {
   double min_speed = 0.05;  // |V| below this is left out of E (relative error blows up)
   double settle_s = 1.0;    // "after the first second": convergence excluded
