@@ -235,7 +235,7 @@ void count_gaps(Recording& rec) {
   }
   for (size_t i = 1; i < rec.imu_samples.size(); ++i) {
     const double dt = static_cast<double>(rec.imu_samples[i].t_ns - rec.imu_samples[i - 1].t_ns) * 1e-9;
-    if (dt > 2.5 * rec.imu_period_s) {
+    if (dt > kGapPeriods * rec.imu_period_s) {
       ++g.gyro_holes;
       g.longest_gyro_hole_s = std::max(g.longest_gyro_hole_s, dt);
     }

@@ -245,7 +245,7 @@ double narrower_half_view(const CameraSensor& a, const CameraSensor& b) {
 
 }  // namespace
 
-double gyro_gap_s(double imu_period_s) { return std::max(EstimatorSettings{}.gyro_gap, 2.5 * imu_period_s); }
+double gyro_gap_s(double imu_period_s) { return std::max(EstimatorSettings{}.gyro_gap, kGapPeriods * imu_period_s); }
 
 double focal_length_mismatch(const Recording& rec) {
   const CameraSensor &a = rec.cam[0], &b = rec.cam[1];
@@ -253,7 +253,7 @@ double focal_length_mismatch(const Recording& rec) {
 }
 
 double max_gap_s(double frame_period_s) {
-  return std::min(config::spec(config::Quantity::kMaxGap).hi, std::max(EstimatorSettings{}.max_gap, 2.5 * frame_period_s));
+  return std::min(config::spec(config::Quantity::kMaxGap).hi, std::max(EstimatorSettings{}.max_gap, kGapPeriods * frame_period_s));
 }
 
 WorkingSize default_working_size(const Recording& rec) {
@@ -321,7 +321,14 @@ EstimatorSettings derive_settings(const Recording& rec, WorkingSize size) {
   // twice the narrower side's reach (was: refused, "a kernel's +-2.5 sigma
   // core falls outside a camera's view", blaming the field of view). A
   // camera whose principal point is near the centre keeps the kernels above.
-  if (kernels_outside_view(s)) s.kernels = default_kernels(2 * narrower_half_view(rec.cam[0], rec.cam[1]));
+  // Only for cameras of one focal length (twin sensors, one read out off
+  // centre) and an optical axis inside both images: cameras whose views
+  // differ, or an axis outside an image (reach <= 0), are refused naming the
+  // camera that cannot hold the kernels and its view.
+  if (kernels_outside_view(s) && focal_length_mismatch(rec) < kFocalMismatchWarn) {
+    const double reach = narrower_half_view(rec.cam[0], rec.cam[1]);
+    if (reach > 0) s.kernels = default_kernels(2 * reach);
+  }
   s.elevation_band = config::elevation_band_for(hfov);
   return s;
 }

@@ -52,8 +52,8 @@ std::string setting_source(const Recording& rec, const std::string& setting) {
                      ": rate_hz (one gyro sample: its period is 1 / rate_hz)"
                : shown_path(rec.root + "/" + layout::kImuDir + "/data.csv") + ": the median interval between samples, " +
                      g(rec.imu_period_s) + " s (the gyro gap is the larger of " + g(EstimatorSettings{}.gyro_gap) +
-                     " s and 2.5 of them: the gyro must sample every " +
-                     g(config::spec(config::Quantity::kGyroGap).hi / 2.5) + " s or faster)";
+                     " s and " + g(kGapPeriods) + " of them: the gyro must sample every " +
+                     g(config::spec(config::Quantity::kGyroGap).hi / kGapPeriods) + " s or faster)";
   if (setting == "kernels")
     return at(cam[0], rec.cam[0].line.intrinsics) + ": the field of view (resolution and intrinsics) sizes the kernels";
   if (setting == "cam[].elevation_scale")  // from the lens model: the intrinsics and the coefficients

@@ -31,6 +31,11 @@ struct GroundTruthSample {
   double ba[3] = {0, 0, 0};    // accelerometer bias
 };
 
+// A gyro hole is an interval longer than this many nominal sample periods
+// (one missed sample bridged); slow gyros and slow frames get gaps of as many
+// periods (rig.hpp's gyro_gap_s and max_gap_s).
+constexpr double kGapPeriods = 2.5;
+
 // Gaps are not errors: they are counted here and reported by the tools.
 struct GapReport {
   int frame_gaps = 0;          // intervals longer than 1.5 frame periods

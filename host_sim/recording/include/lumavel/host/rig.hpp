@@ -54,8 +54,8 @@ std::vector<double> undistorted_column_edges(const CameraSensor& c, int work_wid
 std::vector<double> lens_elevation_scales(const CameraSensor& c, int work_width);
 
 // The gyro gap for a gyro sampled every `imu_period_s`: the settings'
-// default, or 2.5 nominal periods for a slow gyro (as GapReport counts holes),
-// so that a slow gyro does not look like a gyro gap at every frame.
+// default, or kGapPeriods nominal periods for a slow gyro, so that a slow
+// gyro does not look like a gyro gap at every frame.
 double gyro_gap_s(double imu_period_s);
 
 // How far cam1's focal lengths are from cam0's: the larger of |fu1/fu0 - 1|
@@ -68,7 +68,7 @@ double focal_length_mismatch(const Recording& rec);
 constexpr double kFocalMismatchWarn = 0.005;
 
 // The longest frame interval the observer bridges for frames every
-// `frame_period_s`: the settings' default (0.5 s), or 2.5 nominal periods for
+// `frame_period_s`: the settings' default (0.5 s), or kGapPeriods nominal periods for
 // slow frames (one dropped pair bridged, as at the default's 60 Hz), at most
 // the core's 4 s. Was the default always: at 2 Hz a jitter of a microsecond
 // restarted the observer on every frame, and below 2 Hz (a frame period of
