@@ -99,7 +99,9 @@ Study real_rig_study(bool quick) {
            "otherwise); the wide-lens slalom of the lens study with `differing_pair` cameras, a rig that never "
            "turns little enough for the match to learn; and the photo wall under 100 Hz lamp flicker of 15 % "
            "(`flicker_wall.yaml`, 60 Hz frames, exposure 0), with matched cameras and with the two presets that "
-           "have black levels, over which the division by the brightness does not cancel the ripple. Every run as `run` does it by default: the darker camera's frames clamped "
+           "have black levels, over which the division by the brightness does not cancel the ripple; and the photo "
+           "wall with cam1 misaligned by 1.6 deg (`misaligned_wall.yaml`, the misalignment in T_BS), more than the "
+           "wall's stereo disparity. Every run as `run` does it by default: the darker camera's frames clamped "
            "where the brighter one clips (docs/design.md, \"Clip match\"), the photometric match learning the rest.",
            "E", {}};
   const double len = quick ? 4 : -1;
@@ -128,6 +130,10 @@ Study real_rig_study(bool quick) {
                       "photo wall, tone curves differ (`tone_pair`)", -1, "tone_pair"});
   st.cases.push_back({"lens_slalom_differing", "wide_lens_slalom.yaml", -1, -1, -1, len, {{40, 30}},
                       "wide-lens slalom (hfov 90, +-1 rad/s), `differing_pair`", -1, "differing_pair"});
+  // A misalignment of the wall's own disparity (a row of the unusual
+  // recordings: the columns' elevation reach differs between the cameras).
+  st.cases.push_back({"wall_misaligned", "misaligned_wall.yaml", -1, -1, -1, len, {{40, 30}},
+                      "photo wall, cam1 misaligned 1.6 deg (in sensor.yaml)", -1, ""});
   // Lamp flicker over the cameras' black levels (the division by N cancels a
   // common gain only): twins, then the two presets with black levels.
   for (const char* preset : {"", "differing_pair", "cheap_pair"}) {
