@@ -93,11 +93,16 @@ TEST(HostLinks, TruncatedReportFileNamesRecordAndOffset) {
   std::remove(path.c_str());
 }
 
-TEST(HostLinks, NotAReportFile) {
-  const std::string path = temp_path("junk");
+// A CSV where a report file was expected.
+static void write_csv_instead(const std::string& path) {
   std::FILE* f = std::fopen(path.c_str(), "wb");
   std::fputs("timestamp_ns,v\n", f);
   std::fclose(f);
+}
+
+TEST(HostLinks, NotAReportFile) {
+  const std::string path = temp_path("junk");
+  write_csv_instead(path);
   try {
     host::ReportFileReader in(path);
     FAIL("accepted");
@@ -113,9 +118,7 @@ TEST(HostLinks, NotAReportFile) {
 TEST(HostLinks, AReportFilesNameIsShownLikeAField) {
   const std::string path = temp_path("r\x1b[2J.hidrep");
   const std::string shown = temp_path("r\\x1B[2J.hidrep");
-  std::FILE* f = std::fopen(path.c_str(), "wb");
-  std::fputs("timestamp_ns,v\n", f);
-  std::fclose(f);
+  write_csv_instead(path);
   try {
     host::ReportFileReader in(path);
     FAIL("accepted");
@@ -127,7 +130,7 @@ TEST(HostLinks, AReportFilesNameIsShownLikeAField) {
     const uint8_t a[3] = {1, 2, 3};
     w.write(a, 3);
   }
-  f = std::fopen(path.c_str(), "ab");
+  std::FILE* f = std::fopen(path.c_str(), "ab");
   std::fputc(0, f);  // a zero-length record
   std::fclose(f);
   host::ReportFileReader in(path);

@@ -32,6 +32,22 @@ std::vector<uint8_t> frame(double shift, bool mirrored = false, bool upside_down
   return px;
 }
 
+// Writes frame i of camera c of the fixture recording: `row` (kW values)
+// repeated down the image, or a plain grey image when row is empty.
+void write_frame(const std::string& rec, const fixture::Options& o, int c, int i, const std::vector<uint8_t>& row) {
+  std::vector<uint8_t> px(static_cast<size_t>(o.width * o.height), 128);
+  if (!row.empty())
+    for (int v = 0; v < o.height; ++v)
+      for (int u = 0; u < o.width; ++u) px[static_cast<size_t>(v * o.width + u)] = row[static_cast<size_t>(u)];
+  write_png_gray(rec + "/mav0/cam" + std::to_string(c) + "/data/" + std::to_string(fixture::frame_time(o, i)) + ".png",
+                 px.data(), o.width, o.height);
+}
+
+// `lumavel-sim run REC -q`, standard error to `err`.
+std::string quiet_run(const std::string& rec, const std::string& err) {
+  return "'" LUMAVEL_SIM_EXE "' run '" + rec + "' -q -o /dev/null --plot /dev/null 2>'" + err + "'";
+}
+
 }  // namespace
 
 TEST_GROUP(MotionDirection){};
@@ -112,18 +128,10 @@ TEST(MotionDirection, RunWarnsOfAMirroredCamera) {
   const std::string rec = fixture::write_recording(dir.path() + "/rec", o);
   auto rewrite = [&](bool mirrored) {
     for (int i = 0; i < o.frames; ++i)
-      for (int c = 0; c < 2; ++c) {
-        std::vector<uint8_t> px(static_cast<size_t>(o.width * o.height));
-        const std::vector<uint8_t> row = frame(2.0 * i + 1.5 * c, c == 1 && mirrored);
-        for (int v = 0; v < o.height; ++v)
-          for (int u = 0; u < o.width; ++u) px[static_cast<size_t>(v * o.width + u)] = row[static_cast<size_t>(u)];
-        write_png_gray(rec + "/mav0/cam" + std::to_string(c) + "/data/" + std::to_string(fixture::frame_time(o, i)) +
-                           ".png",
-                       px.data(), o.width, o.height);
-      }
+      for (int c = 0; c < 2; ++c) write_frame(rec, o, c, i, frame(2.0 * i + 1.5 * c, c == 1 && mirrored));
   };
   const std::string err = dir.path() + "/stderr.txt";
-  const std::string run = "'" LUMAVEL_SIM_EXE "' run '" + rec + "' -q -o /dev/null --plot /dev/null 2>'" + err + "'";
+  const std::string run = quiet_run(rec, err);
   rewrite(false);
   LONGS_EQUAL(0, std::system(run.c_str()));
   STRCMP_EQUAL("", fixture::read_text(err).c_str());
@@ -145,19 +153,9 @@ TEST(MotionDirection, RunWarnsOfACameraThatStandsStill) {
   o.frames = 40;
   const std::string rec = fixture::write_recording(dir.path() + "/rec", o);
   for (int i = 0; i < o.frames; ++i)
-    for (int c = 0; c < 2; ++c) {
-      std::vector<uint8_t> px(static_cast<size_t>(o.width * o.height), 128);
-      const std::vector<uint8_t> row = frame(2.0 * i);
-      if (c == 0)
-        for (int v = 0; v < o.height; ++v)
-          for (int u = 0; u < o.width; ++u) px[static_cast<size_t>(v * o.width + u)] = row[static_cast<size_t>(u)];
-      write_png_gray(rec + "/mav0/cam" + std::to_string(c) + "/data/" + std::to_string(fixture::frame_time(o, i)) +
-                         ".png",
-                     px.data(), o.width, o.height);
-    }
+    for (int c = 0; c < 2; ++c) write_frame(rec, o, c, i, c == 0 ? frame(2.0 * i) : std::vector<uint8_t>{});
   const std::string err = dir.path() + "/stderr.txt";
-  const std::string run = "'" LUMAVEL_SIM_EXE "' run '" + rec + "' -q -o /dev/null --plot /dev/null 2>'" + err + "'";
-  LONGS_EQUAL(0, std::system(run.c_str()));
+  LONGS_EQUAL(0, std::system(quiet_run(rec, err).c_str()));
   STRCMP_EQUAL(("run: warning: cam1's images did not move on 39 of the 39 frames where either camera's moved a "
                 "working column or more, while cam0's did: the two cameras look the same way (T_BS), so the rig's "
                 "motion moves both images. cam1 sees nothing that moves (its lens covered or blocked by something "
