@@ -253,7 +253,8 @@ double focal_length_mismatch(const Recording& rec) {
 }
 
 double max_gap_s(double frame_period_s) {
-  return std::min(config::spec(config::Quantity::kMaxGap).hi, std::max(EstimatorSettings{}.max_gap, kGapPeriods * frame_period_s));
+  return std::min(config::spec(config::Quantity::kMaxGap).hi,
+                  std::max(EstimatorSettings{}.max_gap, kGapPeriods * frame_period_s));
 }
 
 WorkingSize default_working_size(const Recording& rec) {
