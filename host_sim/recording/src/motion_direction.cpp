@@ -76,12 +76,10 @@ bool MotionDirectionCheck::mirrored() const {
 }
 
 int MotionDirectionCheck::still_camera() const {
-  for (int c = 0; c < 2; ++c) {
-    const size_t counted = same_ + opposite_ + alone_[0] + alone_[1];
+  for (int c = 0; c < 2; ++c)
     if (alone_[1 - c] >= kMotionMinOppositeFrames &&
-        static_cast<double>(alone_[1 - c]) >= kMotionOppositeShare * static_cast<double>(counted))
+        static_cast<double>(alone_[1 - c]) >= kMotionOppositeShare * static_cast<double>(moved()))
       return c;
-  }
   return -1;
 }
 
@@ -91,7 +89,7 @@ std::string still_camera_text(int still, size_t alone, size_t counted, const std
          " frames where either camera's moved a working column or more, while " + m +
          "'s did: the two cameras look the same way (T_BS), so the rig's motion moves both images. " + s +
          " sees nothing that moves (its lens covered or blocked by something plain) or delivers the same frame "
-         "again and again (" + root + "/" + s + "/); V is not observable from one camera";
+         "again and again (" + shown_path(root) + "/" + s + "/); V is not observable from one camera";
 }
 
 std::string opposite_motion_text(size_t opposite, size_t counted, const std::string& root) {

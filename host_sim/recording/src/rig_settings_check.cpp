@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "lumavel/host/csv_table.hpp"
 #include "lumavel/host/path_check.hpp"
 #include "lumavel/host/recording_error.hpp"
 #include "lumavel/host/recording_layout.hpp"
@@ -15,10 +16,10 @@
 namespace lumavel::host {
 namespace {
 
-std::string g(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%g", v);
-  return b;
+// "FILE:LINE" of a key, or "FILE" when the recording was not read from files
+// (through shown_path, as recording_error_at shows a file).
+std::string file_at(const std::string& file, long line) {
+  return line > 0 ? shown_path(file) + ":" + std::to_string(line) : shown_path(file);
 }
 
 }  // namespace
@@ -26,43 +27,39 @@ std::string g(double v) {
 std::string setting_source(const Recording& rec, const std::string& setting) {
   const std::string cam[2] = {rec.root + "/" + layout::kCamDir[0] + "/sensor.yaml",
                               rec.root + "/" + layout::kCamDir[1] + "/sensor.yaml"};
-  // "FILE:LINE" of a key, or "FILE" when the recording was not read from files.
-  // (through shown_path, as recording_error_at shows a file)
-  auto at = [](const std::string& file, long line) {
-    return line > 0 ? shown_path(file) + ":" + std::to_string(line) : shown_path(file);
-  };
   for (int i = 0; i < 2; ++i) {
     const std::string c = "cam[" + std::to_string(i) + "].";
     if (setting == c + "fu" || setting == c + "cu")
-      return at(cam[i], rec.cam[i].line.intrinsics) + ": intrinsics (at the working resolution)";
-    if (setting == c + "axis_yaw") return at(cam[i], rec.cam[i].line.T_BS) + ": T_BS";
+      return file_at(cam[i], rec.cam[i].line.intrinsics) + ": intrinsics (at the working resolution)";
+    if (setting == c + "axis_yaw") return file_at(cam[i], rec.cam[i].line.T_BS) + ": T_BS";
   }
   if (setting == "baseline")
-    return at(cam[0], rec.cam[0].line.T_BS) + " and " + at(std::string(layout::kCamDir[1]) + "/sensor.yaml",
+    return file_at(cam[0], rec.cam[0].line.T_BS) + " and " + file_at(std::string(layout::kCamDir[1]) + "/sensor.yaml",
                                                            rec.cam[1].line.T_BS) +
            ": T_BS (the baseline is cam1's x minus cam0's)";
   // With one frame or one gyro sample the period is 1 / rate_hz (load_recording).
   if (setting == "frame_period")
     return rec.frames.size() < 2
-               ? at(cam[0], rec.cam[0].line.rate_hz) + ": rate_hz (one frame: the frame period is 1 / rate_hz)"
+               ? file_at(cam[0], rec.cam[0].line.rate_hz) + ": rate_hz (one frame: the frame period is 1 / rate_hz)"
                : shown_path(rec.root + "/" + layout::kCamDir[0] + "/data.csv") + ": the median interval between frames";
   if (setting == "gyro_gap")
     return rec.imu_samples.size() < 2
-               ? at(rec.root + "/" + layout::kImuDir + "/sensor.yaml", rec.imu.line.rate_hz) +
+               ? file_at(rec.root + "/" + layout::kImuDir + "/sensor.yaml", rec.imu.line.rate_hz) +
                      ": rate_hz (one gyro sample: its period is 1 / rate_hz)"
                : shown_path(rec.root + "/" + layout::kImuDir + "/data.csv") + ": the median interval between samples, " +
-                     g(rec.imu_period_s) + " s (the gyro gap is the larger of " + g(EstimatorSettings{}.gyro_gap) +
-                     " s and " + g(kGapPeriods) + " of them: the gyro must sample every " +
-                     g(config::spec(config::Quantity::kGyroGap).hi / kGapPeriods) + " s or faster)";
+                     format_double(rec.imu_period_s) + " s (the gyro gap is the larger of " +
+                     format_double(EstimatorSettings{}.gyro_gap) + " s and " + format_double(kGapPeriods) +
+                     " of them: the gyro must sample every " +
+                     format_double(config::spec(config::Quantity::kGyroGap).hi / kGapPeriods) + " s or faster)";
   if (setting == "kernels")
-    return at(cam[0], rec.cam[0].line.intrinsics) + ": the field of view (resolution and intrinsics) sizes the kernels";
+    return file_at(cam[0], rec.cam[0].line.intrinsics) + ": the field of view (resolution and intrinsics) sizes the kernels";
   if (setting == "cam[].elevation_scale")  // from the lens model: the intrinsics and the coefficients
-    return at(cam[0], rec.cam[0].line.intrinsics) + " or " +
-           at(std::string(layout::kCamDir[1]) + "/sensor.yaml", rec.cam[1].line.intrinsics) +
+    return file_at(cam[0], rec.cam[0].line.intrinsics) + " or " +
+           file_at(std::string(layout::kCamDir[1]) + "/sensor.yaml", rec.cam[1].line.intrinsics) +
            ": intrinsics with distortion_coefficients (the lens model)";
   if (setting == "cam[].edges")
-    return at(cam[0], rec.cam[0].line.distortion) + " or " +
-           at(std::string(layout::kCamDir[1]) + "/sensor.yaml", rec.cam[1].line.distortion) +
+    return file_at(cam[0], rec.cam[0].line.distortion) + " or " +
+           file_at(std::string(layout::kCamDir[1]) + "/sensor.yaml", rec.cam[1].line.distortion) +
            ": distortion_coefficients";
   if (setting == "width" || setting == "height") return "the working size (--width/--height)";
   return shown_path(rec.root) + ": the estimator configuration derived from it";
@@ -76,14 +73,11 @@ namespace {
 // hold them (its field of view and principal point) is, with its view said.
 std::string kernels_source(const Recording& rec, const EstimatorSettings& s) {
   auto file = [&](int i) { return rec.root + "/" + layout::kCamDir[i] + "/sensor.yaml"; };
-  auto at = [](const std::string& f, long line) {
-    return line > 0 ? shown_path(f) + ":" + std::to_string(line) : shown_path(f);
-  };
   const double apart = std::remainder(s.cam[1].axis_yaw - s.cam[0].axis_yaw, 2 * M_PI) * 180 / M_PI;
   if (std::fabs(apart) > 10) {
     char deg[32];
     std::snprintf(deg, sizeof deg, "%.1f", std::fabs(apart));
-    return at(file(0), rec.cam[0].line.T_BS) + " and " + at(file(1), rec.cam[1].line.T_BS) +
+    return file_at(file(0), rec.cam[0].line.T_BS) + " and " + file_at(file(1), rec.cam[1].line.T_BS) +
            ": T_BS: the two cameras' optical axes are " + deg +
            " degrees apart in yaw; they must look the same way (a misalignment of a few degrees at most), and the "
            "kernels, centred between them, fall outside a view";
@@ -126,9 +120,9 @@ std::string kernels_source(const Recording& rec, const EstimatorSettings& s) {
   const int i = !holds0 ? (holds1 ? 0 : -1) : !holds1 ? 1 : s.cam[1].fu > s.cam[0].fu ? 1 : 0;
   const std::string rule = "the kernels are centred on the optical axis and sized by cam0's view";
   if (i < 0)
-    return at(file(0), rec.cam[0].line.intrinsics) + " and " + at(file(1), rec.cam[1].line.intrinsics) +
+    return file_at(file(0), rec.cam[0].line.intrinsics) + " and " + file_at(file(1), rec.cam[1].line.intrinsics) +
            ": intrinsics: " + view(0) + "; " + view(1) + "; " + rule;
-  return at(file(i), rec.cam[i].line.intrinsics) + ": intrinsics: " + view(i) + "; " + rule +
+  return file_at(file(i), rec.cam[i].line.intrinsics) + ": intrinsics: " + view(i) + "; " + rule +
          (i == 1 ? ": " + view(0) : std::string()) +
          (holds0 && holds1 ? " (the two cameras must see about the same view)" : "");
 }

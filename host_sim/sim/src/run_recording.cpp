@@ -198,7 +198,7 @@ RunResult run_recording(const Recording& rec, const EstimatorSettings& settings,
   result.mirrored = motion.mirrored();
   result.still_camera = motion.still_camera();
   if (result.still_camera >= 0) result.motion_alone = motion.alone(1 - result.still_camera);
-  result.motion_counted = motion.same() + motion.opposite() + motion.alone(0) + motion.alone(1);
+  result.motion_counted = motion.moved();
   if (result.has_truth) {
     std::vector<uint64_t> t;
     t.reserve(result.track.size());

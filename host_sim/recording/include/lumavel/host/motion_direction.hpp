@@ -40,6 +40,8 @@ class MotionDirectionCheck {
   // Frames where camera c's image moved a working column or more and the
   // other camera's did not move at all (a flat view, or a frozen image).
   size_t alone(int c) const { return alone_[c]; }
+  // Frames where either camera's image moved a working column or more.
+  size_t moved() const { return same_ + opposite_ + alone_[0] + alone_[1]; }
   // The camera whose image stood still while the other's moved, on
   // kMotionMinOppositeFrames or more and on kMotionOppositeShare of the
   // frames where either moved: its lens is covered or blocked by something
