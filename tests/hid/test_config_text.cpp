@@ -112,9 +112,10 @@ TEST(ConfigText, MissingFileIsNamed) {
 
 namespace {
 
-// The refusal of check_settings_offline for `text` read as rig.cfg, or "".
-std::string offline_refusal(const std::string& text) {
-  const std::string path = "/tmp/lumavel_config_text_" + std::to_string(::getpid()) + ".cfg";
+// The refusal of check_settings_offline for `text` written to the file
+// /tmp/lumavel_config_text_PID`suffix`, or "".
+std::string offline_refusal_of_file(const std::string& suffix, const std::string& text) {
+  const std::string path = "/tmp/lumavel_config_text_" + std::to_string(::getpid()) + suffix;
   { std::ofstream(path, std::ios::binary) << text; }
   std::string why;
   try {
@@ -125,6 +126,12 @@ std::string offline_refusal(const std::string& text) {
     why = e.what();
   }
   std::remove(path.c_str());
+  return why;
+}
+
+// The refusal of check_settings_offline for `text` read as rig.cfg, or "".
+std::string offline_refusal(const std::string& text) {
+  const std::string why = offline_refusal_of_file(".cfg", text);
   const size_t at = why.find(".cfg:");
   return at == std::string::npos ? why : "rig" + why.substr(at);
 }
@@ -350,17 +357,7 @@ TEST(ConfigText, TheFilesNameIsShownLikeAValue) {
                  return std::string();
                }()
                    .c_str());
-  const std::string path = "/tmp/lumavel_config_text_" + std::to_string(::getpid()) + "\x1b[2J.cfg";
-  { std::ofstream(path, std::ios::binary) << "height=30\nwidth=0\n"; }
-  std::string why;
-  try {
-    host::GivenSettings g;
-    g.add_file(path);
-    host::check_settings_offline(g);
-  } catch (const std::runtime_error& e) {
-    why = e.what();
-  }
-  std::remove(path.c_str());
+  const std::string why = offline_refusal_of_file("\x1b[2J.cfg", "height=30\nwidth=0\n");
   STRCMP_EQUAL(("/tmp/lumavel_config_text_" + std::to_string(::getpid()) +
                 "\\x1B[2J.cfg:2: width = 0: width must be 16..160 columns")
                    .c_str(),
