@@ -52,9 +52,18 @@ int64_t gate_ns(int64_t tau_ns, int64_t frame_ns) {
 }
 
 // A hint fast enough to guide the acquisition, in the direction in which
-// this camera trails (cam0 trails when the body moves +x).
-bool guiding(int64_t v_hint, int trail) {
-  return abs64(v_hint) > kAcquireMinSpeedQ16 && (trail == 0) == (v_hint > 0);
+// this camera trails: cam0 trails when the body moves along +h (h = x1 - x0:
+// +x when cam1 is ahead, -x when cam0 is).
+bool guiding(int64_t v_hint, int trail, LengthQ24 h) {
+  return abs64(v_hint) > kAcquireMinSpeedQ16 && (trail == 0) == ((v_hint > 0) == (h > 0));
+}
+
+// Both hints fast and the other way: a track of this trail camera is not
+// the rig's motion. After a reversal the rig retraces its path, and each
+// camera finds the other's views from before it at a tau that grows by two
+// frames a frame; kept, such a track blocks the new direction's acquisition.
+bool denied(const TofTrackInput& in, int trail) {
+  return guiding(in.v_fused, 1 - trail, in.baseline) && guiding(in.v_direct, 1 - trail, in.baseline);
 }
 
 // direction * h / tau in SpeedQ16 (h Q24 m, tau ns).
@@ -253,7 +262,7 @@ TofResult TimeOfFlight::track(const TofTrackInput& in) {
     Candidate c{};
     const int trail = track_ns_ > 0 ? 0 : 1;
     const int64_t want = abs64(track_ns_), g = gate_ns(want, frame_ns);
-    if (search(in, trail, want, want - g, want + g, c) && abs64(abs64(c.stau_ns) - want) < g) {
+    if (!denied(in, trail) && search(in, trail, want, want - g, want + g, c) && abs64(abs64(c.stau_ns) - want) < g) {
       pick = c;
       have = true;
       if (track_frames_ < 255) ++track_frames_;
@@ -282,7 +291,7 @@ TofResult TimeOfFlight::track(const TofTrackInput& in) {
       for (int trail = 0; trail < 2; ++trail) {
         int64_t min_ns = g ? kTofMaxTauNs : 0, max_ns = g ? 0 : kTofMaxTauNs;
         for (int64_t h : hints) {
-          if (!g || !guiding(h, trail)) continue;
+          if (!g || !guiding(h, trail, in.baseline)) continue;
           const int64_t fast = ((kOneQ16 + kAgreementQ16) * abs64(h)) >> 16, slow = ((kOneQ16 - kAgreementQ16) * abs64(h)) >> 16;
           min_ns = std::min<int64_t>(min_ns, int64_t{fx::div_q(num, fast * 256, 0)} - frame_ns);
           max_ns = std::max<int64_t>(max_ns, slow > 0 ? int64_t{fx::div_q(num, slow * 256, 0)} + frame_ns : kTofMaxTauNs);
@@ -294,7 +303,7 @@ TofResult TimeOfFlight::track(const TofTrackInput& in) {
         const SpeedQ16 v = speed_of(in.baseline, c.stau_ns > 0 ? 1 : -1, abs64(c.stau_ns));
         bool agrees = !g;
         for (int64_t h : hints)
-          agrees = agrees || (guiding(h, trail) && abs64(int64_t{v} - h) <= ((kAgreementQ16 * abs64(h)) >> 16));
+          agrees = agrees || (guiding(h, trail, in.baseline) && abs64(int64_t{v} - h) <= ((kAgreementQ16 * abs64(h)) >> 16));
         if (!agrees) continue;
         if (!any || c.res < best.res) {
           best = c;

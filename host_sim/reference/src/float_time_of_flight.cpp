@@ -17,7 +17,9 @@ double gate_ns(double tau_ns, double frame_ns) {
 }
 
 // (the core's guiding)
-bool guiding(double v_hint, int trail) { return std::fabs(v_hint) > kTofAcquireMinSpeed && (trail == 0) == (v_hint > 0); }
+bool guiding(double v_hint, int trail, double h) {
+  return std::fabs(v_hint) > kTofAcquireMinSpeed && (trail == 0) == ((v_hint > 0) == (h > 0));
+}
 
 }  // namespace
 
@@ -136,7 +138,9 @@ FloatTofResult FloatTimeOfFlight::track(double baseline, double max_rotation, do
     Candidate c;
     const int trail = track_ns_ > 0 ? 0 : 1;
     const double want = std::fabs(track_ns_), g = gate_ns(want, frame_ns);
-    if (search(trail, max_rotation, want, want - g, want + g, c) && std::fabs(std::fabs(c.stau_ns) - want) < g) {
+    // (The core's denied(): both hints fast and the other way.)
+    const bool denied = guiding(v_fused, 1 - trail, baseline) && guiding(v_direct, 1 - trail, baseline);
+    if (!denied && search(trail, max_rotation, want, want - g, want + g, c) && std::fabs(std::fabs(c.stau_ns) - want) < g) {
       pick = c;
       have = true;
       if (track_frames_ < 255) ++track_frames_;
@@ -159,7 +163,7 @@ FloatTofResult FloatTimeOfFlight::track(double baseline, double max_rotation, do
       for (int trail = 0; trail < 2; ++trail) {
         double min_ns = g ? kTofMaxTau * 1e9 : 0, max_ns = g ? 0 : kTofMaxTau * 1e9;
         for (double h : hints) {
-          if (!g || !guiding(h, trail)) continue;
+          if (!g || !guiding(h, trail, baseline)) continue;
           min_ns = std::min(min_ns, num / ((1 + kTofAcquireAgreement) * std::fabs(h)) - frame_ns);
           max_ns = std::max(max_ns, num / ((1 - kTofAcquireAgreement) * std::fabs(h)) + frame_ns);
         }
@@ -169,7 +173,7 @@ FloatTofResult FloatTimeOfFlight::track(double baseline, double max_rotation, do
         if (!search(trail, max_rotation, 0, min_ns, max_ns, c)) continue;
         const double v = (c.stau_ns > 0 ? baseline : -baseline) * 1e9 / std::fabs(c.stau_ns);
         bool agrees = !g;
-        for (double h : hints) agrees = agrees || (guiding(h, trail) && std::fabs(v - h) <= kTofAcquireAgreement * std::fabs(h));
+        for (double h : hints) agrees = agrees || (guiding(h, trail, baseline) && std::fabs(v - h) <= kTofAcquireAgreement * std::fabs(h));
         if (!agrees) continue;
         if (!any || c.res < best.res) {
           best = c;
