@@ -258,11 +258,13 @@ TofResult TimeOfFlight::track(const TofTrackInput& in) {
   const int64_t frame_ns = static_cast<int64_t>(at(0).t_ns - at(1).t_ns);
   Candidate pick{};
   bool have = false;
+  // A denied track is dropped, not held (a held track's value still joins the fusion).
+  if (misses_ < kTofTrackMisses && denied(in, track_ns_ > 0 ? 0 : 1)) misses_ = 255;
   if (misses_ < kTofTrackMisses) {
     Candidate c{};
     const int trail = track_ns_ > 0 ? 0 : 1;
     const int64_t want = abs64(track_ns_), g = gate_ns(want, frame_ns);
-    if (!denied(in, trail) && search(in, trail, want, want - g, want + g, c) && abs64(abs64(c.stau_ns) - want) < g) {
+    if (search(in, trail, want, want - g, want + g, c) && abs64(abs64(c.stau_ns) - want) < g) {
       pick = c;
       have = true;
       if (track_frames_ < 255) ++track_frames_;
