@@ -369,6 +369,77 @@ TEST(TimeOfFlight, AnAcquisitionBridgesFramesWithoutACandidate) {
   CHECK_EQUAL(-1, broken);
 }
 
+namespace {
+
+// Kernel outputs of the scene of incommensurate waves along a path: cam0 at
+// x(t), cam1 at x(t) + h (h < 0: cam0 ahead along +x), both hints at the true
+// v(t), 60 Hz. Each engine's signed h / tau (the body's V along x) per frame,
+// 0 where it has none.
+struct PathFrame {
+  double t, x, v, got[2];
+};
+std::vector<PathFrame> run_path(double h, double secs, const std::function<double(double)>& x,
+                                const std::function<double(double)>& v) {
+  const double wavelength[4] = {0.3, 0.4, 0.55, 0.7};
+  KernelTof tof;
+  std::vector<PathFrame> out;
+  for (int i = 0; i < secs * kRate; ++i) {
+    const double t = i / kRate, x0 = x(t);
+    const auto got = tof.step(t, 0, h, 0.01, v(t), [&](int c, int k, double* f, double* r) {
+      *f = 0.05 * std::sin(2 * M_PI * (x0 + c * h) / wavelength[k] + k);
+      *r = 0;
+    });
+    out.push_back({t, x0, v(t), {got[0], got[1]}});
+  }
+  return out;
+}
+
+}  // namespace
+
+// A start from standstill (3 m/s^2 to 0.7 m/s, the stream beginning with it)
+// with both hints right, cam1 ahead (h = +8 cm) and cam0 ahead (h = -8 cm):
+// the trail camera can pass where the lead was from sqrt(2 |h| / a) = 0.23 s,
+// and the guided acquisition (kTofAcquireFrames) takes the track up a few
+// frames later in either mounting, h / tau the window's mean speed. With cam0
+// ahead the hint used to guide the leading camera (cam0 taken to trail
+// whenever the body moved +x): no candidate, and a track only unguided once
+// kTofLostTime had passed.
+TEST(TimeOfFlight, ARigWithCam0AheadIsAcquiredGuided) {
+  const double a = 3.0, vmax = 0.7, t1 = vmax / a, x1 = a * t1 * t1 / 2;
+  auto x = [&](double t) { return t < t1 ? a * t * t / 2 : x1 + vmax * (t - t1); };
+  auto v = [&](double t) { return std::min(a * t, vmax); };
+  auto x_inv = [&](double p) { return p < x1 ? std::sqrt(2 * p / a) : t1 + (p - x1) / vmax; };
+  for (const double h : {0.08, -0.08}) {
+    const double reachable = std::sqrt(2 * std::fabs(h) / a);
+    const auto run = run_path(h, 1.0, x, v);
+    double first[2] = {-1, -1}, worst[2] = {0, 0};
+    int after[2] = {0, 0}, with[2] = {0, 0};
+    for (int e = 0; e < 2; ++e) {
+      for (const PathFrame& f : run) {
+        if (first[e] < 0 && f.got[e] != 0) first[e] = f.t;
+        if (first[e] < 0) continue;
+        ++after[e];
+        if (f.got[e] == 0) continue;
+        ++with[e];
+        // The window's true mean speed: |h| over the time since x(t) - |h|.
+        const double mean = std::fabs(h) / (f.t - x_inv(f.x - std::fabs(h)));
+        worst[e] = std::max(worst[e], std::fabs(f.got[e] / mean - 1));
+      }
+      std::printf("\n  a start at %.0f m/s^2, h %+.2f m, %s: a track from %.3f s (reachable from %.3f s), then on %d "
+                  "of %d frames, worst |h/tau / mean V - 1| %.4f",
+                  a, h, e == 0 ? "fixed" : "float", first[e], reachable, with[e], after[e], worst[e]);
+    }
+    // Measured 0.283 s either way (3 frames after reachable); cam0 ahead
+    // before the fix: 0.600 s (kTofLostTime, then kTofLostAcquireFrames).
+    for (int e = 0; e < 2; ++e) {
+      CHECK(first[e] > reachable);
+      CHECK(first[e] < reachable + 0.1);
+      CHECK(with[e] > 0.95 * after[e]);
+      CHECK(worst[e] < 0.02);
+    }
+  }
+}
+
 // Every fifth frame lost: the history keeps the true timestamps, the time of
 // flight stays right.
 TEST(TimeOfFlight, DroppedFramesKeepTheTimeOfFlight) {
