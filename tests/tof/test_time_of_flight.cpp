@@ -440,6 +440,64 @@ TEST(TimeOfFlight, ARigWithCam0AheadIsAcquiredGuided) {
   }
 }
 
+// Out at 0.7 m/s, a smooth reversal (0.4 s), back at 0.7 m/s over the same
+// path. After the turn each camera retraces the other's views from before
+// it: the old trail finds the old lead where it stood on the way out, at a
+// tau that grows by two frames a frame, a match the old track continued
+// (pointing the old way, against both hints) and that blocked the new
+// direction's acquisition. The new trail can pass where the new lead stood at
+// the turn once it has travelled h back; its track is taken up soon after,
+// and no time of flight points the old way once both hints point the new way
+// faster than kTofAcquireMinSpeed. Both mountings, both engines.
+TEST(TimeOfFlight, AReversalOnARetracedPathDropsTheOldTrack) {
+  const double vmax = 0.7, t0 = 1.0, turn = 0.4, t_rev = t0 + turn / 2;
+  auto v = [&](double t) { return t < t0 ? vmax : (t < t0 + turn ? vmax * std::cos(M_PI * (t - t0) / turn) : -vmax); };
+  auto x = [&](double t) {
+    if (t < t0) return vmax * t;
+    if (t < t0 + turn) return vmax * t0 + vmax * turn / M_PI * std::sin(M_PI * (t - t0) / turn);
+    return vmax * t0 - vmax * (t - t0 - turn);
+  };
+  const double x_max = x(t_rev);
+  for (const double h : {0.08, -0.08}) {
+    const auto run = run_path(h, 2.2, x, v);
+    // The first frame at which the new trail has come back h from the turn.
+    double reachable = -1;
+    for (const PathFrame& f : run)
+      if (reachable < 0 && f.t > t_rev && f.x <= x_max - std::fabs(h)) reachable = f.t;
+    double first[2] = {-1, -1}, worst[2] = {0, 0};
+    int old_way[2] = {0, 0}, after[2] = {0, 0}, with[2] = {0, 0};
+    for (int e = 0; e < 2; ++e) {
+      for (const PathFrame& f : run) {
+        if (f.t <= t_rev) continue;
+        if (f.got[e] > 0 && f.v < -params::kTofAcquireMinSpeed) ++old_way[e];
+        if (first[e] < 0 && f.got[e] < 0) first[e] = f.t;
+        if (f.t > t0 + turn + 0.2) {  // the window on the way back alone, at -vmax
+          ++after[e];
+          if (f.got[e] < 0) {
+            ++with[e];
+            worst[e] = std::max(worst[e], std::fabs(f.got[e] / -vmax - 1));
+          }
+        }
+      }
+      std::printf("\n  a reversal on a retraced path, h %+.2f m, %s: the new direction's track from %.3f s "
+                  "(reachable from %.3f s), then on %d of %d frames (worst |h/tau / V - 1| %.4f); %d frames with a "
+                  "time of flight the old way",
+                  h, e == 0 ? "fixed" : "float", first[e], reachable, with[e], after[e], worst[e], old_way[e]);
+    }
+    // Measured: the new track from 1.433 s (2 frames after reachable, 1.400
+    // s), none the old way. Before the fix (h = +8 cm): from 1.717 s, the old
+    // way on 27 frames (with h = -8 cm never, the guidance's sign besides).
+    CHECK(reachable > 0);
+    for (int e = 0; e < 2; ++e) {
+      LONGS_EQUAL(0, old_way[e]);
+      CHECK(first[e] >= reachable);
+      CHECK(first[e] < reachable + 0.1);
+      CHECK(with[e] > 0.95 * after[e]);
+      CHECK(worst[e] < 0.02);
+    }
+  }
+}
+
 // Every fifth frame lost: the history keeps the true timestamps, the time of
 // flight stays right.
 TEST(TimeOfFlight, DroppedFramesKeepTheTimeOfFlight) {
