@@ -12,6 +12,8 @@ namespace {
 using namespace params;
 
 constexpr int64_t kResidualMinSpeedQ16 = fx::q_of(kFusionResidualMinSpeed, fx::kSpeedFrac);
+constexpr int64_t kResidualFullSpeedQ16 = fx::q_of(kFusionResidualFullSpeed, fx::kSpeedFrac);
+static_assert(kResidualMinSpeedQ16 < kResidualFullSpeedQ16, "the residual's ramp needs a width");
 constexpr int64_t kResidualGainQ16 = fx::q_of(kFusionResidualGain, 16);
 constexpr int64_t kDiffFloorQ16 = fx::q_of(kFusionDiffFloor, 16);
 constexpr int64_t kDiffPerResidualQ16 = fx::q_of(kFusionDiffPerResidual, 16);
@@ -70,8 +72,17 @@ FusionOutput VelocityFusion::update(const FusionInput& in) {
   const int64_t tau_us = use_tof ? static_cast<int64_t>(static_cast<uint32_t>(tof.tau_ns) / 1000u) : 0;
   // The time the observer has measured without a hold, capped beyond any window.
   measured_us_ = in.direct ? std::min<int64_t>(measured_us_ + dt_us, kInt31) : 0;
-  if (in.direct && abs64(in.v_direct) > kResidualMinSpeedQ16)
-    residual_ = static_cast<FracQ16>(residual_ + fx::shr_round(kResidualGainQ16 * (int64_t{in.residual} - residual_), 16));
+  // Its gain ramps up from kFusionResidualMinSpeed to kFusionResidualFullSpeed:
+  // with a step there, two engines a hair either side of it tracked
+  // different residuals, smoothed the output differently and parted by 3 mm/s.
+  const int64_t direct_speed = abs64(in.v_direct);
+  if (in.direct && direct_speed > kResidualMinSpeedQ16) {
+    const int64_t gain = direct_speed >= kResidualFullSpeedQ16
+                             ? kResidualGainQ16
+                             : fx::div_q(kResidualGainQ16 * (direct_speed - kResidualMinSpeedQ16),
+                                         kResidualFullSpeedQ16 - kResidualMinSpeedQ16, 0);
+    residual_ = static_cast<FracQ16>(residual_ + fx::shr_round(gain * (int64_t{in.residual} - residual_), 16));
+  }
 
   // The differential's scale, from its distance over the window against h,
   // where it is clean, V is steady over the window and the window spans

@@ -21,8 +21,10 @@ FloatFusionOutput FloatVelocityFusion::update(const FloatFusionInput& in) {
   const int64_t tau_us = use_tof ? static_cast<int64_t>(tof.tau_ns) / 1000 : 0;
   measured_us_ = in.direct ? std::min<int64_t>(measured_us_ + dt_us, int64_t{1} << 31) : 0;
   const bool whole_window = measured_us_ >= tau_us + dt_us;
-  if (in.direct && std::fabs(in.v_direct) > kFusionResidualMinSpeed)
-    residual_ += kFusionResidualGain * (in.residual - residual_);
+  // (ramped in from kFusionResidualMinSpeed to kFusionResidualFullSpeed: the core's comment)
+  const double ramp = std::clamp((std::fabs(in.v_direct) - kFusionResidualMinSpeed) /
+                                     (kFusionResidualFullSpeed - kFusionResidualMinSpeed), 0.0, 1.0);
+  if (in.direct && ramp > 0) residual_ += kFusionResidualGain * ramp * (in.residual - residual_);
   // The scale's measurement weighed by how clean and how steady (the core's comment).
   if (scale_started_ && dt > 0) scale_var_ = std::min(scale_var_ + kFusionScaleWalk * dt, kFusionScaleStartVar);
   const double change = std::fabs(accel_) * tof.tau_ns * 1e-9;

@@ -82,8 +82,11 @@ constexpr double kTofLostTime = 0.5;
 constexpr int kTofLostAcquireFrames = 6;
 
 // ---- fusion (velocity_fusion.hpp) ----
-// The differential's residual ratio is tracked only while it moves (m/s) ...
+// The differential's residual ratio is tracked only while it moves: from
+// this speed (m/s), its gain ramped in to full at the second (no step that
+// two engines a hair either side of it would take apart) ...
 constexpr double kFusionResidualMinSpeed = 0.05;
+constexpr double kFusionResidualFullSpeed = 0.055;
 // ... with this gain per frame.
 constexpr double kFusionResidualGain = 0.3;
 // The differential's relative uncertainty: a floor plus this much of the
