@@ -58,14 +58,6 @@ bool guiding(int64_t v_hint, int trail, LengthQ24 h) {
   return abs64(v_hint) > kAcquireMinSpeedQ16 && (trail == 0) == ((v_hint > 0) == (h > 0));
 }
 
-// Both hints fast and the other way: a track of this trail camera is not
-// the rig's motion. After a reversal the rig retraces its path, and each
-// camera finds the other's views from before it at a tau that grows by two
-// frames a frame; kept, such a track blocks the new direction's acquisition.
-bool denied(const TofTrackInput& in, int trail) {
-  return guiding(in.v_fused, 1 - trail, in.baseline) && guiding(in.v_direct, 1 - trail, in.baseline);
-}
-
 // direction * h / tau in SpeedQ16 (h Q24 m, tau ns).
 SpeedQ16 speed_of(LengthQ24 h, int8_t direction, int64_t tau_ns) {
   return fx::div_q(int64_t{direction} * h * 1000000000, tau_ns * 256, 0);
@@ -258,16 +250,25 @@ TofResult TimeOfFlight::track(const TofTrackInput& in) {
   const int64_t frame_ns = static_cast<int64_t>(at(0).t_ns - at(1).t_ns);
   Candidate pick{};
   bool have = false;
-  // A denied track is dropped, not held (a held track's value still joins the fusion).
-  if (misses_ < kTofTrackMisses && denied(in, track_ns_ > 0 ? 0 : 1)) misses_ = 255;
   if (misses_ < kTofTrackMisses) {
     Candidate c{};
     const int trail = track_ns_ > 0 ? 0 : 1;
     const int64_t want = abs64(track_ns_), g = gate_ns(want, frame_ns);
     if (search(in, trail, want, want - g, want + g, c) && abs64(abs64(c.stau_ns) - want) < g) {
-      pick = c;
-      have = true;
-      if (track_frames_ < 255) ++track_frames_;
+      // A track past kTofMaxTau (not used by the fusion) that the fused V
+      // runs against faster than kTofAcquireMinSpeed is dropped rather than
+      // followed on: after a reversal the rig retraces its path, and each
+      // camera finds the other's views from before it at a tau that grows by
+      // two frames a frame; kept, such a track blocks the new direction's
+      // acquisition. (A slow pass keeps its track; one the fusion uses is
+      // never dropped so: the twins, deciding a frame apart, would blend it apart.)
+      if (abs64(c.stau_ns) > kTofMaxTauNs && guiding(in.v_fused, c.stau_ns > 0 ? 1 : 0, in.baseline)) {
+        misses_ = 255;
+      } else {
+        pick = c;
+        have = true;
+        if (track_frames_ < 255) ++track_frames_;
+      }
     }
   }
   if (!have) {

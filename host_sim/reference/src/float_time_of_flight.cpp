@@ -134,18 +134,19 @@ FloatTofResult FloatTimeOfFlight::track(double baseline, double max_rotation, do
   const double frame_ns = static_cast<double>(at(0).t_ns - at(1).t_ns);
   Candidate pick;
   bool have = false;
-  // (The core's denied(): both hints fast and the other way; the track dropped, not held.)
-  const int tracked_trail = track_ns_ > 0 ? 0 : 1;
-  if (misses_ < kTofTrackMisses && guiding(v_fused, 1 - tracked_trail, baseline) && guiding(v_direct, 1 - tracked_trail, baseline))
-    misses_ = 255;
   if (misses_ < kTofTrackMisses) {
     Candidate c;
     const int trail = track_ns_ > 0 ? 0 : 1;
     const double want = std::fabs(track_ns_), g = gate_ns(want, frame_ns);
     if (search(trail, max_rotation, want, want - g, want + g, c) && std::fabs(std::fabs(c.stau_ns) - want) < g) {
-      pick = c;
-      have = true;
-      if (track_frames_ < 255) ++track_frames_;
+      // Past kTofMaxTau and the fused V against it: dropped (the core's comment).
+      if (std::fabs(c.stau_ns) > kTofMaxTau * 1e9 && guiding(v_fused, c.stau_ns > 0 ? 1 : 0, baseline)) {
+        misses_ = 255;
+      } else {
+        pick = c;
+        have = true;
+        if (track_frames_ < 255) ++track_frames_;
+      }
     }
   }
   if (!have) {
