@@ -300,9 +300,12 @@ void build_kernel_bank(const EstimatorConfig& cfg, KernelBank& bank) {
   for (int k = 0; k < cfg.kernel_count; ++k) bank.sigma[k] = cfg.kernels[k].sigma;
   bank.rings = radial_rings(cfg.width, cfg.height);
   bank.leaning = !bank.banded && kBandColumns > 1 && cfg.height >= 2;
-  for (int i = 0; i < 2; ++i)
+  for (int i = 0; i < 2; ++i) {
     for (uint16_t u = 0; u < kBandColumns; ++u)
       bank.lean[i][u] = bank.leaning && u < cfg.width ? column_lean_q24(cfg, i, u) : 0;
+    // (|axis - centre| is half the axes' difference: < 2^31 for two AngleQ28)
+    bank.axis_offset[i] = static_cast<AngleQ28>(int64_t{cfg.cam[i].axis_yaw} - centre);
+  }
   // F of a uniform image: each column sums its band's rows of one value.
   for (int i = 0; i < 2; ++i) {
     const auto uniform_dot = [&](const KernelTable& t) {

@@ -42,8 +42,9 @@ struct CameraOutputs {
 // kernel instead of one per pixel); dF/dtheta = (dB - F dN) / N.
 // lean: the bank's column leans where the profile has its edge rows (the
 // rotation term's correction: measurement.hpp), else nullptr.
+// offset: the camera's axis yaw from the kernels' centre (KernelBank::axis_offset), used with lean.
 void camera_outputs(const ColumnProfile& p, const CameraKernels& ck, uint8_t count, const LeanQ24* lean,
-                    CameraOutputs& out) {
+                    AngleQ28 offset, CameraOutputs& out) {
   out.no_light = false;
   out.saturated = false;
   // The dot products in pairs that share the profile (kdot::dot2): the same sums.
@@ -82,12 +83,21 @@ void camera_outputs(const ColumnProfile& p, const CameraKernels& ck, uint8_t cou
   const auto corr = [&](int64_t e, const KernelTable& t) {
     return lean ? int64_t{ratio(e, inv, fx::kSlopeFrac - edge_scale_bits(p) + ck.norm.exp - t.exp, &sat)} : 0;
   };
+  const int64_t en_over_n = corr(en, ck.norm);  // Q20 per radian
   const SlopeQ20 dn_over_n = fx::sat32(
-      int64_t{ratio(n_d, inv, fx::kSlopeFrac + ck.norm.exp - ck.norm_d.exp, &sat)} + corr(en, ck.norm), &sat);
+      int64_t{ratio(n_d, inv, fx::kSlopeFrac + ck.norm.exp - ck.norm_d.exp, &sat)} + en_over_n, &sat);
+  const bool offset_taken = lean && offset != 0;
   for (k = 0; k < count; ++k) {
-    const ValueQ28 f = ratio(bk[k], inv, fx::kValueFrac + ck.norm.exp - ck.k[k].exp, &sat);
+    ValueQ28 f = ratio(bk[k], inv, fx::kValueFrac + ck.norm.exp - ck.k[k].exp, &sat);
+    const int64_t ek_over_n = corr(ek[k], ck.k[k]);
+    // The camera's F taken back to the centre axis: F - offset (C_k - F C_N) / N
+    // (|offset| < 2^30 Q28, the bracket < 2^32 Q20: the product < 2^62).
+    if (offset_taken) {
+      const int64_t lean_slope = ek_over_n - fx::shr_round(int64_t{f} * en_over_n, fx::kValueFrac);
+      f = fx::sat32(int64_t{f} - fx::shr_round(int64_t{offset} * lean_slope, fx::kSlopeFrac), &sat);
+    }
     const SlopeQ20 db_over_n = fx::sat32(
-        int64_t{ratio(bd[k], inv, fx::kSlopeFrac + ck.norm.exp - ck.d[k].exp, &sat)} + corr(ek[k], ck.k[k]), &sat);
+        int64_t{ratio(bd[k], inv, fx::kSlopeFrac + ck.norm.exp - ck.d[k].exp, &sat)} + ek_over_n, &sat);
     out.f[k] = f;
     // T is a 16-bit table: value = w * 2^-(15 + exp), a 2^16 larger step than a q31 table.
     out.c[k] = ratio(bt[k], inv, fx::kCurvFrac + ck.norm.exp - ck.t[k].exp + 16, &sat);
@@ -156,8 +166,8 @@ AngleQ28 half_phase(const CameraOutputs& c0, const CameraOutputs& c1, ValueQ28 d
 void stereo_measurement(const ColumnProfile& p0, const ColumnProfile& p1, const KernelBank& bank,
                         const PhotometricBalance* balance, StereoMeasurement& out, kdot::Normaliser* norm1) {
   CameraOutputs c0, c1;
-  camera_outputs(p0, bank.cam[0], bank.count, bank.leaning && p0.edges ? bank.lean[0] : nullptr, c0);
-  camera_outputs(p1, bank.cam[1], bank.count, bank.leaning && p1.edges ? bank.lean[1] : nullptr, c1);
+  camera_outputs(p0, bank.cam[0], bank.count, bank.leaning && p0.edges ? bank.lean[0] : nullptr, bank.axis_offset[0], c0);
+  camera_outputs(p1, bank.cam[1], bank.count, bank.leaning && p1.edges ? bank.lean[1] : nullptr, bank.axis_offset[1], c1);
   if (norm1) *norm1 = c1.norm;
   for (uint8_t k = 0; k < bank.count; ++k) {
     const ValueQ28 delta = balance && !c0.no_light && !c1.no_light ? balance->offset(k) : 0;

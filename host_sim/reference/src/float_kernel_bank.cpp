@@ -85,6 +85,7 @@ FloatKernelBank build_float_kernel_bank(const EstimatorSettings& s) {
   for (int i = 0; i < 2; ++i) b.edge[i] = column_edge_yaws(s.cam[i], s.width);
   b.band = build_float_column_band(s, b.edge);
   const double centre = (s.cam[0].axis_yaw + s.cam[1].axis_yaw) / 2;
+  for (int i = 0; i < 2; ++i) b.axis_offset[i] = s.cam[i].axis_yaw - centre;
   Eigen::VectorXd* kn[2] = {&b.cam[0].norm, &b.cam[1].norm};
   Eigen::VectorXd* dn[2] = {&b.cam[0].norm_d, &b.cam[1].norm_d};
   Eigen::VectorXd unused[2];

@@ -16,8 +16,10 @@ struct CameraOutputs {
 
 // F_k = B_k / N (paper eq. 21 applied after the kernel); dF/dtheta = (dB - F dN) / N.
 // With the bank leaning, dB/dtheta and dN/dtheta gain the edge-row correction
-// sum_u K[u] lean[u] E[u] (the core's measurement.hpp says why).
-CameraOutputs camera_outputs(const FloatColumnProfile& p, const FloatCameraKernels& k, Eigen::Index n, bool leaning) {
+// sum_u K[u] lean[u] E[u] (the core's measurement.hpp says why), and F its
+// first-order move to the centre axis by the camera's axis offset.
+CameraOutputs camera_outputs(const FloatColumnProfile& p, const FloatCameraKernels& k, Eigen::Index n, bool leaning,
+                             double offset) {
   CameraOutputs out;
   const Eigen::VectorXd& col = p.sum;
   const double nrm = k.norm.dot(col);
@@ -35,6 +37,8 @@ CameraOutputs camera_outputs(const FloatColumnProfile& p, const FloatCameraKerne
   for (Eigen::Index j = 0; j < n; ++j) {
     const size_t jj = static_cast<size_t>(j);
     out.f[j] = k.k[jj].dot(col) / nrm;
+    // (the core's: F taken back to the centre axis, F - offset (C_k - F C_N) / N)
+    if (lean && offset != 0) out.f[j] -= offset * (correction(k.k[jj]) - out.f[j] * correction(k.norm));
     out.r[j] = k.d[jj].dot(col) / nrm + correction(k.k[jj]) - out.f[j] * dn;
     out.c[j] = k.t[jj].dot(col) / nrm;  // derivatives of N neglected: a correction term
   }
@@ -62,7 +66,8 @@ FloatStereoMeasurement float_stereo_measurement(const FloatColumnProfile& p0, co
                                                 const FloatPhotometricBalance* balance) {
   FloatStereoMeasurement m;
   const auto n = static_cast<Eigen::Index>(bank.sigma.size());
-  CameraOutputs c[2] = {camera_outputs(p0, bank.cam[0], n, bank.leaning), camera_outputs(p1, bank.cam[1], n, bank.leaning)};
+  CameraOutputs c[2] = {camera_outputs(p0, bank.cam[0], n, bank.leaning, bank.axis_offset[0]),
+                        camera_outputs(p1, bank.cam[1], n, bank.leaning, bank.axis_offset[1])};
   m.no_light = c[0].no_light || c[1].no_light;
   m.balance = Eigen::VectorXd::Zero(n);
   if (balance && !m.no_light)

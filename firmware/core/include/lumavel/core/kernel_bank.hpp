@@ -83,6 +83,10 @@ struct KernelBank {
   // columns sum all rows (not banded; a line scan keeps one entry, unused).
   bool leaning;
   LeanQ24 lean[2][kBandColumns];
+  // Each camera's axis yaw from the kernels' centre c (+-m/2 for a rig
+  // misaligned by m): where the columns lean, the first-order correction of
+  // the elevation reach that the centring leaves (measurement.hpp).
+  AngleQ28 axis_offset[2];
   // No edge table: the edges (column_edge_yaws) are computed while the
   // tables are built, which saves 2 x (kMaxColumns + 1) x 4 bytes of RAM.
 };

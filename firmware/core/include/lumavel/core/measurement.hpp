@@ -15,6 +15,16 @@
 // turning reads as motion (the slalom of docs/results.md at hfov 90: E 12 %
 // -> 4 %); with the elevation band (every column the same extent) it is not
 // needed and not applied, nor on a line scan (one row, E = 0).
+//
+// The same lean on a misaligned rig. Both cameras' kernels are centred on one
+// body yaw, which takes the misalignment out of the shift exactly, but a
+// camera turned by m from the centre still sees each body yaw through a
+// column of its own elevation reach and factor: its B is the centred one
+// plus m sum_u K[u] lean[u] E[u], which reads as stereo where h/Z is of m's
+// size (a photo wall at 4 m, 1.6 deg: E 19 %). So each camera's F is taken
+// back to the centre axis to first order, F - m (C_k - F C_N) / N with C the
+// same edge-row dot products (KernelBank::axis_offset is m; docs/design.md,
+// "Misalignment").
 #pragma once
 #include <cstdint>
 

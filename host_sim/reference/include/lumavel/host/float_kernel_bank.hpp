@@ -25,6 +25,7 @@ struct FloatKernelBank {
   FloatColumnBand band;       // the rows each column sums, the tables' cos(a_u) weight
   std::vector<double> sigma;  // each kernel's scale, rad (one per kernel: the bank's kernel count)
   bool leaning = false;       // the rotation term's edge-row correction applies (not banded, 2+ rows)
+  double axis_offset[2] = {0, 0};  // each camera's axis yaw from the kernels' centre (the core's KernelBank::axis_offset)
 };
 FloatKernelBank build_float_kernel_bank(const EstimatorSettings& s);
 
