@@ -10,10 +10,9 @@
 #include <string>
 
 #include "lumavel/host/recording.hpp"
-#include "lumavel/host/render/recording_renderer.hpp"
-#include "lumavel/host/render/scenario_loader.hpp"
 #include "lumavel/host/run_recording.hpp"
 #include "recording_fixture.hpp"
+#include "scenario_recording.hpp"
 // CppUTest last: its leak-detector macros redefine new.
 #include "CppUTest/TestHarness.h"
 #include "CppUTest/MemoryLeakWarningPlugin.h"
@@ -28,18 +27,12 @@ TEST_GROUP(ClipMatchRun) {
   // The photo wall at 160x120 with both cameras from a photometric preset
   // (duration_s < 0: the scenario's own).
   Recording render_wall(const std::string& preset, double duration_s = -1) {
-    render::Scenario s = render::load_scenario(std::string(LUMAVEL_SCENARIO_DIR) + "/robustness_wall.yaml");
     render::Overrides o;
     o.width = 160;
     o.height = 120;
     o.duration_s = duration_s;
     o.camera_mismatch = preset;
-    render::apply_overrides(s, o);
-    render::RenderOptions ro;
-    ro.threads = 2;
-    ro.progress = false;
-    render::render_recording(s, dir.path() + "/wall", ro);
-    return load_recording(dir.path() + "/wall");
+    return test::render_scenario("robustness_wall.yaml", o, dir.path() + "/wall");
   }
 };
 

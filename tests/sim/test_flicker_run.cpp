@@ -11,10 +11,9 @@
 #include <string>
 
 #include "lumavel/host/recording.hpp"
-#include "lumavel/host/render/recording_renderer.hpp"
-#include "lumavel/host/render/scenario_loader.hpp"
 #include "lumavel/host/run_recording.hpp"
 #include "recording_fixture.hpp"
+#include "scenario_recording.hpp"
 // CppUTest last: its leak-detector macros redefine new.
 #include "CppUTest/TestHarness.h"
 #include "CppUTest/MemoryLeakWarningPlugin.h"
@@ -31,15 +30,9 @@ TEST_GROUP(FlickerRun) {
 // Measured: mean |V error| from 0.5 to 1.5 s 0.82 % (the same pass without
 // flicker, robustness_wall.yaml at 160x120: 0.34 %).
 TEST(FlickerRun, ARippleCommonToTheImageIsCancelledByTheBrightness) {
-  render::Scenario s = render::load_scenario(std::string(LUMAVEL_SCENARIO_DIR) + "/flicker_wall.yaml");
   render::Overrides o;
   o.duration_s = 1.5;
-  render::apply_overrides(s, o);
-  render::RenderOptions ro;
-  ro.threads = 2;
-  ro.progress = false;
-  render::render_recording(s, dir.path() + "/wall", ro);
-  const RunResult r = run_recording(load_recording(dir.path() + "/wall"), RunOptions{}, nullptr);
+  const RunResult r = run_recording(test::render_scenario("flicker_wall.yaml", o, dir.path() + "/wall"), RunOptions{}, nullptr);
   double e = 0;
   int n = 0;
   const uint64_t t0 = r.track.front().t_ns;

@@ -11,10 +11,9 @@
 #include <string>
 
 #include "lumavel/host/recording.hpp"
-#include "lumavel/host/render/recording_renderer.hpp"
-#include "lumavel/host/render/scenario_loader.hpp"
 #include "lumavel/host/run_recording.hpp"
 #include "recording_fixture.hpp"
+#include "scenario_recording.hpp"
 // CppUTest last: its leak-detector macros redefine new.
 #include "CppUTest/TestHarness.h"
 #include "CppUTest/MemoryLeakWarningPlugin.h"
@@ -29,15 +28,9 @@ TEST_GROUP(MisalignedRun) {
 };
 
 TEST(MisalignedRun, EachCameraIsTakenBackToTheCentreAxis) {
-  render::Scenario s = render::load_scenario(std::string(LUMAVEL_SCENARIO_DIR) + "/misaligned_wall.yaml");
   render::Overrides o;
   o.duration_s = 1.5;
-  render::apply_overrides(s, o);
-  render::RenderOptions ro;
-  ro.threads = 2;
-  ro.progress = false;
-  render::render_recording(s, dir.path() + "/wall", ro);
-  const Recording rec = load_recording(dir.path() + "/wall");
+  const Recording rec = test::render_scenario("misaligned_wall.yaml", o, dir.path() + "/wall");
   for (EngineKind kind : {EngineKind::kFixed, EngineKind::kFloat}) {
     RunOptions opt;
     opt.engine = kind;
