@@ -25,7 +25,9 @@ int main(int argc, char** argv) {
     return 2;
   }
   long long width = 0, height = 0;
-  if (!lumavel::stream::whole_argument(argv[0], "width", argv[3], 16, 2048, width) ||
+  if (!lumavel::stream::path_argument(argv[0], "recording dir", argv[1]) ||
+      !lumavel::stream::path_argument(argv[0], "out.lvs", argv[2]) ||
+      !lumavel::stream::whole_argument(argv[0], "width", argv[3], 16, 2048, width) ||
       !lumavel::stream::whole_argument(argv[0], "height", argv[4], 1, 2048, height))
     return 2;
   const int w = static_cast<int>(width);

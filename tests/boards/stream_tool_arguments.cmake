@@ -25,6 +25,24 @@ expect("height: must be a whole number in 1\\.\\.2048, not '030'" ${CONVERT} rec
 expect("frames: must be a whole number in 1\\.\\.1000000, not '1e9'" ${GEN} out.lvs 40 30 1e9)
 expect("seed: must be a whole number in 0\\.\\.4294967295, not '-1'" ${GEN} out.lvs 40 30 10 -1)
 expect("width: must be a whole number in 16\\.\\.2048, not '40x'" ${GEN} out.lvs 40x 30 10)
+# An empty path was no usage error: the converter's and the generator's
+# output went to standard output (the binary stream on the terminal), exit 0.
+# (Each written out: an empty argument does not survive a function's ${ARGN}.)
+function(expect_empty_path what name rc out err)
+  if(NOT rc EQUAL 2 OR NOT err MATCHES "${name}: needs a path, not an empty one" OR NOT out STREQUAL "")
+    message(FATAL_ERROR "${what}: expected exit 2, '${name}: needs a path, not an empty one' and nothing on "
+                        "standard output, got exit ${rc}: ${err}")
+  endif()
+endfunction()
+execute_process(COMMAND ${CONVERT} rec "" 40 30 WORKING_DIRECTORY ${WORK} RESULT_VARIABLE rc OUTPUT_VARIABLE out
+                ERROR_VARIABLE err)
+expect_empty_path("the converter, out.lvs ''" "out\\.lvs" "${rc}" "${out}" "${err}")
+execute_process(COMMAND ${CONVERT} "" out.lvs 40 30 WORKING_DIRECTORY ${WORK} RESULT_VARIABLE rc OUTPUT_VARIABLE out
+                ERROR_VARIABLE err)
+expect_empty_path("the converter, recording dir ''" "recording dir" "${rc}" "${out}" "${err}")
+execute_process(COMMAND ${GEN} "" 40 30 10 WORKING_DIRECTORY ${WORK} RESULT_VARIABLE rc OUTPUT_VARIABLE out
+                ERROR_VARIABLE err)
+expect_empty_path("the generator, out.lvs ''" "out\\.lvs" "${rc}" "${out}" "${err}")
 expect("${WORK}: read error: Is a directory" ${HOST_APP} ${WORK} out.lvr)
 # A 0.1 s render to convert (its cam0/data.csv the output named).
 file(REMOVE_RECURSE ${WORK}/rec)

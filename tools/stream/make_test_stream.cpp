@@ -120,7 +120,8 @@ int main(int argc, char** argv) {
   }
   // At most 10^6 frames: 4.6 hours at 60 Hz (frames * 7 stays within an int).
   long long width = 0, height = 0, frame_count = 0, seed = 1;
-  if (!lumavel::stream::whole_argument(argv[0], "width", argv[2], 16, 2048, width) ||
+  if (!lumavel::stream::path_argument(argv[0], "out.lvs", argv[1]) ||
+      !lumavel::stream::whole_argument(argv[0], "width", argv[2], 16, 2048, width) ||
       !lumavel::stream::whole_argument(argv[0], "height", argv[3], 1, 2048, height) ||
       !lumavel::stream::whole_argument(argv[0], "frames", argv[4], 1, 1000000, frame_count) ||
       (argc == 6 && !lumavel::stream::whole_argument(argv[0], "seed", argv[5], 0, UINT32_MAX, seed)))

@@ -26,4 +26,16 @@ inline bool whole_argument(const char* prog, const char* name, const char* text,
   return false;
 }
 
+// `text`, the path argument `name`, is not empty; or false after saying so on
+// standard error, "PROG: out.lvs: needs a path, not an empty one" (as
+// lumavel-sim's and lumavel-read's path options say it), for the caller's
+// usage exit (2). An empty output name was taken by OutputFile for standard
+// output: the binary stream went to the terminal, exit 0, summarised as
+// ': 60 frames at 40x30'.
+inline bool path_argument(const char* prog, const char* name, const char* text) {
+  if (text[0] != '\0') return true;
+  std::fprintf(stderr, "%s: %s: needs a path, not an empty one\n", prog, name);
+  return false;
+}
+
 }  // namespace lumavel::stream
