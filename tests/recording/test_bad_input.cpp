@@ -446,8 +446,18 @@ TEST(BadInput, PoseNotARotation) {
   std::string t = fixture::read_text(y);
   t.replace(t.find("data: [1"), 8, "data: [2");
   fixture::write_text(y, t);
-  STRCMP_CONTAINS("T_BS: rotation part is not orthonormal", load_error().c_str());
+  // A column against itself is its length (was: 'columns 0 and 0 have dot product 4, not 1').
+  STRCMP_CONTAINS("T_BS: rotation part is not orthonormal: column 0 has squared length 4, not 1 (within 0.001)",
+                  load_error().c_str());
   STRCMP_CONTAINS(y.c_str(), load_error().c_str());
+  // Two columns that are not perpendicular keep their dot product.
+  t = fixture::read_text(y);
+  t.replace(t.find("data: [2"), 8, "data: [1");
+  const size_t first_row_end = t.find(',', t.find(',', t.find("data: [1")) + 1);
+  t.replace(t.find("data: [1"), first_row_end - t.find("data: [1"), "data: [1, 0.01");
+  fixture::write_text(y, t);
+  STRCMP_CONTAINS("T_BS: rotation part is not orthonormal: columns 0 and 1 have dot product 0.01, not 0 (within 0.001)",
+                  load_error().c_str());
 }
 
 // Orthonormal but a mirror (determinant -1): was accepted (E 97 %).

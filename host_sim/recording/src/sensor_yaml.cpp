@@ -178,11 +178,16 @@ Pose read_pose(const YAML::Node& root, const std::string& path) {
     for (int j = 0; j < 3; ++j) {
       double dot = 0;
       for (int k = 0; k < 3; ++k) dot += d[static_cast<size_t>(4 * k + i)] * d[static_cast<size_t>(4 * k + j)];
+      // A column against itself is its squared length (was said as 'columns
+      // 0 and 0 have dot product 4, not 1').
       if (std::fabs(dot - (i == j ? 1.0 : 0.0)) > 1e-3)
-        throw recording_error_at(path, line_of(t), "T_BS: rotation part is not orthonormal: columns " +
-                                                       std::to_string(i) + " and " + std::to_string(j) +
-                                                       " have dot product " + format_double(dot) + ", not " +
-                                                       (i == j ? "1" : "0") + " (within 0.001)");
+        throw recording_error_at(path, line_of(t),
+                                 "T_BS: rotation part is not orthonormal: " +
+                                     (i == j ? "column " + std::to_string(i) + " has squared length " +
+                                                   format_double(dot) + ", not 1"
+                                             : "columns " + std::to_string(i) + " and " + std::to_string(j) +
+                                                   " have dot product " + format_double(dot) + ", not 0") +
+                                     " (within 0.001)");
     }
   // Orthonormal with determinant -1 is a mirror: it flips the image's u
   // axis against the body's and gives an answer that is wrong, not refused.
