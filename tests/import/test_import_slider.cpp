@@ -327,6 +327,9 @@ TEST(ImportSlider, DamagedDatasetsAreRefusedNamingTheLine) {
        "groundtruth.txt:5: unexpected extra field '7' (expected t x y z qx qy qz qw)"},
       {[&] { fixture::write_text(d + "/calib.txt", "50 51 23.5 17.5 0 0 0 0 0 9\n"); },
        "calib.txt:1: unexpected extra field '9'"},
+      // The values unsaid (was: 'focal lengths must be positive' alone).
+      {[&] { fixture::write_text(d + "/calib.txt", "50 -51 23.5 17.5 0 0 0 0 0\n"); },
+       "calib.txt:1: fx = 50, fy = -51: the focal lengths fx and fy must be positive"},
       {[&] { line5("groundtruth.txt", [](const std::string& l) { return l.substr(0, l.size() - 3) + "0.0"; }); },
        "groundtruth.txt:5: qx qy qz qw is not a unit quaternion (norm 0)"},
       // A camera that turns: the turn was written as none (was: exit 0).

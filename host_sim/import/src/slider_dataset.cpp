@@ -139,7 +139,11 @@ SliderDataset read_slider_dataset(const std::string& dir) {
     static const char* const kNames[] = {"k1", "k2", "p1", "p2", "k3"};
     for (int i = 0; i < 5; ++i) *k[i] = number(s, calib, line, kNames[i]);
     no_more_fields(s, calib, line, "fx fy cx cy k1 k2 p1 p2 k3");
-    if (c.fx <= 0 || c.fy <= 0) throw recording_error_at(calib, line, "focal lengths must be positive");
+    // The values said, as sensor.yaml's intrinsics are (was: 'focal lengths
+    // must be positive' alone, the value and which of the two unsaid).
+    if (c.fx <= 0 || c.fy <= 0)
+      throw recording_error_at(calib, line, "fx = " + format_double(c.fx) + ", fy = " + format_double(c.fy) +
+                                                ": the focal lengths fx and fy must be positive");
   });
   if (!rows) throw recording_error_in(calib, "empty (expected fx fy cx cy k1 k2 p1 p2 k3)");
   return d;
