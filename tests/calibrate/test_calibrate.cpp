@@ -48,6 +48,30 @@ TEST(Calibrate, NoAnswerOutsideTheSearchRange) {
   std::filesystem::remove_all(dir);
 }
 
+// A gyro that turns where the images do not (1.5 rad/s after the first 0.4
+// s of a straight 3 s pass: the registrations follow it, 0.9 deg for each
+// degree turned) gave the turning frames' misalignment, 1.3 +- 0.07 deg for
+// a true 0, exit 0 and a board command; a sign-flipped gyro on a pass partly
+// turning the same. Now refused, naming the gyro.
+TEST(Calibrate, RegistrationsThatFollowTheGyrosTurnAreRefused) {
+  const std::string dir = rendered("robustness_wall.yaml", 3, "follow");
+  Recording rec = load_recording(dir);
+  const uint64_t from = rec.frames.front().t_ns + 400000000;
+  for (ImuSample& s : rec.imu_samples)
+    if (s.t_ns > from) s.w[2] = 1.5;
+  std::string error = "(no error)";
+  try {
+    calibrate_misalignment(rec);
+  } catch (const RecordingError& e) {
+    error = e.what();
+  }
+  STRCMP_CONTAINS((dir + "/mav0/imu0/data.csv: the registrations follow the gyro's heading change between the frames "
+                         "registered: ").c_str(),
+                  error.c_str());
+  STRCMP_CONTAINS("the gyro does not match the images (its sign, its units, or imu0/sensor.yaml's T_BS?)", error.c_str());
+  std::filesystem::remove_all(dir);
+}
+
 // A --max-shift below one step of the registration grid searched +-0 steps,
 // and one below the misalignment found every good match at the end of the
 // search: no frame registered, and the error blamed the scene ("does the

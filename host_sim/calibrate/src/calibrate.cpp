@@ -35,6 +35,10 @@ constexpr int kMinWindows = 6;
 constexpr size_t kMinCompleteFrames = 30;
 // Frames per block for the uncertainty.
 constexpr size_t kUncertaintyBlock = 20;
+// The registrations' slope against the gyro's heading change refused (see
+// calibrate_misalignment): a gyro right leaves none, a sign-flipped one 2.
+constexpr double kMaxTurnSlope = 0.5;
+constexpr double kTurnSlopeSigmas = 5;
 // Frames either side whose translation-field shapes are averaged.
 constexpr size_t kShapeHalfSpan = 15;
 // The registration's resolution floor, in working columns, added in
@@ -169,6 +173,10 @@ Match best_shift(const Profile& a, const Profile& b, int max_shift) {
 struct FrameShifts {
   size_t frame = 0;
   std::vector<std::vector<double>> a;  // per lag (increasing), per window
+  // Per lag: the gyro's heading change the lag's shifts were corrected by,
+  // with the sign it enters them with (a gyro off by a factor k puts
+  // (k - 1) times this into them).
+  std::vector<double> turn;
 };
 
 // Intercept of y on x (least squares) over the windows where both are
@@ -221,8 +229,11 @@ double median(std::vector<double> v) {
 }
 
 // One misalignment sample per frame: the intercepts at its lags with the
-// shape averaged over frames within `half_span` of it, averaged.
-std::vector<double> zero_translation_samples(const std::vector<FrameShifts>& frames, size_t half_span) {
+// shape averaged over frames within `half_span` of it, averaged; into
+// `turns`, each sample's gyro heading change (FrameShifts::turn) averaged
+// over the same lags.
+std::vector<double> zero_translation_samples(const std::vector<FrameShifts>& frames, size_t half_span,
+                                             std::vector<double>& turns) {
   std::vector<std::vector<double>> shapes;
   for (const FrameShifts& f : frames) shapes.push_back(field_shape(f));
   std::vector<double> out;
@@ -237,14 +248,55 @@ std::vector<double> zero_translation_samples(const std::vector<FrameShifts>& fra
         if (!std::isnan(shapes[k][c])) shape[c] += shapes[k][c], ++used[c];
     }
     for (size_t c = 0; c < shape.size(); ++c) shape[c] = used[c] >= 3 ? shape[c] / used[c] : std::nan("");
-    double sum = 0;
+    double sum = 0, turn = 0;
     size_t n = 0;
-    for (const std::vector<double>& a : frames[i].a) {
+    for (size_t l = 0; l < frames[i].a.size(); ++l) {
       double d = 0;
-      if (intercept(shape, a, d)) sum += d, ++n;
+      if (intercept(shape, frames[i].a[l], d)) sum += d, turn += frames[i].turn[l], ++n;
     }
-    if (n > 0) out.push_back(sum / static_cast<double>(n));
+    if (n > 0) {
+      out.push_back(sum / static_cast<double>(n));
+      turns.push_back(turn / static_cast<double>(n));
+    }
   }
+  return out;
+}
+
+// Least-squares slope of y on x over blocks of `block` neighbouring samples
+// (x their mean, y their median: neighbouring frames see the same scene, so
+// their errors are alike, and a block is one independent sample, as for the
+// uncertainty), its 1-sigma error, and the spread (standard deviation) of
+// the blocks' x. Zero slope and sigma with fewer than 4 blocks or when x does
+// not vary.
+struct TurnSlope {
+  double slope = 0, sigma = 0, spread = 0;
+  size_t blocks = 0;
+};
+
+TurnSlope turn_slope(const std::vector<double>& x, const std::vector<double>& y, size_t block) {
+  std::vector<double> bx, by;
+  for (size_t b = 0; b + block <= x.size(); b += block) {
+    double sum = 0;
+    for (size_t i = b; i < b + block; ++i) sum += x[i];
+    bx.push_back(sum / static_cast<double>(block));
+    by.push_back(median({y.begin() + static_cast<std::ptrdiff_t>(b), y.begin() + static_cast<std::ptrdiff_t>(b + block)}));
+  }
+  TurnSlope out;
+  out.blocks = bx.size();
+  if (bx.size() < 4) return out;
+  const double n = static_cast<double>(bx.size());
+  double mx = 0, my = 0;
+  for (size_t i = 0; i < bx.size(); ++i) mx += bx[i] / n, my += by[i] / n;
+  double vx = 0, cxy = 0, vy = 0;
+  for (size_t i = 0; i < bx.size(); ++i) {
+    vx += (bx[i] - mx) * (bx[i] - mx);
+    cxy += (bx[i] - mx) * (by[i] - my);
+    vy += (by[i] - my) * (by[i] - my);
+  }
+  out.spread = std::sqrt(vx / n);
+  if (!(vx > 0)) return out;
+  out.slope = cxy / vx;
+  out.sigma = std::sqrt(std::max(vy - out.slope * cxy, 0.0) / (n - 2) / vx);
   return out;
 }
 
@@ -402,6 +454,7 @@ Calibration calibrate_misalignment(const Recording& rec, const CalibrationOption
         a.push_back(!ok ? std::nan("") : dir > 0 ? wm.shift * g.step + dtheta : -(wm.shift * g.step) - dtheta);
       }
       fs.a.push_back(std::move(a));
+      fs.turn.push_back(dir > 0 ? dtheta : -dtheta);
     }
     if (fs.a.size() >= 2) shifts.push_back(std::move(fs));
   }
@@ -410,13 +463,17 @@ Calibration calibrate_misalignment(const Recording& rec, const CalibrationOption
   // texture).
   std::vector<FrameShifts> complete;
   for (const FrameShifts& f : shifts) {
-    FrameShifts c{f.frame, {}};
-    for (const std::vector<double>& a : f.a)
-      if (std::none_of(a.begin(), a.end(), [](double x) { return std::isnan(x); })) c.a.push_back(a);
+    FrameShifts c{f.frame, {}, {}};
+    for (size_t l = 0; l < f.a.size(); ++l)
+      if (std::none_of(f.a[l].begin(), f.a[l].end(), [](double x) { return std::isnan(x); })) {
+        c.a.push_back(f.a[l]);
+        c.turn.push_back(f.turn[l]);
+      }
     if (c.a.size() >= 2) complete.push_back(std::move(c));
   }
   if (complete.size() >= kMinCompleteFrames) shifts.swap(complete);
-  const std::vector<double> samples = zero_translation_samples(shifts, kShapeHalfSpan);
+  std::vector<double> turns;
+  const std::vector<double> samples = zero_translation_samples(shifts, kShapeHalfSpan, turns);
   // A misalignment beyond --max-shift puts every best match at the end of the
   // search, where it does not count: that was said as "does the rig move past
   // a textured scene?", blaming the scene for a search too narrow.
@@ -452,6 +509,30 @@ Calibration calibrate_misalignment(const Recording& rec, const CalibrationOption
     throw std::runtime_error("the registrations give " + deg(out.misalignment) + " deg, outside the +-" +
                              deg(opt.max_shift_deg * M_PI / 180) + " deg searched (--max-shift): no misalignment explains them (a gyro that does not "
                              "match the images?)");
+  // The misalignment is one angle, whatever the rig turned between the
+  // frames registered; a gyro that does not match the images (its sign
+  // flipped, its T_BS upside down, a scale off) leaves (k - 1) times the
+  // heading change in every registration. Where the turns differ (a pass
+  // partly straight, partly turning) the registrations then follow them, and
+  // their median was one of them: a sign-flipped gyro on gyro_turning
+  // (straight, then a 4 m arc) gave -1.49 +- 0.06 deg for a true 0.80, exit
+  // 0, and a board command. Refused where the registrations follow the
+  // gyro's turn by more than kMaxTurnSlope, at kTurnSlopeSigmas over blocks
+  // of frames. Measured on that pass (19 blocks): 0.03 +- 0.04 with the
+  // gyro right, 1.79 +- 0.10 flipped; a straight wall pass whose gyro says
+  // 1 rad/s after its first 0.4 s, 0.91 +- 0.16 (8 blocks).
+  if (const TurnSlope ts = turn_slope(turns, samples, kUncertaintyBlock);
+      std::fabs(ts.slope) > kMaxTurnSlope && std::fabs(ts.slope) > kTurnSlopeSigmas * ts.sigma) {
+    char b[512];
+    std::snprintf(b, sizeof b,
+                  "/imu0/data.csv: the registrations follow the gyro's heading change between the frames registered: "
+                  "%.2f +- %.2f deg of misalignment per degree it turned (%zu blocks of %zu frames, their turns "
+                  "spread %.2f deg), where the misalignment is one angle whatever the turn (refused beyond %.1f, at "
+                  "%.0f sigma): the gyro does not match the images (its sign, its units, or imu0/sensor.yaml's T_BS?)",
+                  ts.slope, ts.sigma, ts.blocks, kUncertaintyBlock, ts.spread * 180 / M_PI, kMaxTurnSlope,
+                  kTurnSlopeSigmas);
+    throw RecordingError(shown_path(rec.root) + b);
+  }
   // Neighbouring frames see the same scene, so their errors are alike: the
   // spread of medians over blocks of frames, not of single frames, gives
   // the uncertainty (1 sigma; 1.4826 MAD is sigma, 1.2533 sigma/sqrt(n) is

@@ -15,6 +15,13 @@
 // medians over blocks of 20 frames, with a resolution floor of 1/6 of a
 // working column in quadrature, gives its uncertainty.
 //
+// A gyro that does not match the images (its sign flipped, a scale off)
+// leaves part of each heading change in the samples, which then follow the
+// gyro's turn: where the turns differ over the pass (straight, then turning)
+// the slope of the samples against them, over blocks of 20 frames, beyond
+// 0.5 at 5 sigma is refused, naming imu0/data.csv (a pass that turns alike
+// throughout cannot tell such a gyro from a misalignment).
+//
 // Limits: on a single plane the translation term varies by only ~10 % across
 // a 50 deg view, so the extrapolation amplifies registration noise ~10x; a
 // gyro offset b adds b * (lag time) (see docs/results.md for figures).
