@@ -36,6 +36,13 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: %s <in.lvs> <out.lvr>\n", argv[0]);
     return 1;
   }
+  // An empty name was said as nothing: ': cannot open for reading: No such
+  // file or directory'. Now as the stream tools say it (usage, exit 1 here).
+  for (int i = 1; i <= 2; ++i)
+    if (argv[i][0] == '\0') {
+      std::fprintf(stderr, "%s: %s: needs a path, not an empty one\n", argv[0], i == 1 ? "in.lvs" : "out.lvr");
+      return 1;
+    }
   // The results written over the stream being read (or a link to it)
   // truncated it before its first byte was read: the input lost, and said
   // as 'record 0: not a lumavel stream (bad header)'.

@@ -43,6 +43,16 @@ expect_empty_path("the converter, recording dir ''" "recording dir" "${rc}" "${o
 execute_process(COMMAND ${GEN} "" 40 30 10 WORKING_DIRECTORY ${WORK} RESULT_VARIABLE rc OUTPUT_VARIABLE out
                 ERROR_VARIABLE err)
 expect_empty_path("the generator, out.lvs ''" "out\\.lvs" "${rc}" "${out}" "${err}")
+# lumavel_app_host said an empty name as nothing (': cannot open for
+# reading'); its usage exit is 1.
+execute_process(COMMAND ${HOST_APP} "" out.lvr WORKING_DIRECTORY ${WORK} RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT rc EQUAL 1 OR NOT err MATCHES "in\\.lvs: needs a path, not an empty one")
+  message(FATAL_ERROR "lumavel_app_host '' out.lvr: expected exit 1 and 'in.lvs: needs a path', got exit ${rc}: ${err}")
+endif()
+execute_process(COMMAND ${HOST_APP} in.lvs "" WORKING_DIRECTORY ${WORK} RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT rc EQUAL 1 OR NOT err MATCHES "out\\.lvr: needs a path, not an empty one")
+  message(FATAL_ERROR "lumavel_app_host in.lvs '': expected exit 1 and 'out.lvr: needs a path', got exit ${rc}: ${err}")
+endif()
 expect("${WORK}: read error: Is a directory" ${HOST_APP} ${WORK} out.lvr)
 # A 0.1 s render to convert (its cam0/data.csv the output named).
 file(REMOVE_RECURSE ${WORK}/rec)
