@@ -345,6 +345,14 @@ TEST(BadInput, SensorYamlBadValueNamesLine) {
     if (lines[i].rfind("rate_hz:", 0) == 0) lines[i] = "rate_hz: fast", line = i + 1;
   fixture::write_lines(y, lines);
   STRCMP_CONTAINS((y + ":" + std::to_string(line) + ": rate_hz: expected a number").c_str(), load_error().c_str());
+  // A number beyond a double's range is one, said as the tables say it (was:
+  // 'T_BS.data[3]: expected a number, got '1e400'').
+  for (std::string& l : lines)
+    if (l.rfind("rate_hz:", 0) == 0) l = "rate_hz: 1e400";
+  fixture::write_lines(y, lines);
+  STRCMP_CONTAINS((y + ":" + std::to_string(line) + ": rate_hz: value '1e400' is beyond the largest number (about 1.8e308)")
+                      .c_str(),
+                  load_error().c_str());
 }
 
 // A key with no value was named at the line of the next token: 'rate_hz:'

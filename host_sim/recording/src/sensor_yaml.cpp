@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "lumavel/host/csv_table.hpp"
+#include "lumavel/host/decimal_text.hpp"
 #include "lumavel/host/image_io.hpp"
 #include "lumavel/host/output_file.hpp"
 #include "lumavel/host/path_check.hpp"
@@ -132,6 +133,11 @@ double number(const YAML::Node& n, const std::string& what, const std::string& p
     if (!n.IsScalar()) throw YAML::Exception(n.Mark(), "");
     v = n.as<double>();
   } catch (const YAML::Exception&) {
+    // A number too large for a double is a number: said as the tables say
+    // it (was: 'rate_hz: expected a number, got '1e400'').
+    if (n.IsScalar() && read_decimal(n.Scalar()).problem == DecimalText::Problem::kOverflow)
+      throw recording_error_at(path, line_of(n), what + ": value '" + shown_path(n.Scalar()) +
+                                                     "' is beyond the largest number (about 1.8e308)");
     throw recording_error_at(path, line_of(n), what + ": expected a number" +
                                                    (n.IsScalar() ? ", got '" + shown_path(n.Scalar()) + "'" : std::string()));
   }
