@@ -90,6 +90,9 @@ TEST(ScenarioErrors, NotANumber) {
   const std::string e = error_of(replace(kGood, "value: 90", "value: grey"));
   STRCMP_CONTAINS("bad.yaml:13:", e.c_str());
   STRCMP_CONTAINS("'value' must be a number", e.c_str());
+  // A number beyond a double's range is one (was: ''value' must be a number, got '1e400'').
+  STRCMP_CONTAINS("bad.yaml:13: 'value' = '1e400' is beyond the largest number (about 1.8e308)",
+                  error_of(replace(kGood, "value: 90", "value: 1e400")).c_str());
 }
 
 TEST(ScenarioErrors, WrongListLength) {

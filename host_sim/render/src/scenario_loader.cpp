@@ -120,6 +120,10 @@ class Reader {
     try {
       v = n.as<double>();
     } catch (const YAML::Exception&) {
+      // A number too large for a double is a number (was: ''duration_s' must
+      // be a number, got '1e400''), said as sensor.yaml and the tables say it.
+      if (read_decimal(n.Scalar()).problem == DecimalText::Problem::kOverflow)
+        fail(n, "'" + key + "' = '" + shown_path(n.Scalar()) + "' is beyond the largest number (about 1.8e308)");
       fail(n, "'" + key + "' must be a number, got '" + shown_path(n.Scalar()) + "'");
     }
     if (!std::isfinite(v)) fail(n, "'" + key + "' must be finite");
