@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -65,24 +66,30 @@ TEST(HostLinks, FileLinkWritesWhatReplayReads) {
   std::remove(path.c_str());
 }
 
-TEST(HostLinks, TruncatedReportFileNamesRecordAndOffset) {
-  const std::string path = temp_path("cut.hidrep");
+// A report file of one good record (1, 2, 3) followed by `tail` as written, and
+// a reader past that record.
+static std::unique_ptr<host::ReportFileReader> past_one_record(const std::string& path, const uint8_t* tail, size_t n) {
   {
     host::ReportFileWriter w(path);
     const uint8_t a[3] = {1, 2, 3};
     w.write(a, 3);
   }
-  {
-    std::FILE* f = std::fopen(path.c_str(), "ab");
-    const uint8_t partial[3] = {10, 1, 2};  // says 10 bytes, has 2
-    std::fwrite(partial, 1, 3, f);
-    std::fclose(f);
-  }
-  host::ReportFileReader in(path);
+  std::FILE* f = std::fopen(path.c_str(), "ab");
+  std::fwrite(tail, 1, n, f);
+  std::fclose(f);
+  auto in = std::make_unique<host::ReportFileReader>(path);
   std::vector<uint8_t> r;
-  CHECK_TRUE(in.next(r));
+  CHECK_TRUE(in->next(r));
+  return in;
+}
+
+TEST(HostLinks, TruncatedReportFileNamesRecordAndOffset) {
+  const std::string path = temp_path("cut.hidrep");
+  const uint8_t partial[3] = {10, 1, 2};  // says 10 bytes, has 2
+  const auto in = past_one_record(path, partial, sizeof partial);
+  std::vector<uint8_t> r;
   try {
-    in.next(r);
+    in->next(r);
     FAIL("truncated record accepted");
   } catch (const std::runtime_error& e) {
     const std::string m = e.what();
@@ -125,19 +132,11 @@ TEST(HostLinks, AReportFilesNameIsShownLikeAField) {
   } catch (const std::runtime_error& e) {
     STRCMP_EQUAL((shown + ": not a lumavel report file (no \"LMVHID1\" header)").c_str(), e.what());
   }
-  {
-    host::ReportFileWriter w(path);
-    const uint8_t a[3] = {1, 2, 3};
-    w.write(a, 3);
-  }
-  std::FILE* f = std::fopen(path.c_str(), "ab");
-  std::fputc(0, f);  // a zero-length record
-  std::fclose(f);
-  host::ReportFileReader in(path);
+  const uint8_t empty[1] = {0};  // a zero-length record
+  const auto in = past_one_record(path, empty, sizeof empty);
   std::vector<uint8_t> r;
-  CHECK_TRUE(in.next(r));
   try {
-    in.next(r);
+    in->next(r);
     FAIL("a zero-length record accepted");
   } catch (const std::runtime_error& e) {
     STRCMP_EQUAL((shown + ": record 2 at byte 12: zero-length record").c_str(), e.what());
