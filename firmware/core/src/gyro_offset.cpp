@@ -1,11 +1,14 @@
 #include "lumavel/core/gyro_offset.hpp"
 
 #include "lumavel/core/estimator_params.hpp"
+#include "lumavel/core/imath.hpp"
 
 namespace lumavel {
 namespace {
 // A still period this long renews the reference (params::kGyroOffsetRenewal), ns.
 constexpr uint64_t kRenewNs = static_cast<uint64_t>(fx::q_of(params::kGyroOffsetRenewal * 1e9, 0));
+// Each camera's bound in still distances, Q4.
+constexpr int64_t kStillCameraFactorQ4 = fx::q_of(params::kStillCameraFactor, 4);
 }  // namespace
 
 void GyroOffset::anchor(const StillnessInput& in) {
@@ -14,6 +17,31 @@ void GyroOffset::anchor(const StillnessInput& in) {
   angle_ref_ = in.angle_raw;
   have_ref_ = true;
   still_ = false;
+}
+
+// Each camera's own change since the reference, read as a turn and scaled
+// as the stereo reading above (held to kStillCameraFactor of its bound): h dF_i.R_i / (|R_i| |S|). Where the texture
+// repeats every 2h along the path, the two cameras see inverted profiles and
+// M stands still while the rig moves (stripes of 16 cm at h = 8 cm: STILL
+// at 1 m/s, the turn learned as offset). den: |S|^2 as above, Q52.
+// (dF in Q24 and R in Q16: products below 2^53, kMaxKernels of them below 2^56.)
+bool GyroOffset::camera_moved(const StillnessInput& in, int64_t den) const {
+  const int64_t s_norm = fx::isqrt64(static_cast<uint64_t>(den));  // Q26
+  for (int i = 0; i < 2; ++i) {
+    int64_t num = 0, rr = 0;
+    for (uint8_t k = 0; k < in.cur->count; ++k) {
+      const int64_t r = fx::shr_round(in.cur->r[i][k], 4);  // Q16
+      num += fx::shr_round(int64_t{in.cur->f[i][k]} - ref_.f[i][k], 4) * r;  // Q40
+      rr += r * r;                                                            // Q32
+    }
+    const int64_t norms = s_norm * fx::isqrt64(static_cast<uint64_t>(rr));  // Q42, < 2^60
+    if (norms == 0) continue;
+    bool sat = false;
+    const int64_t d = fx::shr_round(int64_t{fx::div_q(num, norms, fx::kValueFrac + 2, &sat)} * in.baseline, fx::kValueFrac);
+    const int64_t bound = (kStillCameraFactorQ4 * in.still_distance) >> 4;
+    if (sat || d > bound || d < -bound) return true;
+  }
+  return false;
 }
 
 void GyroOffset::update(const StillnessInput& in) {
@@ -39,7 +67,7 @@ void GyroOffset::update(const StillnessInput& in) {
   }
   bool sat = false;
   const int64_t d = fx::shr_round(int64_t{fx::div_q(num, den, fx::kValueFrac, &sat)} * in.baseline, fx::kValueFrac);
-  if (sat || d > in.still_distance || d < -int64_t{in.still_distance}) {
+  if (sat || d > in.still_distance || d < -int64_t{in.still_distance} || camera_moved(in, den)) {
     anchor(in);  // moved: a new candidate period starts here
     return;
   }

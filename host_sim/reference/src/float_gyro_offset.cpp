@@ -40,6 +40,15 @@ void FloatGyroOffset::update(const FloatStillnessInput& in) {
     anchor(in);  // moved: a new candidate period starts here
     return;
   }
+  // Each camera's own change, read as a turn and scaled as above (the core's comment).
+  for (int i = 0; i < 2; ++i) {
+    const double rr = m.r[i].norm();
+    if (rr <= 0) continue;
+    if (std::fabs(in.baseline * (m.f[i] - ref_.f[i]).dot(m.r[i]) / (rr * std::sqrt(den))) > params::kStillCameraFactor * in.still_distance) {
+      anchor(in);
+      return;
+    }
+  }
   const uint64_t span_ns = in.t_ns - t_ref_;  // compared in integer ns, as the core
   still_ = span_ns >= in.still_min_ns;
   if (still_) {

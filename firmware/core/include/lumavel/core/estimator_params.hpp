@@ -68,5 +68,11 @@ constexpr double kGyroMaxStep = 4.0;
 // A still period longer than this (s) renews the offset's reference (the
 // offset learned so far is kept), so that the offset follows drift.
 constexpr double kGyroOffsetRenewal = 20.0;
+// Each camera's own change since the stillness reference may read up to this
+// many still distances (the stereo mean's, up to one): one camera is noisier
+// than the mean of two, and at one the day soak's two engines judged a still
+// start differently on 9 frames (a reading on the bound). Real motion passes
+// any such bound within frames; the stripes it is for move 16 mm a frame.
+constexpr double kStillCameraFactor = 2.0;
 
 }  // namespace lumavel::params

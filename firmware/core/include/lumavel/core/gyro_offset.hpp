@@ -3,8 +3,10 @@
 //
 // Stillness is judged from the images alone, against a reference frame: the
 // change since the reference, read as a translation, stays below
-// `still_distance`. Any rotation or translation moves the images, so only a
-// rig at rest passes (untextured scenes are excluded). Comparing with a fixed
+// `still_distance`, both the stereo mean's and each camera's own (a texture
+// that repeats every 2h leaves the mean still while the rig moves). Any
+// rotation or translation moves the images, so only a rig at rest passes
+// (untextured scenes are excluded). Comparing with a fixed
 // reference rather than frame to frame keeps pixel noise from adding up: the
 // noise of one difference is ~0.5 mm at 40x30 while real motion keeps growing.
 // Once a still period lasts `still_min_us`, the offset is the mean gyro rate
@@ -52,6 +54,7 @@ class GyroOffset {
 
  private:
   void anchor(const StillnessInput& in);
+  bool camera_moved(const StillnessInput& in, int64_t den) const;
 
   RateQ24 offset_ = 0;
   bool still_ = false;
