@@ -53,6 +53,7 @@ ConfigError Estimator::configure(const EstimatorConfig& cfg) {
   scale_max_turn_ = static_cast<AngleQ28>((kScaleTurnQ16 * narrowest) >> 16);
   // The lens tables are the caller's: the kernel tables are built from them now.
   cfg_.edge_offsets[0] = cfg_.edge_offsets[1] = nullptr;
+  look_ = image_look(cfg_.cam[0], cfg_.cam[1]);
   configured_ = true;
   reset();
   return ConfigError::kOk;
@@ -64,6 +65,7 @@ void Estimator::reset() {
   heading_ = 0;
   observer_.reset();
   tof_.reset();
+  direction_.reset();
   fusion_.reset();
   balance_.reset();
 #if LUMAVEL_MATCH_FRAMES > 0
@@ -152,6 +154,7 @@ Estimate Estimator::step_profiles(uint64_t t_ns, ColumnProfile& p0, ColumnProfil
     have_prev_ = false;
     gyro_offset_.drop_reference();
     tof_.reset();
+    direction_.reset();
     fusion_.restart();
   } else if (!have_prev_) {
     status |= kStatusNoTof;
@@ -164,6 +167,7 @@ Estimate Estimator::step_profiles(uint64_t t_ns, ColumnProfile& p0, ColumnProfil
       observer_.restart();
       gyro_offset_.drop_reference();
       tof_.reset();
+      direction_.reset();
       fusion_.restart();
     } else {
       if (dt_ns * (1 << kFrameGapFrac) > int64_t{cfg_.frame_period_us} * 1000 * kFrameGapPeriodsQ4)
@@ -194,6 +198,7 @@ Estimate Estimator::step_profiles(uint64_t t_ns, ColumnProfile& p0, ColumnProfil
       // (dt held below 2^31 ns, so the product stays below 2^62; y wraps by design)
       y_ += static_cast<TravelQ16Ns>(int64_t{o.updated ? o.v_direct : o.v} * std::min<int64_t>(dt_ns, int64_t{1} << 31));
       TofResult tof{};
+      if (!gyro_saturated) direction_.update(meas_[cur_], m, fx::sat32(dtheta), dt_ns, look_);
       if (!gyro_saturated) {
         TofFrame& tf = tof_.push();
         tf.t_ns = t_ns;
@@ -204,7 +209,8 @@ Estimate Estimator::step_profiles(uint64_t t_ns, ColumnProfile& p0, ColumnProfil
             tf.f[i][k] = m.f[i][k];
             tf.r[i][k] = m.r[i][k];
           }
-        tof = tof_.track({cfg_.baseline, tof_max_rotation_, fusion_.v(), o.updated && !fusion_.differential_failed() ? fusion_.rescaled(o.v_direct) : fusion_.v(), m.count});
+        tof = tof_.track({cfg_.baseline, tof_max_rotation_, fusion_.v(), o.updated && !fusion_.differential_failed() ? fusion_.rescaled(o.v_direct) : fusion_.v(), m.count,
+                           direction_.direction()});
       }
       FusionInput fin{};
       fin.dt_ns = dt_ns;

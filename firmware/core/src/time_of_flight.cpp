@@ -54,6 +54,12 @@ int64_t gate_ns(int64_t tau_ns, int64_t frame_ns) {
 // A hint fast enough to guide the acquisition, in the direction in which
 // this camera trails: cam0 trails when the body moves along +h (h = x1 - x0:
 // +x when cam1 is ahead, -x when cam0 is).
+// A candidate (signed tau: + cam0 trails) whose travel runs against the
+// images' direction (ImageDirection; 0: unknown, nothing is).
+bool against_images(int8_t direction, int64_t stau_ns, LengthQ24 h) {
+  return direction != 0 && ((stau_ns > 0) == (h > 0)) != (direction > 0);
+}
+
 bool guiding(int64_t v_hint, int trail, LengthQ24 h) {
   return abs64(v_hint) > kAcquireMinSpeedQ16 && (trail == 0) == ((v_hint > 0) == (h > 0));
 }
@@ -262,7 +268,10 @@ TofResult TimeOfFlight::track(const TofTrackInput& in) {
       // two frames a frame; kept, such a track blocks the new direction's
       // acquisition. (A slow pass keeps its track; one the fusion uses is
       // never dropped so: the twins, deciding a frame apart, would blend it apart.)
-      if (abs64(c.stau_ns) > kTofMaxTauNs && guiding(in.v_fused, c.stau_ns > 0 ? 1 : 0, in.baseline)) {
+      // A track against the images' direction of travel is an alias of a
+      // repeating texture (stripes of 12 cm at h = 8 cm: 2 V the wrong way).
+      if ((abs64(c.stau_ns) > kTofMaxTauNs && guiding(in.v_fused, c.stau_ns > 0 ? 1 : 0, in.baseline)) ||
+          against_images(in.direction, c.stau_ns, in.baseline)) {
         misses_ = 255;
       } else {
         pick = c;
@@ -292,6 +301,7 @@ TofResult TimeOfFlight::track(const TofTrackInput& in) {
       if (pass == 1 && !(guided && lost_long)) break;
       const bool g = pass == 0 && guided;
       for (int trail = 0; trail < 2; ++trail) {
+        if (against_images(in.direction, trail == 0 ? 1 : -1, in.baseline)) continue;
         int64_t min_ns = g ? kTofMaxTauNs : 0, max_ns = g ? 0 : kTofMaxTauNs;
         for (int64_t h : hints) {
           if (!g || !guiding(h, trail, in.baseline)) continue;

@@ -26,6 +26,7 @@ FloatEstimator::FloatEstimator(const EstimatorSettings& s) : s_(s) {
   tof_max_rotation_ = params::kTofMaxRotationSigma * narrowest;
   match_max_rotation_ = params::kMatchMaxRotationSigma * narrowest;
   scale_max_turn_ = params::kFusionScaleMaxTurnSigma * narrowest;
+  look_ = float_image_look(s_.cam[0], s_.cam[1]);
   bank_ = build_float_kernel_bank(s_);
   balance_ = FloatPhotometricBalance(static_cast<int>(s_.kernels.size()));
 }
@@ -80,6 +81,7 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
     have_prev_ = false;
     gyro_offset_.drop_reference();
     tof_.reset();
+    direction_.reset();
     fusion_.restart();
   } else if (!have_prev_) {
     status |= kStatusNoTof;
@@ -92,6 +94,7 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
       observer_.restart();
       gyro_offset_.drop_reference();
       tof_.reset();
+      direction_.reset();
       fusion_.restart();
     } else {
       // (both sides exact in double: the same test as the core's integers)
@@ -120,6 +123,7 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
       // over an interval whose rotation is unknown).
       y_ += (o.updated ? o.v_direct : o.v) * dt;
       FloatTofResult tof;
+      if (!gyro_saturated) direction_.update(prev_, m, dtheta, static_cast<double>(t_ns - prev_t_ns_), look_);
       if (!gyro_saturated) {
         FloatTofFrame tf;
         tf.t_ns = t_ns;
@@ -130,7 +134,7 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
           tf.r[i] = m.r[i];
         }
         tof_.push(tf);
-        tof = tof_.track(s_.baseline, tof_max_rotation_, fusion_.v(), o.updated && !fusion_.differential_failed() ? o.v_direct / fusion_.scale() : fusion_.v());
+        tof = tof_.track(direction_.direction(), s_.baseline, tof_max_rotation_, fusion_.v(), o.updated && !fusion_.differential_failed() ? o.v_direct / fusion_.scale() : fusion_.v());
       }
       FloatFusionInput fin;
       fin.dt = dt;

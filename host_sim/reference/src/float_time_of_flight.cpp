@@ -17,6 +17,11 @@ double gate_ns(double tau_ns, double frame_ns) {
 }
 
 // (the core's guiding)
+// (the core's against_images)
+bool against_images(int direction, double stau_ns, double h) {
+  return direction != 0 && ((stau_ns > 0) == (h > 0)) != (direction > 0);
+}
+
 bool guiding(double v_hint, int trail, double h) {
   return std::fabs(v_hint) > kTofAcquireMinSpeed && (trail == 0) == ((v_hint > 0) == (h > 0));
 }
@@ -124,7 +129,7 @@ double FloatTimeOfFlight::chord_time(int lead, size_t back, const Eigen::VectorX
   return std::clamp(fr + shift, 0.0, 1.0);
 }
 
-FloatTofResult FloatTimeOfFlight::track(double baseline, double max_rotation, double v_fused, double v_direct) {
+FloatTofResult FloatTimeOfFlight::track(int direction, double baseline, double max_rotation, double v_fused, double v_direct) {
   FloatTofResult r;
   if (ring_.size() < 3) {
     misses_ = 255;
@@ -140,7 +145,9 @@ FloatTofResult FloatTimeOfFlight::track(double baseline, double max_rotation, do
     const double want = std::fabs(track_ns_), g = gate_ns(want, frame_ns);
     if (search(trail, max_rotation, want, want - g, want + g, c) && std::fabs(std::fabs(c.stau_ns) - want) < g) {
       // Past kTofMaxTau and the fused V against it: dropped (the core's comment).
-      if (std::fabs(c.stau_ns) > kTofMaxTau * 1e9 && guiding(v_fused, c.stau_ns > 0 ? 1 : 0, baseline)) {
+      // ... and one against the images' direction (the core's comment).
+      if ((std::fabs(c.stau_ns) > kTofMaxTau * 1e9 && guiding(v_fused, c.stau_ns > 0 ? 1 : 0, baseline)) ||
+          against_images(direction, c.stau_ns, baseline)) {
         misses_ = 255;
       } else {
         pick = c;
@@ -164,6 +171,7 @@ FloatTofResult FloatTimeOfFlight::track(double baseline, double max_rotation, do
       if (pass == 1 && !(guided && lost_long)) break;
       const bool g = pass == 0 && guided;
       for (int trail = 0; trail < 2; ++trail) {
+        if (against_images(direction, trail == 0 ? 1 : -1, baseline)) continue;
         double min_ns = g ? kTofMaxTau * 1e9 : 0, max_ns = g ? 0 : kTofMaxTau * 1e9;
         for (double h : hints) {
           if (!g || !guiding(h, trail, baseline)) continue;

@@ -8,6 +8,7 @@
 #include "lumavel/core/config.hpp"
 #include "lumavel/core/gyro_integrator.hpp"
 #include "lumavel/core/gyro_offset.hpp"
+#include "lumavel/core/image_direction.hpp"
 #include "lumavel/core/kernel_bank.hpp"
 #include "lumavel/core/measurement.hpp"
 #include "lumavel/core/photometric_match.hpp"
@@ -87,6 +88,8 @@ class Estimator {
   GyroOffset gyro_offset_{};
   VelocityObserver observer_{};
   TimeOfFlight tof_{};
+  ImageDirection direction_{};
+  int8_t look_ = 0;  // image_look() of the cameras
   PhotometricBalance balance_{};
 #if LUMAVEL_MATCH_FRAMES > 0
   PhotometricMatch match_{};

@@ -81,6 +81,23 @@ constexpr double kTofMaxTau = 0.6;
 constexpr double kTofLostTime = 0.5;
 constexpr int kTofLostAcquireFrames = 6;
 
+// ---- the image's direction of travel (image_direction.hpp) ----
+// Each camera's image motion that the gyro's turn does not explain, as a yaw
+// rate (rad/s), smoothed over this time (s) ...
+constexpr double kImageDirectionTau = 0.2;
+// ... states a direction only beyond this rate (an unlearned gyro offset of a
+// few deg/s reads as image motion; at rest the back-and-forth scenes' reading
+// reached 0.22 rad/s at 0.05, none at 0.1 once it also passed the scatter
+// below) ...
+constexpr double kImageDirectionMinRate = 0.1;
+// ... and beyond this many of its own scatter (its rms about the smoothed
+// value, smoothed alike): at one, the slaloms of cameras that differ read the
+// wrong direction on 2-8 frames; at two, none of 130 renders did.
+constexpr double kImageDirectionSigmas = 2.0;
+// Cameras that look within 30 deg of the travel (|sin| of their mean axis
+// yaw below this) see too little of the travel's image motion: no direction.
+constexpr double kImageDirectionMinLook = 0.5;
+
 // ---- fusion (velocity_fusion.hpp) ----
 // The differential's residual ratio is tracked only while it moves: from
 // this speed (m/s), its gain ramped in to full at the second (no step that

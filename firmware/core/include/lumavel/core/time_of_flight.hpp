@@ -62,6 +62,8 @@ struct TofTrackInput {
   SpeedQ16 v_fused;            // the current fused velocity (a new track must agree with it ...
   SpeedQ16 v_direct;           // ... or with this frame's direct value, scaled; v_fused without one)
   uint8_t count;               // kernels
+  int8_t direction;            // the images' direction of travel (image_direction.hpp), 0 unknown: no
+                               // track against it is taken or kept
 };
 
 class TimeOfFlight {

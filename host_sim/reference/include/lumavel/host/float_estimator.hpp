@@ -11,6 +11,7 @@
 #include "lumavel/host/engine.hpp"
 #include "lumavel/host/float_gyro_integrator.hpp"
 #include "lumavel/host/float_gyro_offset.hpp"
+#include "lumavel/host/float_image_direction.hpp"
 #include "lumavel/host/float_kernel_bank.hpp"
 #include "lumavel/host/float_measurement.hpp"
 #include "lumavel/host/float_photometric_balance.hpp"
@@ -36,6 +37,8 @@ class FloatEstimator {
   FloatGyroOffset gyro_offset_;
   FloatVelocityObserver observer_;
   FloatTimeOfFlight tof_;
+  FloatImageDirection direction_;
+  int look_ = 0;
   FloatPhotometricBalance balance_;
   FloatPhotometricMatch match_;
   FloatVelocityFusion fusion_;

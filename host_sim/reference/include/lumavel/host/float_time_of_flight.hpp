@@ -30,7 +30,8 @@ class FloatTimeOfFlight {
  public:
   void reset();
   void push(const FloatTofFrame& frame);
-  FloatTofResult track(double baseline, double max_rotation, double v_fused, double v_direct);
+  // direction: the images' direction of travel (FloatImageDirection), 0 unknown.
+  FloatTofResult track(int direction, double baseline, double max_rotation, double v_fused, double v_direct);
 
  private:
   struct Candidate {
