@@ -164,6 +164,13 @@ TEST(ConfigText, ValuesBeyondTheirFieldGetTheRule) {
                offline_refusal("width=40\nheight=30\nfu0_px=1e300\n").c_str());
   STRCMP_EQUAL("rig.cfg:1: baseline_m = 1e400: baseline |h| must be 0.001..1 m",
                offline_refusal("baseline_m=1e400\n").c_str());
+  // One too small for a double is not beyond its field (was: 'lens_cam0 value
+  // 2: 1e-400 rad is outside [-1, 1)', a rule the value meets).
+  STRCMP_EQUAL("rig.cfg:1: misalignment_rad = 1e-400: nearer 0 than the smallest number (about 2.2e-308); "
+               "misalignment must be -0.35..0.35 rad",
+               offline_refusal("misalignment_rad=1e-400\n").c_str());
+  STRCMP_EQUAL("rig.cfg:1: lens_cam0 value 2: \"1e-400\" is nearer 0 than the smallest number (about 2.2e-308)",
+               offline_refusal("lens_cam0=0,1e-400\n").c_str());
   STRCMP_EQUAL("rig.cfg:1: baseline_m = nan: not a finite number; baseline |h| must be 0.001..1 m",
                offline_refusal("baseline_m=nan\n").c_str());
   STRCMP_EQUAL("rig.cfg:1: gyro_offset_learning = yes: not a whole number; gyro_offset_learning must be 0 or 1",

@@ -353,6 +353,15 @@ TEST(BadInput, SensorYamlBadValueNamesLine) {
   STRCMP_CONTAINS((y + ":" + std::to_string(line) + ": rate_hz: value '1e400' is beyond the largest number (about 1.8e308)")
                       .c_str(),
                   load_error().c_str());
+  // One too small for a double, the same (was: 'rate_hz = 0 must be
+  // positive', a value the file does not hold).
+  for (std::string& l : lines)
+    if (l.rfind("rate_hz:", 0) == 0) l = "rate_hz: 1e-400";
+  fixture::write_lines(y, lines);
+  STRCMP_CONTAINS((y + ":" + std::to_string(line) +
+                   ": rate_hz: value '1e-400' is nearer 0 than the smallest number (about 2.2e-308)")
+                      .c_str(),
+                  load_error().c_str());
 }
 
 // A key with no value was named at the line of the next token: 'rate_hz:'

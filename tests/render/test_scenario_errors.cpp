@@ -93,6 +93,9 @@ TEST(ScenarioErrors, NotANumber) {
   // A number beyond a double's range is one (was: ''value' must be a number, got '1e400'').
   STRCMP_CONTAINS("bad.yaml:13: 'value' = '1e400' is beyond the largest number (about 1.8e308)",
                   error_of(replace(kGood, "value: 90", "value: 1e400")).c_str());
+  // One too small for a double, the same (was: ''value' = 0 is out of range').
+  STRCMP_CONTAINS("bad.yaml:13: 'value' = '1e-400' is nearer 0 than the smallest number (about 2.2e-308)",
+                  error_of(replace(kGood, "value: 90", "value: 1e-400")).c_str());
 }
 
 TEST(ScenarioErrors, WrongListLength) {

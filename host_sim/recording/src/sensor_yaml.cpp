@@ -143,6 +143,12 @@ double number(const YAML::Node& n, const std::string& what, const std::string& p
   }
   if (!std::isfinite(v))
     throw recording_error_at(path, line_of(n), what + ": value is not finite, got '" + shown_path(n.Scalar()) + "'");
+  // A number too small for a double is read as 0 (or a subnormal): said as
+  // such (was: 'rate_hz: 1e-400' said 'rate_hz = 0 must be positive', a
+  // value the file does not hold).
+  if (read_decimal(n.Scalar()).underflow)
+    throw recording_error_at(path, line_of(n), what + ": value '" + shown_path(n.Scalar()) +
+                                                   "' is " + kNearerZeroThanAnyNumber);
   return v;
 }
 

@@ -127,6 +127,11 @@ class Reader {
       fail(n, "'" + key + "' must be a number, got '" + shown_path(n.Scalar()) + "'");
     }
     if (!std::isfinite(v)) fail(n, "'" + key + "' must be finite");
+    // One too small for a double is read as 0 or a subnormal (was:
+    // 'duration_s: 1e-400' said ''duration_s' = 0 is out of range'), said
+    // as sensor.yaml says it.
+    if (read_decimal(n.Scalar()).underflow)
+      fail(n, "'" + key + "' = '" + shown_path(n.Scalar()) + "' is " + kNearerZeroThanAnyNumber);
     if (v < lo || v > hi) {
       fail(n, "'" + key + "' = " + shown_number(v) + " is out of range [" + shown_number(lo) + ", " + shown_number(hi) +
                   "]");

@@ -6,6 +6,8 @@
 
 namespace lumavel::host {
 
+const char* const kNearerZeroThanAnyNumber = "nearer 0 than the smallest number (about 2.2e-308)";
+
 DecimalText read_decimal(const std::string& text) {
   DecimalText d;
   using P = DecimalText::Problem;

@@ -45,7 +45,11 @@ double parse_double(const std::string& v) {
   if (d.problem == P::kHexadecimal)
     throw BadValue("a hexadecimal number: only decimal numbers are read", false);
   if (d.problem == P::kNotFinite && std::isnan(d.value)) throw BadValue("not a finite number", false);
-  if (d.problem == P::kOverflow || d.problem == P::kNotFinite || d.underflow) throw BadValue("beyond any field", true);
+  // Too small for a double: not beyond the field but unreadable (was: 'lens_cam0
+  // value 2: 1e-400 rad is outside [-1, 1)', 'misalignment_rad = 1e-400:
+  // misalignment must be -0.35..0.35 rad', rules the value meets).
+  if (d.underflow) throw BadValue(kNearerZeroThanAnyNumber, false);
+  if (d.problem == P::kOverflow || d.problem == P::kNotFinite) throw BadValue("beyond any field", true);
   if (d.problem != P::kNone) throw BadValue("not a number", false);
   return d.value;
 }

@@ -26,6 +26,10 @@ struct DecimalText {
   bool underflow = false;  // kNone, but smaller than the smallest double (read as 0 or subnormal)
 };
 DecimalText read_decimal(const std::string& text);
+// The words for a number that `underflow` flags, for messages: what it is
+// read as (0, or a subnormal) is not the value written, and a rule said of
+// that value ('= 0 must be positive') is not the value's fault.
+extern const char* const kNearerZeroThanAnyNumber;  // "nearer 0 than the smallest number (about 2.2e-308)"
 
 // TEXT read whole as a whole number: decimal digits with an optional sign,
 // nothing else (no spaces). A leading zero is refused: "040" is 32 to C's
