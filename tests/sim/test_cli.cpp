@@ -772,6 +772,21 @@ TEST(Cli, CalibrateWarnsWhenCoarserThanValidated) {
   STRCMP_CONTAINS("calibrate: warning: registering at 20 columns (--width)\n", r.err.c_str());
 }
 
+// --width wider than the sensor is refused as run refuses it, one rule (was:
+// registered at the sensor's 40 columns with a warning, where run exits 1).
+TEST(Cli, CalibrateRefusesAWidthBeyondTheSensorAsRunDoes) {
+  rec();
+  const std::string said = "rec/mav0/cam0/sensor.yaml:";
+  Outcome r = sim("run rec -q -o est.csv --width 80");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("cannot bin the 40x30 sensor up to the working resolution 80x30", r.err.c_str());
+  r = sim("calibrate rec -q --width 80");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS(said.c_str(), r.err.c_str());
+  STRCMP_CONTAINS("cannot bin the 40x30 sensor up to the working resolution 80x30 (choose a smaller --width/--height)",
+                  r.err.c_str());
+}
+
 // The same short options in every command that has them.
 TEST(Cli, QuietIsDashQEverywhere) {
   for (const char* cmd : {"run", "render", "calibrate"})

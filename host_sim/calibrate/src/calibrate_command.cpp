@@ -42,6 +42,7 @@ constexpr int kRegistrationColumns = 160;
 
 struct CalibrateArgs {
   std::string rec, write_path, write_size;
+  int width = 0;  // --width; 0: the default, kRegistrationColumns or the sensor's width when smaller
   CalibrationOptions opt;
   bool quiet = false;
 };
@@ -73,6 +74,11 @@ int calibrate(CalibrateArgs& a) {
     if (const std::string why = why_not_writable(a.write_path, "configuration file"); !why.empty())
       throw std::runtime_error(shown_path(a.write_path) + " (--write): " + why);
   const Recording rec = load_recording(a.rec);
+  // --width wider than the sensor is refused by run's rule, naming the
+  // sensor.yaml (was: registered at the sensor's width with a warning, where
+  // run refuses); only the default is cut to a narrower sensor.
+  if (a.width > 0) check_bins_down(rec, {a.width, rec.cam[0].height});
+  a.opt.width = a.width > 0 ? a.width : std::min(kRegistrationColumns, rec.cam[0].width);
   if (!a.write_path.empty() && overwrites_recording(rec, a.write_path))
     throw cli::UsageError(shown_path(a.write_path) + " (--write): that is part of the recording being read (" +
                           shown_path(rec.root) + "); write the configuration elsewhere");
@@ -97,14 +103,14 @@ int calibrate(CalibrateArgs& a) {
                  "calibrate: warning: %s: %s (the heading is interpolated across a gyro hole; frames beyond the gyro "
                  "read no turn)\n",
                  a.rec.c_str(), format_gaps(rec.gaps).c_str());
-  const int columns = std::min(a.opt.width, rec.cam[0].width);
+  const int columns = a.opt.width;
   if (columns < kRegistrationColumns)
     std::fprintf(stderr,
                  "calibrate: warning: registering at %d columns (%s)\n"
                  "calibrate: warning: calibrate is validated at %d columns (docs/results.md); on coarser images\n"
                  "  its estimate and its uncertainty are less reliable\n",
                  columns,
-                 columns < a.opt.width ? ("the sensor's width: " + a.rec + " has " + std::to_string(rec.cam[0].width) +
+                 a.width == 0 ? ("the sensor's width: " + a.rec + " has " + std::to_string(rec.cam[0].width) +
                                           " columns").c_str()
                                        : "--width",
                  kRegistrationColumns);
@@ -118,7 +124,7 @@ int calibrate(CalibrateArgs& a) {
     throw;
   }
   stages->finish();
-  const EstimatorSettings s = derive_settings(rec, {std::min(a.opt.width, rec.cam[0].width), 1});
+  const EstimatorSettings s = derive_settings(rec, {a.opt.width, 1});
   const double in_yaml = s.cam[1].axis_yaw - s.cam[0].axis_yaw;
   std::printf("registered at %dx%d (the %dx%d sensor%s)\n", c.width, c.height, rec.cam[0].width,
               rec.cam[0].height, c.width < rec.cam[0].width ? " binned" : "'s own size");
@@ -164,10 +170,9 @@ int calibrate(CalibrateArgs& a) {
 
 void add_calibrate_command(cli::Tool& tool) {
   auto a = std::make_shared<CalibrateArgs>();
-  a->opt.width = kRegistrationColumns;
   CLI::App* c = tool.command("calibrate", kDescription, [a] { return calibrate(*a); });
   c->add_option("REC", a->rec, "the recording folder (REC or REC/mav0)")->required()->type_name("")->check(cli::path_name());
-  c->add_option("--width", a->opt.width,
+  c->add_option("--width", a->width,
                 "working columns for the registration, 16..160 (default " +
                     std::to_string(kRegistrationColumns) + ", or the\nsensor's width when smaller)")
       ->type_name("W")
