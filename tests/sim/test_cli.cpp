@@ -210,6 +210,22 @@ TEST(Cli, AWholeNumberWithALeadingZeroIsRefused) {
   r = sim("run '" + r0 + "' -o est.csv --width +20");
   LONGS_EQUAL(0, r.code);
   STRCMP_CONTAINS(" 20x30 working", r.err.c_str());
+  // A space is no part of a number: refused saying so (was: 'must be a whole
+  // number in 16..2048, not ' 20'', the reason left to the quotes), in a
+  // whole number, a decimal and a size alike.
+  r = sim("run '" + r0 + "' -o est.csv --width ' 20'");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("lumavel-sim run: --width: must be a whole number in 16..2048 (above 160 only with --engine vo), "
+                  "written without spaces (a space is no part of a number), not ' 20'",
+                  r.err.c_str());
+  r = sim("calibrate '" + r0 + "' --max-shift '5 '");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("--max-shift: must be a number in (0, 20], written without spaces (a space is no part of a number), "
+                  "not '5 '",
+                  r.err.c_str());
+  r = sim("render a.yaml out --resolution '40x 30'");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("(e.g. 40x30), written without spaces (a space is no part of a number), not '40x 30'", r.err.c_str());
   r = sim("run '" + r0 + "' -o est.csv --width 0");
   LONGS_EQUAL(2, r.code);
   STRCMP_CONTAINS("not '0'", r.err.c_str());

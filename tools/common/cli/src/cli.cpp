@@ -60,6 +60,17 @@ bool has_leading_zero(const std::string& s) {
 // What a message adds when a leading zero is what is wrong.
 std::string leading_zero_note(bool zero) { return zero ? ", written without a leading zero (octal to some readers)" : ""; }
 
+// What a message adds when a space is what is wrong: the options' numbers
+// are a number's characters alone, a sign included ('+40' is 40 to every
+// reader of these tools: decimal_text.hpp), but a space is no part of one
+// (' 20', '20 ' were refused as 'not a whole number' with no word of the
+// space, which the quotes alone show; a value built by a script with a stray
+// space or two values in one argument, '20 15', is a mistake to show).
+std::string space_note(const std::string& s) {
+  const bool space = std::any_of(s.begin(), s.end(), [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; });
+  return space ? ", written without spaces (a space is no part of a number)" : "";
+}
+
 // Decimal only, as the files' numbers (decimal_text.hpp): '--baseline 0x1p-5' is refused, not 0.03125.
 bool parse_double(const std::string& s, double& out) {
   if (s.empty() || std::isspace(static_cast<unsigned char>(s[0]))) return false;
@@ -208,7 +219,7 @@ CLI::Validator whole_number_in(long long lo, long long hi, const std::string& no
         long long v = 0;
         if (!parse_long(s, v) || v < lo || v > hi)
           return "must be a whole number in " + std::to_string(lo) + ".." + std::to_string(hi) + note +
-                 leading_zero_note(has_leading_zero(s)) + ", not " + in_quotes(s);
+                 leading_zero_note(has_leading_zero(s)) + space_note(s) + ", not " + in_quotes(s);
         return {};
       },
       "");
@@ -219,7 +230,8 @@ CLI::Validator number_in(double lo, double hi) {
       [lo, hi](std::string& s) -> std::string {
         double v = 0;
         if (!parse_double(s, v) || v < lo || v > hi)
-          return "must be a number in [" + number_text(lo) + ", " + number_text(hi) + "], not " + in_quotes(s);
+          return "must be a number in [" + number_text(lo) + ", " + number_text(hi) + "]" + space_note(s) + ", not " +
+                 in_quotes(s);
         return {};
       },
       "");
@@ -230,7 +242,7 @@ CLI::Validator positive_number_up_to(double hi) {
       [hi](std::string& s) -> std::string {
         double v = 0;
         if (!parse_double(s, v) || !(v > 0) || v > hi)
-          return "must be a number in (0, " + number_text(hi) + "], not " + in_quotes(s);
+          return "must be a number in (0, " + number_text(hi) + "]" + space_note(s) + ", not " + in_quotes(s);
         return {};
       },
       "");
@@ -278,7 +290,7 @@ CLI::Validator size_wxh(int max_w, int max_h) {
           const size_t x = s.find('x');
           const bool zero = x != std::string::npos && (has_leading_zero(s.substr(0, x)) || has_leading_zero(s.substr(x + 1)));
           return "must be WxH with W in 1.." + std::to_string(max_w) + " and H in 1.." + std::to_string(max_h) +
-                 " (e.g. 40x30)" + leading_zero_note(zero) + ", not " + in_quotes(s);
+                 " (e.g. 40x30)" + leading_zero_note(zero) + space_note(s) + ", not " + in_quotes(s);
         }
         return {};
       },
