@@ -17,8 +17,12 @@ FileStereoCamera::FileStereoCamera(const Recording& rec, int width, int height, 
       width_(static_cast<uint16_t>(width)),
       height_(static_cast<uint16_t>(height)),
       match_clipping_(processing.match_clipping) {
+  // Beyond the sensor: run's rule and words, naming the resolution's line
+  // (was: 'sensor.yaml: cannot bin 20x15 frames to 40x30', a second wording
+  // of it, which lumavel_recording_to_stream showed).
+  check_bins_down(rec, {width, height});
   for (int c = 0; c < 2; ++c)
-    if (width < 1 || height < 1 || width > rec.cam[c].width || height > rec.cam[c].height || width > 2048)
+    if (width < 1 || height < 1 || width > 2048)
       throw recording_error_in(rec.root + "/" + layout::kCamDir[c] + "/sensor.yaml",
                                "cannot bin " + std::to_string(rec.cam[c].width) + "x" +
                                    std::to_string(rec.cam[c].height) + " frames to " + std::to_string(width) + "x" +
