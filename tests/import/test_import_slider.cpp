@@ -337,6 +337,20 @@ TEST(ImportSlider, DamagedDatasetsAreRefusedNamingTheLine) {
        "groundtruth.txt:5: the camera is turned 5 deg from the dataset's axes (qx qy qz qw = 0 0.043619 0 0.999048): "
        "the import takes the positions as camera axes and makes cam1 from cam0's frames by time shift with a zero gyro, "
        "which holds for a slider that does not turn: at most 1.1458 deg (a pixel at fx = 50 px)"},
+      // A slider that moves along y more than x: its positions in another frame
+      // than the camera's (was: exit 0, cam1 made by the x shift alone).
+      {[&] {
+         std::vector<std::string> l = fixture::read_lines(d + "/groundtruth.txt");
+         for (std::string& s : l) {
+           const size_t a = s.find(' ') + 1, b = s.find(' ', a);
+           const double x = std::stod(s.substr(a, b - a));
+           s = s.substr(0, b) + " " + std::to_string(2 * (x - kX0)) + s.substr(s.find(' ', b + 1));
+         }
+         fixture::write_lines(d + "/groundtruth.txt", l);
+       },
+       "groundtruth.txt: from line 1 to line 41 the slider moves 63.435 deg off the camera's x axis (x 0.1 m, y 0.2 "
+       "m, z 0 m): the import makes cam1 from cam0's frames h further on along x, which holds for a slider that moves "
+       "along x: at most 1.1458 deg (a pixel at fx = 50 px)"},
       // The recording's physical bounds (was: exit 0, a speed of 2.5e301 m/s written).
       {[&] { line5("groundtruth.txt", [](const std::string& l) { const size_t a = l.find(' ') + 1; return l.substr(0, a) + "1e300" + l.substr(l.find(' ', a)); }); },
        "groundtruth.txt:5: x: 1e+300 m is beyond +-1e+07 m"},

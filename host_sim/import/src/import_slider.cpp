@@ -143,6 +143,26 @@ void check_does_not_turn(const std::vector<SliderPose>& poses, double fx, const 
   }
 }
 
+// The same of the travel: cam1 is cam0's frame h further on along x, which
+// holds for a slider that moves along the camera's x axis. One whose travel,
+// first pose to last, leaves that axis by more than a pixel's angle at fx is
+// refused (was: a slider moving 1 m along y and 0.3 m along x, positions in
+// another frame than the camera's, imported, exit 0, cam1 made by the x
+// shift alone and the rig written with a baseline along x).
+void check_moves_along_x(const std::vector<SliderPose>& poses, double fx, const std::string& gt_file) {
+  const SliderPose &a = poses.front(), &b = poses.back();
+  const double dx = b.p[0] - a.p[0], dy = b.p[1] - a.p[1], dz = b.p[2] - a.p[2];
+  const double off = std::atan2(std::hypot(dy, dz), dx), limit = std::atan(1.0 / fx);
+  if (off <= limit) return;
+  char m[512];
+  std::snprintf(m, sizeof m,
+                "from line %ld to line %ld the slider moves %.5g deg off the camera's x axis (x %.6g m, y %.6g m, z "
+                "%.6g m): the import makes cam1 from cam0's frames h further on along x, which holds for a slider "
+                "that moves along x: at most %.5g deg (a pixel at fx = %g px)",
+                a.line, b.line, off * 180 / M_PI, dx, dy, dz, limit * 180 / M_PI, fx);
+  throw recording_error_in(gt_file, m);
+}
+
 // Each frame's position is the ground truth's at the frame's time; a ground
 // truth whose times miss every frame (another clock or time unit) gave no
 // position at all, refused as 'no frame has a partner ... (baseline longer
@@ -186,6 +206,7 @@ ImportSliderSummary import_slider(const std::string& data_dir, const std::string
   if (!(d.poses.back().p[0] > d.poses.front().p[0]))
     throw recording_error_in(gt_file, "the slider does not move along +x (the import assumes it does)");
   check_does_not_turn(d.poses, d.calib.fx, gt_file);
+  check_moves_along_x(d.poses, d.calib.fx, gt_file);
   // Before anything is written: its speeds are checked.
   const std::vector<GroundTruthSample> truth = body_groundtruth(d.poses, options.baseline, gt_file);
   if (d.calib.k3 != 0)
