@@ -303,6 +303,30 @@ TEST(ScenarioErrors, TimesThatLeaveTheFormatAreRefused) {
   STRCMP_CONTAINS("first_frame_s", e.c_str());
 }
 
+// The seed, the resolution and dropped frames are read as start_ns and the
+// command lines read whole numbers (was: 'seed: 010' rendered with seed 10
+// and '1e3' with 1000, 'resolution: [040, 30]' at 40 columns, 'frames:
+// [010]' dropped frame 10, where '--seed 010' and '--resolution 040x30' are
+// refused and YAML 1.1 readers take 010 as 8).
+TEST(ScenarioErrors, WholeNumbersAreReadAsTheCommandLinesReadThem) {
+  STRCMP_EQUAL("bad.yaml:1: 'seed' must be a whole number in 0..9007199254740992, written without a leading zero, "
+               "not '010'",
+               error_of(std::string("seed: 010\n") + kGood).c_str());
+  STRCMP_EQUAL("bad.yaml:1: 'seed' must be a whole number in 0..9007199254740992, not '1e3'",
+               error_of(std::string("seed: 1e3\n") + kGood).c_str());
+  STRCMP_EQUAL("bad.yaml:1: 'seed' must be a whole number in 0..9007199254740992, not '5.5'",
+               error_of(std::string("seed: 5.5\n") + kGood).c_str());
+  CHECK_EQUAL(7u, parse_scenario(std::string("seed: 7\n") + kGood, "good.yaml").seed);
+  STRCMP_EQUAL("bad.yaml:3: 'resolution' must be a whole number in 1..16384 (pixels), written without a leading "
+               "zero, not '040'",
+               error_of(replace(kGood, "resolution: [40, 30]", "resolution: [040, 30]")).c_str());
+  STRCMP_EQUAL("bad.yaml:3: 'resolution' must be a whole number in 1..16384 (pixels), not '30.5'",
+               error_of(replace(kGood, "resolution: [40, 30]", "resolution: [40, 30.5]")).c_str());
+  STRCMP_EQUAL("bad.yaml:14: 'frames' must be a whole number in 0..1000000000 (frame numbers), written without a "
+               "leading zero, not '010'",
+               error_of(std::string(kGood) + "drops: {frames: [3, 010]}\n").c_str());
+}
+
 // start_ns is read as the command lines read whole numbers: yaml-cpp read
 // C's base-0 forms ('010' as 8 ns, '0x10' as 16), the seed's reader 010 as 10.
 TEST(ScenarioErrors, AStartTimeInOctalOrHexadecimalIsRefused) {

@@ -151,6 +151,20 @@ class Reader {
     return to_num(n, key, lo, hi);
   }
 
+  // A whole number, read as the command lines read theirs (decimal_text.hpp's
+  // read_whole): yaml-cpp's as<long long> reads C's base-0 forms ('010' as 8,
+  // 0x10 as 16), its as<double> '010' as 10 and '1e3' as 1000, where YAML 1.1
+  // readers take 010 as 8 and '--seed 010' is refused. `range`: what follows
+  // "must be a whole number" in the message (" in 0..9007199254740992").
+  long long whole(const YAML::Node& n, const std::string& key, long long lo, long long hi,
+                  const std::string& range) const {
+    const WholeText w = n.IsScalar() ? read_whole(n.Scalar()) : WholeText{WholeText::Problem::kNotAWholeNumber, 0};
+    if (w.problem == WholeText::Problem::kNone && w.value >= lo && w.value <= hi) return w.value;
+    fail(n, "'" + key + "' must be a whole number" + range +
+                (w.problem == WholeText::Problem::kLeadingZero ? ", written without a leading zero" : "") + ", not '" +
+                (n.IsScalar() ? shown_path(n.Scalar()) : std::string("?")) + "'");
+  }
+
   std::vector<double> list(const YAML::Node& n, const std::string& key, size_t count, double lo,
                            double hi) const {
     if (!n.IsSequence() || (count != 0 && n.size() != count)) {
@@ -282,10 +296,13 @@ void read_camera(const Reader& r, const YAML::Node& n, Scenario& s) {
                              "misalignment_deg", "look", "ahead", "rig_yaw_deg", "first_frame_s",
                              "noise_sigma", "distortion", "photometric"});
   CameraSpec& c = s.camera;
-  if (n["resolution"]) {
-    const auto v = r.list(n["resolution"], "resolution", 2, 1, kMaxImageSide);
-    if (v[0] != std::floor(v[0]) || v[1] != std::floor(v[1]))
-      r.fail(n["resolution"], "'resolution' must be two whole numbers [width, height]");
+  if (const YAML::Node rn = n["resolution"]) {
+    if (!rn.IsSequence() || rn.size() != 2) r.fail(rn, "'resolution' must be a list of 2 numbers");
+    // Pixels as --resolution reads them (was: 'resolution: [040, 30]' rendered
+    // at 40 columns, where '--resolution 040x30' is refused).
+    const std::string range = " in 1.." + std::to_string(static_cast<long long>(kMaxImageSide)) + " (pixels)";
+    const double v[2] = {static_cast<double>(r.whole(rn[0], "resolution", 1, static_cast<long long>(kMaxImageSide), range)),
+                         static_cast<double>(r.whole(rn[1], "resolution", 1, static_cast<long long>(kMaxImageSide), range))};
     // (was: rendered, for hours at 8192x8192, then refused by run's check)
     if (const std::string why = why_too_many_pixels(v[0], v[1]); !why.empty())
       r.fail(n["resolution"], "'resolution' = [" + std::to_string(static_cast<long>(v[0])) + ", " +
@@ -514,11 +531,11 @@ void read_drops(const Reader& r, const YAML::Node& n, Scenario& s) {
     const double first_ns = static_cast<double>(std::llround(s.camera.first_frame_s * 1e9));
     const double frames = std::max(0.0, std::ceil((s.duration_s * 1e9 - first_ns) / period_ns));
     std::map<int, int> line_of;
-    const std::vector<double> list = r.list(f, "frames", 0, 0, 1e9);
-    for (size_t k = 0; k < list.size(); ++k) {
-      const double v = list[k];
+    if (!f.IsSequence()) r.fail(f, "'frames' must be a list of numbers");
+    for (size_t k = 0; k < f.size(); ++k) {
       const YAML::Node e = f[k];
-      if (v != std::floor(v)) r.fail(f, "'frames' must be whole frame indices");
+      // Frame numbers as the seed's (was: 'frames: [010]' dropped frame 10).
+      const double v = static_cast<double>(r.whole(e, "frames", 0, 1000000000, " in 0..1000000000 (frame numbers)"));
       if ((first_ns + v * period_ns) * 1e-9 >= s.duration_s) {
         r.fail(e, "'frames' = " + std::to_string(static_cast<long long>(v)) +
                       " is not a frame of the recording: frame numbers must be below its frame count, " +
@@ -583,23 +600,15 @@ Scenario parse_scenario(const std::string& text, const std::string& name,
     s.file = name;
     if (root["description"]) s.description = r.text(root["description"], "description");
     s.duration_s = r.req_num(root, "duration_s", kMinDurationS, kMaxDurationS, "scenario");
-    const double seed = r.num(root, "seed", 1, 0, 9007199254740992.0);
-    if (seed != std::floor(seed)) r.fail(root["seed"], "'seed' must be a whole number");
-    s.seed = static_cast<uint64_t>(seed);
-    if (const YAML::Node n = root["start_ns"]) {
-      // As the command lines read whole numbers (decimal_text.hpp): yaml-cpp's
-      // as<long long> reads C's base-0 forms, 'start_ns: 010' as 8 and 0x10 as 16.
-      const WholeText w = n.IsScalar() ? read_whole(n.Scalar()) : WholeText{WholeText::Problem::kNotAWholeNumber, 0};
-      const long long v = w.problem == WholeText::Problem::kNone ? w.value : -1;
-      // Timestamps start_ns + up to 1e6 s stay within the format's signed 64-bit nanoseconds.
-      constexpr long long kMaxStartNs = 4000000000000000000LL;
-      if (v < 0 || v > kMaxStartNs)
-        r.fail(n, std::string("'start_ns' must be a whole number of nanoseconds in 0..4e18 (timestamps must stay "
-                              "within signed 64 bits)") +
-                      (w.problem == WholeText::Problem::kLeadingZero ? ", written without a leading zero" : "") +
-                      ", not '" + (n.IsScalar() ? shown_path(n.Scalar()) : std::string("?")) + "'");
-      s.start_ns = v;
-    }
+    // The seed as --seed reads it (was: 'seed: 010' rendered with seed 10, '1e3'
+    // with 1000, where '--seed 010' is refused).
+    if (const YAML::Node n = root["seed"]) s.seed = static_cast<uint64_t>(r.whole(n, "seed", 0, 9007199254740992LL, " in 0..9007199254740992"));
+    else s.seed = 1;
+    // Timestamps start_ns + up to 1e6 s stay within the format's signed 64-bit nanoseconds.
+    constexpr long long kMaxStartNs = 4000000000000000000LL;
+    if (const YAML::Node n = root["start_ns"])
+      s.start_ns = r.whole(n, "start_ns", 0, kMaxStartNs,
+                           " of nanoseconds in 0..4e18 (timestamps must stay within signed 64 bits)");
     s.groundtruth_rate_hz = r.num(root, "groundtruth_rate_hz", 200, 1, 100000);
     if (root["camera"]) read_camera(r, root["camera"], s);
     if (!root["trajectory"]) r.fail(root, "scenario needs 'trajectory'");
