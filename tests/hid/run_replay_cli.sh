@@ -48,6 +48,19 @@ grep -q "adir: is a folder, not a report file" dir.err || fail "folder as report
 "$READ" replay est.csv -o refused.csv > /dev/null 2> notrep.err && fail "CSV accepted as a report file"
 grep -q "not a lumavel report file" notrep.err || fail "wrong message: $(cat notrep.err)"
 [ -e refused.csv ] && fail "a refused replay left refused.csv behind"
+# -o a folder or in a missing folder: said as lumavel-sim run -o says it, before
+# any device is looked for (was: 'adir: cannot create the CSV: Is a directory').
+for c in stream replay; do
+  arg=; [ $c = replay ] && arg=run.hidrep
+  timeout 30 "$READ" $c $arg -o adir > /dev/null 2> odir.err
+  rc=$?
+  [ $rc -eq 1 ] || fail "$c -o a folder: exit $rc, expected 1: $(cat odir.err)"
+  grep -q "^lumavel-read $c: error: adir (-o): is a folder, not a CSV file$" odir.err \
+    || fail "$c -o a folder: wrong message: $(cat odir.err)"
+  timeout 30 "$READ" $c $arg -o nofolder/x.csv > /dev/null 2> onf.err
+  grep -q "^lumavel-read $c: error: nofolder/x.csv (-o): cannot be created: its folder nofolder does not exist$" onf.err \
+    || fail "$c -o in a missing folder: wrong message: $(cat onf.err)"
+done
 # stream -o FIFO that no process reads: refused after 2 s, before any device
 # is looked for (was: waited in open() for ever).
 mkfifo nobody.fifo || fail "mkfifo"

@@ -48,6 +48,11 @@ void open_outputs(const StreamOptions& o, bool is_stream, Outputs& out) {
   const bool tty = ::isatty(STDOUT_FILENO) != 0;
   const int forced = o.live ? 1 : o.no_live ? 0 : -1;
   if (!o.output.empty() && o.output != "-") {
+    // A folder, or a name whose folder is missing, said as lumavel-sim's -o
+    // says it (was: 'adir: cannot create the CSV: Is a directory', 'no/x.csv:
+    // cannot create the CSV: No such file or directory').
+    if (const std::string why = host::why_not_writable(o.output, "CSV file"); !why.empty())
+      throw std::runtime_error(host::shown_path(o.output) + " (-o): " + why);
     // A FIFO nobody reads is refused after a short wait (fopen waited for ever).
     out.file = std::make_unique<host::OutputFile>(
         o.output, "the CSV", is_stream ? host::OutputFile::Placement::kInPlace : host::OutputFile::Placement::kReplaced);
