@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <filesystem>
 #include <string>
 #include <utility>
 #include <vector>
@@ -987,6 +988,19 @@ TEST(Cli, OutputsIntoTheRecordingAreRefused) {
   LONGS_EQUAL(2, r.code);
   STRCMP_CONTAINS("same.svg: -o and --plot name the same file", r.err.c_str());
   LONGS_EQUAL(0, sim("run rec --quiet -o rec/est.csv").code);  // beside mav0 is fine
+  // A symbolic link to nothing is written through: to the -o file's name, not
+  // yet written (was: exit 0, 'plot: lnk.svg' said and the plot replaced by
+  // the CSV), or into the recording (was: a new file in mav0, exit 0).
+  std::filesystem::create_symlink("new.csv", dir.path() + "/lnk.svg");
+  r = sim("run rec --quiet -o new.csv --plot lnk.svg");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("lnk.svg: -o and --plot name the same file", r.err.c_str());
+  CHECK(!exists(dir.path() + "/new.csv"));
+  std::filesystem::create_symlink("rec/mav0/new.csv", dir.path() + "/in.csv");
+  r = sim("run rec --quiet -o in.csv");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("in.csv (-o): that is part of the recording being read", r.err.c_str());
+  CHECK(!exists(dir.path() + "/rec/mav0/new.csv"));
 }
 
 // A report file that cannot be written ends the run with the cause (it was

@@ -359,8 +359,10 @@ double body_yaw_rate(const ImuSensor& imu, const ImuSample& s) {
 bool overwrites_recording(const Recording& rec, const std::string& path) {
   namespace fs = std::filesystem;
   std::error_code ec;
-  const fs::path out = fs::weakly_canonical(path, ec);
-  if (ec) return false;
+  // A link to nothing is written through: where it leads counts (written_path).
+  const std::string at = written_path(path);
+  if (at.empty()) return false;
+  const fs::path out = at;
   const fs::path root = fs::weakly_canonical(rec.root, ec);
   if (!ec) {
     const fs::path rel = out.lexically_relative(root);  // empty: unrelated; "..": outside

@@ -289,11 +289,15 @@ int run(const RunArgs& a) {
                               "): that is part of the recording being read (" + shown_path(rec.root) +
                               "); write outputs elsewhere");
       // (devices and FIFOs, such as /dev/null, may take several outputs)
-      std::error_code e1, e2;
+      // A symbolic link to nothing is written through (written_path): '--plot
+      // lnk.svg' with lnk.svg -> est.csv, '-o est.csv' not yet written, ran,
+      // exit 0, 'plot: lnk.svg' said and the plot replaced by the CSV.
+      std::error_code e1;
       const fs::file_status st = fs::status(outs[i].first, e1);
       if (fs::exists(st) && !fs::is_regular_file(st)) continue;
+      const std::string at = written_path(outs[i].first);
       for (size_t j = 0; j < i; ++j)
-        if (fs::weakly_canonical(outs[i].first, e1) == fs::weakly_canonical(outs[j].first, e2) && !e1 && !e2)
+        if (!at.empty() && at == written_path(outs[j].first))
           throw cli::UsageError(shown_path(outs[i].first) + ": " + outs[j].second + " and " + outs[i].second +
                                 " name the same file");
     }

@@ -211,6 +211,13 @@ std::string why_inner_mav0(const std::string& out) {
              "would make " + p + "/mav0): give " + parent;
 }
 
+std::string written_path(const std::string& path) {
+  const std::string to = dangling_link_target(path);
+  std::error_code ec;
+  const std::filesystem::path p = std::filesystem::weakly_canonical(to.empty() ? path : to, ec);
+  return ec ? std::string() : p.string();
+}
+
 std::string why_not_writable(const std::string& path, const std::string& what) {
   struct stat st {};
   if (path.empty()) return "an empty path, not a " + what;

@@ -46,6 +46,13 @@ std::string why_not_a_folder(const std::string& path, const std::string& what = 
 // which the callers that can write there take before asking) "'-' stands for
 // standard output, where no plot file is written: ...".
 std::string why_not_writable(const std::string& path, const std::string& what = "file");
+// Where a file written at `path` lands, absolute and normal (weakly_canonical),
+// for telling whether two outputs, or an output and an input, are one file:
+// `path` itself, or for a symbolic link to nothing, which a write follows and
+// creates, its target (weakly_canonical keeps such a link's own name, and a
+// link to the -o file's name, not yet written, passed as another file). ""
+// when it cannot be said.
+std::string written_path(const std::string& path);
 // The reason "-" is refused where an output cannot go to standard output:
 // "'-' stands for standard output, where no `what` is written: give a `kind`
 // name (./- for a `kind` of that name)" (kind: "file", or "folder" for an
