@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <new>
 
 #include "lumavel/host/csv_table.hpp"
@@ -189,6 +190,23 @@ TEST(BadInput, NulByteInsideANumber) {
   fixture::set_line(gt, 4, line4.substr(0, line4.find(',')) + std::string(",0\0" "5,0,0,1,0,0,0,1,0,0,0,0,0,0,0,0", 34));
   fixture::set_line(m + "imu0/data.csv", 12, "1010000000,0.001,-0.002,0.02,0.1,0,9.81");
   STRCMP_CONTAINS((gt + ":4: column 'p_RS_R_x [m]': '0' is followed by a NUL byte").c_str(), load_error().c_str());
+}
+
+// A table padded with NUL bytes, as a crash or a full disk leaves a file cut
+// short: the column count was said, the NUL bytes not (was: 'imu0/data.csv:N:
+// expected 7 columns, found 1').
+TEST(BadInput, ATablePaddedWithNulBytesSaysSo) {
+  const std::string imu = m + "imu0/data.csv";
+  const size_t rows = fixture::read_lines(imu).size();
+  {
+    std::ofstream out(imu, std::ios::app | std::ios::binary);
+    out << std::string(4096, '\0');
+  }
+  STRCMP_CONTAINS((imu + ":" + std::to_string(rows + 1) +
+                   ": expected 7 columns, found 1: the line holds 4096 NUL bytes, the first at character 1 (no part "
+                   "of a table's text: a damaged file, as one a crash or a full disk left padded with them)")
+                      .c_str(),
+                  load_error().c_str());
 }
 
 TEST(BadInput, InfInGroundTruth) {

@@ -1,5 +1,6 @@
 #include "lumavel/host/csv_table.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -152,10 +153,19 @@ void for_each_csv_row(const std::string& path, const std::vector<std::string>& c
     if (t.empty()) continue;  // blank lines (a trailing newline) carry nothing
     row.line = line;
     row.fields = split(t);
-    if (row.fields.size() != columns.size() + 1)
+    if (row.fields.size() != columns.size() + 1) {
+      // NUL bytes where rows should be are what a file a crash or a full disk
+      // cut short is padded with (was: 'expected 7 columns, found 1' alone,
+      // the cause unsaid).
+      std::string nul;
+      if (t.find('\0') != std::string::npos)
+        nul = ": the line holds " + std::to_string(std::count(t.begin(), t.end(), '\0')) +
+              " NUL bytes, the first at character " + std::to_string(text.find('\0') + 1) +
+              " (no part of a table's text: a damaged file, as one a crash or a full disk left padded with them)";
       throw recording_error_at(path, line,
                                "expected " + std::to_string(columns.size() + 1) + " columns, found " +
-                                   std::to_string(row.fields.size()));
+                                   std::to_string(row.fields.size()) + nul);
+    }
     const std::string& ts = row.fields[0];
     const auto r = std::from_chars(ts.data(), ts.data() + ts.size(), row.t_ns);
     // EuRoC timestamps are int64 nanoseconds; beyond that, differences of
