@@ -107,6 +107,16 @@ TEST(Config, ATimeInARefusalIsItsWholeMicroseconds) {
   } catch (const std::invalid_argument& e) {
     STRCMP_EQUAL("frame period = 0.000999 s: frame period must be 1 ms..1 s", e.what());
   }
+  // Under half a microsecond (frame timestamps in milliseconds read as
+  // nanoseconds, 17 ns apart) was said as 'frame period = 0 s'.
+  s = test::SyntheticRig{}.settings();
+  s.frame_period = 17e-9;
+  try {
+    host::to_fixed_config(s);
+    FAIL("accepted");
+  } catch (const std::invalid_argument& e) {
+    STRCMP_EQUAL("frame period = 1.7e-08 s: frame period must be 1 ms..1 s", e.what());
+  }
 }
 
 TEST(Config, EstimatorKeepsItsConfigurationOnError) {

@@ -25,9 +25,12 @@ std::string g(double v) {
 // 1000001 us, as 'frame period = 1 s: frame period must be 1 ms..1 s', a
 // refusal its own words allow. "1.000001", "0.016667", "0.000017" (%g
 // for what is not a microsecond or more, and for what %f would print long).
+// Under half a microsecond rounds to 0 us: %g too (was: frame timestamps in
+// milliseconds, 17 ns apart, said 'frame period = 0 s: frame period must be
+// 1 ms..1 s', a period the file does not have).
 std::string us_text(double seconds) {
   const double us = std::round(seconds * 1e6);
-  if (!(std::fabs(us) < 1e15) || (us != 0 && std::fabs(us) < 1)) return g(seconds);
+  if (!(std::fabs(us) < 1e15) || (seconds != 0 && std::fabs(us) < 1)) return g(seconds);
   char b[64];
   std::snprintf(b, sizeof b, "%.6f", us / 1e6);
   std::string t = b;
