@@ -225,6 +225,7 @@ Estimate Estimator::step_profiles(uint64_t t_ns, ColumnProfile& p0, ColumnProfil
       fin.scale_max_turn = scale_max_turn_;
       const FusionOutput fo = fusion_.update(fin);
       if (!fo.used_tof) status |= kStatusNoTof;
+      if (direction_.against(fo.v)) status |= kStatusAgainstImages;
       if (fo.saturated) status |= kStatusSaturated;
       est.tof_ns = tof.ok ? tof.tau_ns : 0;
       distance_ = advance(distance_, fo.v, dt_ns, &distance_rem_);

@@ -50,6 +50,11 @@ void ImageDirection::update(const StereoMeasurement& prev, const StereoMeasureme
   direction_ = clear ? (m > 0 ? 1 : -1) : 0;
 }
 
+bool ImageDirection::against(SpeedQ16 v) const {
+  constexpr int64_t kFlagSpeedQ16 = fx::q_of(params::kImageDirectionFlagSpeed, 16);
+  return (direction_ > 0 && v < -kFlagSpeedQ16) || (direction_ < 0 && v > kFlagSpeedQ16);
+}
+
 int8_t image_look(const CameraGeometry& cam0, const CameraGeometry& cam1) {
   constexpr int32_t kHalfPiQ28 = static_cast<int32_t>(fx::kPiQ28 / 2);
   const int64_t sines = int64_t{fx::cos_q30(cam0.axis_yaw - kHalfPiQ28)} + fx::cos_q30(cam1.axis_yaw - kHalfPiQ28);

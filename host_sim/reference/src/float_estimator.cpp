@@ -149,6 +149,7 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
       fin.scale_max_turn = scale_max_turn_;
       const FloatFusionOutput fo = fusion_.update(fin);
       if (!fo.used_tof) status |= kStatusNoTof;
+      if (direction_.against(fo.v)) status |= kStatusAgainstImages;
       est.tof_s = tof.ok ? tof.tau_ns * 1e-9 : 0;
       distance_ += fo.v * dt;
       match_in = {t_ns, heading_, {&m.f[0], &m.f[1]}, {&m.r[0], &m.r[1]}, &jac, fo.v, s_.baseline,

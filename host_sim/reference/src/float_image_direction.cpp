@@ -30,6 +30,12 @@ void FloatImageDirection::update(const FloatStereoMeasurement& prev, const Float
   direction_ = clear ? (mean_ > 0 ? 1 : -1) : 0;
 }
 
+bool FloatImageDirection::against(double v) const {
+  // (in the core's Q16 steps, so that the two engines draw the line alike)
+  const double limit = std::ldexp(std::llround(std::ldexp(params::kImageDirectionFlagSpeed, 16)), -16);
+  return (direction_ > 0 && v < -limit) || (direction_ < 0 && v > limit);
+}
+
 int float_image_look(const CameraModel& cam0, const CameraModel& cam1) {
   const double s = (std::sin(cam0.axis_yaw) + std::sin(cam1.axis_yaw)) / 2;
   if (s >= params::kImageDirectionMinLook) return 1;

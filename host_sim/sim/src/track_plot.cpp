@@ -41,7 +41,7 @@ constexpr FlagStyle kFlagStyles[] = {
     {kStatusConverging, "#c8c8c8"}, {kStatusLowTexture, "#E69F00"}, {kStatusSaturated, "#CC79A7"},
     {kStatusFrameGap, "#56B4E9"},   {kStatusGyroGap, "#009E73"},    {kStatusNoLight, "#333333"},
     {kStatusRestarted, "#8B4513"},  {kStatusStill, "#9ecae1"},      {kStatusNoStereo, "#F0E442"},
-    {kStatusNoTof, "#dadaeb"},
+    {kStatusNoTof, "#dadaeb"},      {kStatusAgainstImages, "#b2182b"},
 };
 static_assert(sizeof(kFlagStyles) / sizeof(kFlagStyles[0]) == sizeof(kStatusFlags) / sizeof(kStatusFlags[0]),
               "a style for every status flag");

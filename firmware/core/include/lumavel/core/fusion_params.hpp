@@ -97,6 +97,10 @@ constexpr double kImageDirectionSigmas = 2.0;
 // Cameras that look within 30 deg of the travel (|sin| of their mean axis
 // yaw below this) see too little of the travel's image motion: no direction.
 constexpr double kImageDirectionMinLook = 0.5;
+// An output faster than this (m/s) against a stated direction raises
+// kStatusAgainstImages (at rest and through a reversal V is near 0 and
+// the direction is not yet stated: none of 130 renders raised it).
+constexpr double kImageDirectionFlagSpeed = 0.1;
 
 // ---- fusion (velocity_fusion.hpp) ----
 // The differential's residual ratio is tracked only while it moves: from

@@ -36,6 +36,9 @@ class ImageDirection {
   void update(const StereoMeasurement& prev, const StereoMeasurement& cur, AngleQ28 dtheta, int64_t dt_ns, int8_t look);
   // +1 moving along +x (body), -1 along -x, 0 unknown.
   int8_t direction() const { return direction_; }
+  // A velocity beyond kImageDirectionFlagSpeed against the stated direction
+  // (kStatusAgainstImages).
+  bool against(SpeedQ16 v) const;
 
  private:
   RateQ24 mean_ = 0;  // smoothed image rate, signed as V

@@ -15,8 +15,9 @@ constexpr uint16_t kUsage = 0x0001;
 
 // Protocol version carried in byte 1 of every report. 3: status bit 8 (no
 // stereo), tagged mailbox answers, lens uploads staged apart from the tables
-// in force (device info bytes 32, 33).
-constexpr uint8_t kProtocolVersion = 3;
+// in force (device info bytes 32, 33). 4: status bit 10 (V against the
+// images' direction of travel).
+constexpr uint8_t kProtocolVersion = 4;
 
 // Report IDs. Byte 0 of every report is its ID.
 enum ReportId : uint8_t {

@@ -40,7 +40,7 @@ struct DecodeResult {
 //   16  4    v              SpeedQ16, m/s
 //   20  8    distance       DistQ32, m
 //   28  4    heading        AngleQ28, rad, in [-pi, pi)
-//   32  2    status         StatusFlag bits (bits 10..15 must be 0: kKnownStatusFlags)
+//   32  2    status         StatusFlag bits (bits 11..15 must be 0: kKnownStatusFlags)
 //   34  2    overruns       u16, frames dropped since start (saturates at 65535)
 //   36  4    gyro_offset    RateQ24, rad/s: zero-rate offset learned at standstill
 //   40  2    crc16 of bytes 0..39

@@ -18,10 +18,13 @@ enum StatusFlag : uint16_t {
                                 // V not observable, frame unusable (with kStatusLowTexture: V held)
   kStatusNoTof = 1u << 9,       // no time-of-flight match this frame (standstill, too slow for the
                                 // history, turning, reversing, or lost): V from the differential alone
+  kStatusAgainstImages = 1u << 10,  // V runs against the images' own direction of travel
+                                    // (image_direction.hpp): a texture that repeats within about
+                                    // 2h aliases the stereo difference; V is not to be trusted
 };
 
 // Every bit defined above (a decoder refuses the others).
-constexpr uint16_t kKnownStatusFlags = 0x03FFu;
+constexpr uint16_t kKnownStatusFlags = 0x07FFu;
 
 // Every flag with its name (as lumavel-read prints it) and what it means in
 // words, in bit order: the one table for summaries, plots and readers.
@@ -41,6 +44,7 @@ inline constexpr StatusFlagInfo kStatusFlags[] = {
     {kStatusStill, "STILL", "still, gyro offset learned"},
     {kStatusNoStereo, "NO_STEREO", "both cameras the same image, V held"},
     {kStatusNoTof, "NO_TOF", "no time of flight, differential alone"},
+    {kStatusAgainstImages, "AGAINST_IMAGES", "V against the images' direction of travel"},
 };
 
 }  // namespace lumavel

@@ -13,6 +13,7 @@ class FloatImageDirection {
   void update(const FloatStereoMeasurement& prev, const FloatStereoMeasurement& cur, double dtheta, double dt_ns,
               int look);
   int direction() const { return direction_; }  // +1 along +x, -1 along -x, 0 unknown
+  bool against(double v) const;                   // (the core's)
 
  private:
   double mean_ = 0, var_ = 0;  // rad/s signed as V; (rad/s)^2
