@@ -682,6 +682,8 @@ struct TofStep {
   bool ok = true;
   bool held = false;        // (with !ok) the track kept through the miss
   double residual = 0.001;  // the differential's residual ratio
+  bool direct = true;        // the differential measured this frame
+  bool against_images = false;  // the output runs against the images' direction
 };
 struct BothV {
   double fixed, dbl;
@@ -700,7 +702,8 @@ BothV step_with_tof(VelocityFusion& fixed, host::FloatVelocityFusion& dbl, const
   FusionInput in{};
   in.dt_ns = std::llround(kDt * 1e9);
   in.v_differential = in.v_direct = static_cast<SpeedQ16>(std::lround(s.vd * 65536));
-  in.direct = true;
+  in.direct = s.direct;
+  in.against_images = s.against_images;
   in.residual = static_cast<FracQ16>(std::lround(s.residual * 65536));
   in.tof = &tf;
   in.y = static_cast<TravelQ16Ns>(std::llround(s.y * 65536 * 1e9));
@@ -718,7 +721,8 @@ BothV step_with_tof(VelocityFusion& fixed, host::FloatVelocityFusion& dbl, const
   host::FloatFusionInput ind;
   ind.dt = kDt;
   ind.v_differential = ind.v_direct = s.vd;
-  ind.direct = true;
+  ind.direct = s.direct;
+  ind.against_images = s.against_images;
   ind.residual = s.residual;
   ind.tof = &tfd;
   ind.y = s.y;
@@ -1322,5 +1326,33 @@ TEST(TimeOfFlight, AnOutputAgainstTheImagesIsFlagged) {
     LONGS_EQUAL(wrong, wrong_flagged);
     LONGS_EQUAL(0, right_flagged);
     LONGS_EQUAL(0, plain_flagged);
+  }
+}
+
+// A value held through low texture is kept, unless the images say the rig
+// moves the other way (a picket fence: -7 m/s read at +0.5 and held through
+// seconds of low texture): then it is let go to 0 at the output's pace.
+TEST(VelocityFusion, AHeldValueAgainstTheImagesIsLetGo) {
+  for (const bool against : {false, true}) {
+    VelocityFusion fixed;
+    host::FloatVelocityFusion dbl;
+    BothV v{};
+    for (int i = 0; i < 30; ++i) v = step_with_tof(fixed, dbl, {-2.0, 0, 0, 0, 0, 0, 0, false});
+    for (int i = 0; i < 12; ++i) {  // 0.2 s of low texture
+      TofStep s{-2.0, 0, 0, 0, 0, 0, 0, false};
+      s.direct = false;
+      s.against_images = against;
+      v = step_with_tof(fixed, dbl, s);
+    }
+    std::printf("\n  held through 0.2 s of low texture, %s the images: V %.4f (fixed), %.4f (double)",
+                against ? "against" : "not against", v.fixed, v.dbl);
+    if (against) {
+      CHECK(std::fabs(v.fixed) < 0.01);
+      CHECK(std::fabs(v.dbl) < 0.01);
+    } else {
+      DOUBLES_EQUAL(-2.0, v.fixed, 1e-3);
+      DOUBLES_EQUAL(-2.0, v.dbl, 1e-9);
+    }
+    DOUBLES_EQUAL(v.dbl, v.fixed, 1e-3);
   }
 }

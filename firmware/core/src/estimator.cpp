@@ -223,6 +223,7 @@ Estimate Estimator::step_profiles(uint64_t t_ns, ColumnProfile& p0, ColumnProfil
       fin.y = y_;
       fin.baseline = cfg_.baseline;
       fin.scale_max_turn = scale_max_turn_;
+      fin.against_images = direction_.against(fusion_.v());
       const FusionOutput fo = fusion_.update(fin);
       if (!fo.used_tof) status |= kStatusNoTof;
       if (direction_.against(fo.v)) status |= kStatusAgainstImages;

@@ -115,7 +115,11 @@ FusionOutput VelocityFusion::update(const FusionInput& in) {
   const int64_t slowed_tau_us = kTauUs + ((kSlowUsPerResidual * residual_) >> 16);
   const int64_t vd = fx::shr_round(int64_t{in.v_differential} * inv_scale_, fx::kScaleFrac) +
                      lag_compensation(in, dt_us, slowed_tau_us);  // Q16
-  if (!in.direct) {  // nothing measured: V held
+  if (!in.direct) {  // nothing measured: V held ...
+    // ... unless it runs against the images' direction of travel: a value
+    // that a repeating texture made (a picket fence: -7 m/s at +0.5, held
+    // through seconds of low texture) is let go to 0 at the output's pace.
+    if (in.against_images) v_ = fx::sat32(v_ - fx::div_q(int64_t{v_} * dt_us, kTauUs + dt_us, 0, &sat), &sat);
     out.v = v_;
     out.saturated = sat;
     return out;

@@ -147,6 +147,7 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
       fin.y = y_;
       fin.baseline = s_.baseline;
       fin.scale_max_turn = scale_max_turn_;
+      fin.against_images = direction_.against(fusion_.v());
       const FloatFusionOutput fo = fusion_.update(fin);
       if (!fo.used_tof) status |= kStatusNoTof;
       if (direction_.against(fo.v)) status |= kStatusAgainstImages;

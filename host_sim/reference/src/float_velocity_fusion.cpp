@@ -55,7 +55,8 @@ FloatFusionOutput FloatVelocityFusion::update(const FloatFusionInput& in) {
   // that of the output it makes alone (the core's comment).
   const double slowed_tau = kFusionTau * (1 + residual_ / kFusionSlowResidual);
   const double vd = in.v_differential / scale_ + lag_compensation(in, dt, slowed_tau);
-  if (!in.direct) {  // nothing measured: V held
+  if (!in.direct) {  // nothing measured: V held, unless against the images (the core's comment)
+    if (in.against_images) v_ -= v_ * dt / (kFusionTau + dt);
     out.v = v_;
     return out;
   }

@@ -54,6 +54,7 @@ struct FusionInput {
   TravelQ16Ns y;            // integral of v_differential (TofFrame::y of this frame)
   LengthQ24 baseline;
   AngleQ28 scale_max_turn;  // the window's turn at which a scale measurement is weighed as at its limit (kFusionScaleMaxTurnSigma)
+  bool against_images;      // the output runs against the images' direction of travel (ImageDirection::against)
 };
 
 struct FusionOutput {

@@ -18,6 +18,7 @@ struct FloatFusionInput {
   double y = 0;               // m
   double baseline = 0;        // m
   double scale_max_turn = 0;  // rad (the core's FusionInput::scale_max_turn)
+  bool against_images = false;  // (the core's)
 };
 
 struct FloatFusionOutput {
