@@ -20,10 +20,11 @@ void GyroOffset::anchor(const StillnessInput& in) {
 }
 
 // Each camera's own change since the reference, read as a turn and scaled
-// as the stereo reading above (held to kStillCameraFactor of its bound): h dF_i.R_i / (|R_i| |S|). Where the texture
-// repeats every 2h along the path, the two cameras see inverted profiles and
-// M stands still while the rig moves (stripes of 16 cm at h = 8 cm: STILL
-// at 1 m/s, the turn learned as offset). den: |S|^2 as above, Q52.
+// as the stereo reading in update(), h dF_i.R_i / (|R_i| |S|), and held to
+// kStillCameraFactor of its bound. Where the texture repeats every 2h along
+// the path, the two cameras see inverted profiles and M stands still while
+// the rig moves (stripes of 16 cm at h = 8 cm: STILL at 1 m/s, the turn
+// learned as offset). den: |S|^2 as in update(), Q52.
 // (dF in Q24 and R in Q16: products below 2^53, kMaxKernels of them below 2^56.)
 bool GyroOffset::camera_moved(const StillnessInput& in, int64_t den) const {
   const int64_t s_norm = fx::isqrt64(static_cast<uint64_t>(den));  // Q26

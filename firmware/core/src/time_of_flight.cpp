@@ -51,15 +51,15 @@ int64_t gate_ns(int64_t tau_ns, int64_t frame_ns) {
   return a > b ? a : b;
 }
 
-// A hint fast enough to guide the acquisition, in the direction in which
-// this camera trails: cam0 trails when the body moves along +h (h = x1 - x0:
-// +x when cam1 is ahead, -x when cam0 is).
 // A candidate (signed tau: + cam0 trails) whose travel runs against the
 // images' direction (ImageDirection; 0: unknown, nothing is).
 bool against_images(int8_t direction, int64_t stau_ns, LengthQ24 h) {
   return direction != 0 && ((stau_ns > 0) == (h > 0)) != (direction > 0);
 }
 
+// A hint fast enough to guide the acquisition, in the direction in which
+// this camera trails: cam0 trails when the body moves along +h (h = x1 - x0:
+// +x when cam1 is ahead, -x when cam0 is).
 bool guiding(int64_t v_hint, int trail, LengthQ24 h) {
   return abs64(v_hint) > kAcquireMinSpeedQ16 && (trail == 0) == ((v_hint > 0) == (h > 0));
 }
