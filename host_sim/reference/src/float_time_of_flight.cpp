@@ -16,12 +16,12 @@ double gate_ns(double tau_ns, double frame_ns) {
   return std::max(kTofTrackGateFrames * frame_ns, kTofTrackGateFraction * std::fabs(tau_ns));
 }
 
-// (the core's guiding)
 // (the core's against_images)
 bool against_images(int direction, double stau_ns, double h) {
   return direction != 0 && ((stau_ns > 0) == (h > 0)) != (direction > 0);
 }
 
+// (the core's guiding)
 bool guiding(double v_hint, int trail, double h) {
   return std::fabs(v_hint) > kTofAcquireMinSpeed && (trail == 0) == ((v_hint > 0) == (h > 0));
 }
