@@ -684,6 +684,8 @@ struct TofStep {
   double residual = 0.001;  // the differential's residual ratio
   bool direct = true;        // the differential measured this frame
   bool against_images = false;  // the output runs against the images' direction
+  int image_direction = 0;      // the images' direction of travel
+  int frames = 255;             // frames the track has held
 };
 struct BothV {
   double fixed, dbl;
@@ -699,11 +701,13 @@ BothV step_with_tof(VelocityFusion& fixed, host::FloatVelocityFusion& dbl, const
   tf.sig = static_cast<FracQ16>(std::lround(0.005 * 65536));
   tf.y_then = static_cast<TravelQ16Ns>(std::llround(s.y_then * 65536 * 1e9));
   tf.turn = static_cast<AngleQ28>(std::lround(s.turn * (1 << 28)));
+  tf.frames = static_cast<uint8_t>(s.frames);
   FusionInput in{};
   in.dt_ns = std::llround(kDt * 1e9);
   in.v_differential = in.v_direct = static_cast<SpeedQ16>(std::lround(s.vd * 65536));
   in.direct = s.direct;
   in.against_images = s.against_images;
+  in.image_direction = static_cast<int8_t>(s.image_direction);
   in.residual = static_cast<FracQ16>(std::lround(s.residual * 65536));
   in.tof = &tf;
   in.y = static_cast<TravelQ16Ns>(std::llround(s.y * 65536 * 1e9));
@@ -718,11 +722,13 @@ BothV step_with_tof(VelocityFusion& fixed, host::FloatVelocityFusion& dbl, const
   tfd.sig = 0.005;
   tfd.y_then = s.y_then;
   tfd.turn = s.turn;
+  tfd.frames = s.frames;
   host::FloatFusionInput ind;
   ind.dt = kDt;
   ind.v_differential = ind.v_direct = s.vd;
   ind.direct = s.direct;
   ind.against_images = s.against_images;
+  ind.image_direction = s.image_direction;
   ind.residual = s.residual;
   ind.tof = &tfd;
   ind.y = s.y;
@@ -1354,5 +1360,45 @@ TEST(VelocityFusion, AHeldValueAgainstTheImagesIsLetGo) {
       DOUBLES_EQUAL(-2.0, v.dbl, 1e-9);
     }
     DOUBLES_EQUAL(v.dbl, v.fixed, 1e-3);
+  }
+}
+
+// A scene the stereo difference cannot measure from the start (a facade far
+// away, or sky and grass at the start of a pass: V held at 0 for 1.3 s while
+// the time of flight read tau right): a track that has held 6 frames and
+// agrees with the images' direction of travel makes V alone until the
+// observer first measures; not without the images' word (on a plain wall
+// the track follows pixel noise), not a young track, and not once the
+// observer has measured (then a frame it cannot measure holds V).
+TEST(VelocityFusion, BeforeTheObserverMeasuresATrackTheImagesVouchForMakesV) {
+  const double v = 1.0, tau = 0.08;
+  struct Case {
+    int direction, frames;
+    bool measured_first;
+    const char* what;
+    bool follows;
+  };
+  const Case cases[] = {{1, 10, false, "a track of 10 frames, the images along it", true},
+                        {0, 10, false, "the images saying nothing", false},
+                        {-1, 10, false, "the images against it", false},
+                        {1, 3, false, "a track of 3 frames", false},
+                        {1, 10, true, "the observer measured 0.5 m/s first", false}};
+  for (const Case& c : cases) {
+    VelocityFusion fixed;
+    host::FloatVelocityFusion dbl;
+    BothV out{};
+    if (c.measured_first) out = step_with_tof(fixed, dbl, {0.5, 0, 0, 0, 0, 0, 0, false});
+    for (int i = 0; i < 20; ++i) {
+      TofStep s{0.0, 0, v, tau, 0, 0, 0, true};
+      s.direct = false;
+      s.image_direction = c.direction;
+      s.frames = c.frames;
+      out = step_with_tof(fixed, dbl, s);
+    }
+    std::printf("\n  no direct value, a time of flight at %.1f m/s, %s: V %.4f (fixed), %.4f (double)", v, c.what,
+                out.fixed, out.dbl);
+    const double want = c.follows ? v : (c.measured_first ? 0.5 : 0.0);
+    DOUBLES_EQUAL(want, out.fixed, 0.01);
+    DOUBLES_EQUAL(want, out.dbl, 0.01);
   }
 }

@@ -182,7 +182,6 @@ Estimate Estimator::step_profiles(uint64_t t_ns, ColumnProfile& p0, ColumnProfil
       in.low_texture = cfg_.low_texture;
       in.baseline_correction = (cfg_.options & kOptionBaselineCorrection) != 0;
       const ObserverOutput o = gyro_saturated ? observer_.hold() : observer_.update(in);
-      if (!o.updated && !gyro_saturated) status |= kStatusLowTexture;
       if (cfg_.options & kOptionGyroOffsetLearning) {
         if (status & (kStatusFrameGap | kStatusGyroGap)) gyro_offset_.drop_reference();
         gyro_offset_.update({&m, t_ns, angle, o.updated, cfg_.baseline, cfg_.still_distance, cfg_.still_min_us});
@@ -224,8 +223,11 @@ Estimate Estimator::step_profiles(uint64_t t_ns, ColumnProfile& p0, ColumnProfil
       fin.baseline = cfg_.baseline;
       fin.scale_max_turn = scale_max_turn_;
       fin.against_images = direction_.against(fusion_.v());
+      fin.image_direction = direction_.direction();
       const FusionOutput fo = fusion_.update(fin);
       if (!fo.used_tof) status |= kStatusNoTof;
+      // (V held: neither the differential nor a time of flight measured it)
+      if (!o.updated && !gyro_saturated && !fo.used_tof) status |= kStatusLowTexture;
       if (direction_.against(fo.v)) status |= kStatusAgainstImages;
       if (fo.saturated) status |= kStatusSaturated;
       est.tof_ns = tof.ok ? tof.tau_ns : 0;

@@ -357,6 +357,7 @@ TofResult TimeOfFlight::track(const TofTrackInput& in) {
   r.sig = fx::div_q(pick.sig_ns, r.tau_ns, fx::kFracFrac);
   r.y_then = pick.y_then;
   r.turn = pick.turn;
+  r.frames = track_frames_;
   return r;
 }
 

@@ -115,7 +115,17 @@ FusionOutput VelocityFusion::update(const FusionInput& in) {
   const int64_t slowed_tau_us = kTauUs + ((kSlowUsPerResidual * residual_) >> 16);
   const int64_t vd = fx::shr_round(int64_t{in.v_differential} * inv_scale_, fx::kScaleFrac) +
                      lag_compensation(in, dt_us, slowed_tau_us);  // Q16
-  if (!in.direct) {  // nothing measured: V held ...
+  // Before the observer has measured anything since the (re)start (a scene
+  // too far or too plain for the stereo difference: a facade 30 m away),
+  // a track that has held kTofWindowGateFrames, and does not run against the
+  // images, makes V alone; once the observer has measured, a frame it cannot
+  // measure holds V as before (over a held value's time, a track on weak
+  // texture scatters more than the held value errs: the photo walls' plain
+  // ends doubled their E).
+  const bool tof_alone = !in.direct && !direct_seen_ && use_tof && tof.frames >= kTofWindowGateFrames &&
+                         in.image_direction != 0 && (tof.v > 0) == (in.image_direction > 0);
+  if (in.direct) direct_seen_ = true;
+  if (!in.direct && !tof_alone) {  // nothing measured: V held ...
     // ... unless it runs against the images' direction of travel: a value
     // that a repeating texture made (a picket fence: -7 m/s at +0.5, held
     // through seconds of low texture) is let go to 0 at the output's pace.
@@ -124,7 +134,7 @@ FusionOutput VelocityFusion::update(const FusionInput& in) {
     out.saturated = sat;
     return out;
   }
-  if (!started_) {
+  if (!started_ && !tof_alone) {
     v_ = fx::sat32(vd, &sat);
     started_ = true;
     out.v = v_;
@@ -156,18 +166,18 @@ FusionOutput VelocityFusion::update(const FusionInput& in) {
     // reversal keeps the direction of its mean, not of the present), and only
     // where that direction is clear (|zc| beyond kFusionAgainstSigmas of its sigma;
     // |zc| < 2^31 + 2^18: its square fits int64, as does 4 st2 < 2^44 in Q8).
-    const bool against = (vd > 0) != (zc > 0) && abs64(vd) > ((kAgainstSigmasQ16 * sd) >> 16) &&
+    const bool against = !tof_alone && (vd > 0) != (zc > 0) && abs64(vd) > ((kAgainstSigmasQ16 * sd) >> 16) &&
                          zc * zc > ((kAgainstSigmas2Q8 * st2) >> 8);
     failed_ = against;
     failed_us_ = 0;
-    const int64_t w = against ? kOneQ16 : fx::fraction_q16(sd2, sd2 + st2);
+    const int64_t w = against || tof_alone ? kOneQ16 : fx::fraction_q16(sd2, sd2 + st2);
     target = vd + ((w * (zc - vd)) >> 16);
     coast_z_ = zc;
     coast_st2_ = st2;
     coast_us_ = 0;
     coast_frames_ = 0;
     // How far the time of flight really scatters, seen against a clean differential.
-    if (residual_ < kScaleMaxResidualQ16 && !against) {
+    if (residual_ < kScaleMaxResidualQ16 && !against && !tof_alone) {
       const int64_t nu = int64_t{tof.v} - vd;
       const int64_t g = fx::div_q(nu * nu, st2 + sd2, 16);  // Q16
       tof_inflation_ = static_cast<int32_t>(
@@ -205,6 +215,14 @@ FusionOutput VelocityFusion::update(const FusionInput& in) {
   // Smoothing, slower without a time of flight when the differential is doubtful,
   // but never longer than the output has measured since it (re)started: until
   // then it is the mean of what came since (gain 1/n), not the first value held.
+  if (!started_) {  // (a start on the time of flight alone)
+    v_ = fx::sat32(target, &sat);
+    started_ = true;
+    out.v = v_;
+    out.used_tof = true;
+    out.saturated = sat;
+    return out;
+  }
   since_start_us_ = std::min<int64_t>(since_start_us_ + dt_us, kInt31);
   const int64_t teff_us = std::min<int64_t>(use_tof ? kTauUs : slowed_tau_us, since_start_us_);
   const int64_t nv = v_ + fx::div_q((target - v_) * dt_us, teff_us + dt_us, 0, &sat);

@@ -111,7 +111,6 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
       in.low_texture = s_.low_texture;
       in.baseline_correction = s_.baseline_correction;
       const FloatObserverOutput o = gyro_saturated ? observer_.hold() : observer_.update(in);
-      if (!o.updated && !gyro_saturated) status |= kStatusLowTexture;
       if (s_.gyro_offset_learning) {
         if (status & (kStatusFrameGap | kStatusGyroGap)) gyro_offset_.drop_reference();
         gyro_offset_.update({&m, t_ns, angle, o.updated, s_.baseline, s_.still_distance, still_min_ns_});
@@ -148,8 +147,11 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
       fin.baseline = s_.baseline;
       fin.scale_max_turn = scale_max_turn_;
       fin.against_images = direction_.against(fusion_.v());
+      fin.image_direction = direction_.direction();
       const FloatFusionOutput fo = fusion_.update(fin);
       if (!fo.used_tof) status |= kStatusNoTof;
+      // (V held: neither the differential nor a time of flight measured it)
+      if (!o.updated && !gyro_saturated && !fo.used_tof) status |= kStatusLowTexture;
       if (direction_.against(fo.v)) status |= kStatusAgainstImages;
       est.tof_s = tof.ok ? tof.tau_ns * 1e-9 : 0;
       distance_ += fo.v * dt;

@@ -225,6 +225,7 @@ FloatTofResult FloatTimeOfFlight::track(int direction, double baseline, double m
   r.sig = pick.sig_ns / r.tau_ns;
   r.y_then = pick.y_then;
   r.turn = pick.turn;
+  r.frames = track_frames_;
   return r;
 }
 

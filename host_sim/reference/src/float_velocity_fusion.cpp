@@ -55,12 +55,16 @@ FloatFusionOutput FloatVelocityFusion::update(const FloatFusionInput& in) {
   // that of the output it makes alone (the core's comment).
   const double slowed_tau = kFusionTau * (1 + residual_ / kFusionSlowResidual);
   const double vd = in.v_differential / scale_ + lag_compensation(in, dt, slowed_tau);
-  if (!in.direct) {  // nothing measured: V held, unless against the images (the core's comment)
+  // The time of flight alone before the observer has measured (the core's comment).
+  const bool tof_alone = !in.direct && !direct_seen_ && use_tof && tof.frames >= kTofWindowGateFrames &&
+                         in.image_direction != 0 && (tof.v > 0) == (in.image_direction > 0);
+  if (in.direct) direct_seen_ = true;
+  if (!in.direct && !tof_alone) {  // nothing measured: V held, unless against the images (the core's comment)
     if (in.against_images) v_ -= v_ * dt / (kFusionTau + dt);
     out.v = v_;
     return out;
   }
-  if (!started_) {
+  if (!started_ && !tof_alone) {
     v_ = vd;
     started_ = true;
     out.v = v_;
@@ -80,17 +84,17 @@ FloatFusionOutput FloatVelocityFusion::update(const FloatFusionInput& in) {
     const double st = rel * std::fabs(tof.v) + kFusionSpeedFloor;
     const double st2 = st * st + std::pow(kFusionTofMoveShare * moved, 2);  // the move's own uncertainty
     // Against its direction now, where that is clear (the core's comment).
-    const bool against = (vd > 0) != (zc > 0) && std::fabs(vd) > kFusionAgainstSigmas * sd &&
+    const bool against = !tof_alone && (vd > 0) != (zc > 0) && std::fabs(vd) > kFusionAgainstSigmas * sd &&
                          zc * zc > kFusionAgainstSigmas * kFusionAgainstSigmas * st2;
     failed_ = against;
     failed_us_ = 0;
-    const double w = against ? 1.0 : sd2 / (sd2 + st2);
+    const double w = against || tof_alone ? 1.0 : sd2 / (sd2 + st2);
     target = vd + w * (zc - vd);
     coast_z_ = zc;
     coast_st2_ = st2;
     coast_us_ = 0;
     coast_frames_ = 0;
-    if (residual_ < kFusionScaleMaxResidual && !against) {
+    if (residual_ < kFusionScaleMaxResidual && !against && !tof_alone) {
       const double g = (tof.v - vd) * (tof.v - vd) / (st2 + sd2);
       tof_inflation_ = std::clamp(tof_inflation_ + kFusionTofInflationGain * (g - tof_inflation_), 1.0,
                                   kFusionTofInflationMax);
@@ -117,6 +121,13 @@ FloatFusionOutput FloatVelocityFusion::update(const FloatFusionInput& in) {
       out.v = v_;
       return out;
     }
+  }
+  if (!started_) {  // (a start on the time of flight alone)
+    v_ = target;
+    started_ = true;
+    out.v = v_;
+    out.used_tof = true;
+    return out;
   }
   since_start_us_ = std::min<int64_t>(since_start_us_ + dt_us, int64_t{1} << 31);
   const double teff = std::min(use_tof ? kFusionTau : slowed_tau, static_cast<double>(since_start_us_) * 1e-6);

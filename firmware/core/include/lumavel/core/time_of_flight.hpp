@@ -54,6 +54,7 @@ struct TofResult {
   FracQ16 sig;        // relative uncertainty of v (the match's timing uncertainty over tau)
   TravelQ16Ns y_then; // TofFrame::y at the match (the differential's travel over the window: travel_between)
   AngleQ28 turn;      // the gyro's rotation over the window, frame by frame in absolute value (>= 0)
+  uint8_t frames;     // frames the track has held since it was taken (saturating)
 };
 
 struct TofTrackInput {

@@ -55,6 +55,7 @@ struct FusionInput {
   LengthQ24 baseline;
   AngleQ28 scale_max_turn;  // the window's turn at which a scale measurement is weighed as at its limit (kFusionScaleMaxTurnSigma)
   bool against_images;      // the output runs against the images' direction of travel (ImageDirection::against)
+  int8_t image_direction;   // the images' direction of travel (ImageDirection::direction), 0 unknown
 };
 
 struct FusionOutput {
@@ -71,6 +72,7 @@ class VelocityFusion {
   // inflation are kept.
   void restart() {
     started_ = false;
+    direct_seen_ = false;
     measured_us_ = 0;
     since_start_us_ = 0;
     have_direct_ = false;
@@ -91,6 +93,7 @@ class VelocityFusion {
 
  private:
   bool started_ = false;
+  bool direct_seen_ = false;       // the observer has measured since the (re)start
   SpeedQ16 v_ = 0;
   AccelQ16 accel_ = 0;
   AccelQ16 move_accel_ = 0;        // the same rate smoothed faster, for the window's move where the differential is clean

@@ -24,6 +24,7 @@ struct FloatTofResult {
   double sig = 0;      // relative uncertainty of v
   double y_then = 0;
   double turn = 0;     // rad: the gyro's rotation over the window, frame by frame in absolute value
+  int frames = 0;      // frames the track has held since it was taken (the core's, saturating)
 };
 
 class FloatTimeOfFlight {

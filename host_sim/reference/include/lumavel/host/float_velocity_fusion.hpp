@@ -19,6 +19,7 @@ struct FloatFusionInput {
   double baseline = 0;        // m
   double scale_max_turn = 0;  // rad (the core's FusionInput::scale_max_turn)
   bool against_images = false;  // (the core's)
+  int image_direction = 0;      // (the core's)
 };
 
 struct FloatFusionOutput {
@@ -31,6 +32,7 @@ class FloatVelocityFusion {
   void reset() { *this = FloatVelocityFusion{}; }
   void restart() {
     started_ = false;
+    direct_seen_ = false;
     measured_us_ = 0;
     since_start_us_ = 0;
     have_direct_ = false;
@@ -44,6 +46,7 @@ class FloatVelocityFusion {
 
  private:
   bool started_ = false;
+  bool direct_seen_ = false;  // (the core's)
   double v_ = 0, accel_ = 0, residual_ = 0, tof_inflation_ = 1;
   double move_accel_ = 0;  // the rate smoothed faster, for the window's move (the core's comment)
   double scale_ = 1, scale_var_ = 0;
