@@ -12,8 +12,6 @@ constexpr int64_t kSigmas2Q4 = fx::q_of(params::kImageDirectionSigmas * params::
 constexpr int64_t kRateMaxQ24 = int64_t{64} << 24;
 constexpr int64_t kMinLookQ30 = fx::q_of(params::kImageDirectionMinLook, 30);
 
-int64_t clamp64(int64_t v, int64_t lo, int64_t hi) { return v < lo ? lo : (v > hi ? hi : v); }
-
 }  // namespace
 
 void ImageDirection::update(const StereoMeasurement& prev, const StereoMeasurement& cur, AngleQ28 dtheta,
@@ -28,7 +26,7 @@ void ImageDirection::update(const StereoMeasurement& prev, const StereoMeasureme
     for (uint8_t k = 0; k < cur.count; ++k) {
       const int64_t rb = (int64_t{cur.r[i][k]} + prev.r[i][k]) / 2;  // Q20
       const int64_t turn = fx::shr_round(int64_t{dtheta} * rb, fx::kSlopeFrac);  // Q28 (|dtheta| < 2^31, |rb| < 2^31)
-      const int64_t e = clamp64(fx::shr_round(int64_t{cur.f[i][k]} - prev.f[i][k] - turn, 4), -(int64_t{1} << 27),
+      const int64_t e = fx::clamp64(fx::shr_round(int64_t{cur.f[i][k]} - prev.f[i][k] - turn, 4), -(int64_t{1} << 27),
                                 int64_t{1} << 27);  // Q24
       const int64_t r = fx::shr_round(rb, 4);  // Q16
       num += e * r;                            // Q40
@@ -38,7 +36,7 @@ void ImageDirection::update(const StereoMeasurement& prev, const StereoMeasureme
   // The yaw the images moved by (Q28 rad: Q40 / Q32 -> Q8, so 20 more), then
   // per second, signed as V: a left-looking camera's view moves against it.
   const int64_t yaw = fx::div_q(num, den, 20);
-  const int64_t rate = clamp64(fx::div_q(-look * yaw * 1000000000, dt_ns * 16, 0), -kRateMaxQ24, kRateMaxQ24);
+  const int64_t rate = fx::clamp64(fx::div_q(-look * yaw * 1000000000, dt_ns * 16, 0), -kRateMaxQ24, kRateMaxQ24);
   const int64_t a = dt_ns >= kTauNs ? int64_t{1} << 16 : (dt_ns << 16) / kTauNs;  // Q16
   mean_ = static_cast<RateQ24>(mean_ + fx::shr_round((rate - mean_) * a, 16));
   const int64_t dev = rate - mean_;  // |.| < 2^31: its square below 2^62

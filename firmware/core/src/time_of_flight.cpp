@@ -28,7 +28,6 @@ constexpr int64_t kOneQ16 = int64_t{1} << 16;
 constexpr int64_t kChordMaxShiftQ16 = fx::q_of(kTofChordMaxShift, 16);
 
 int64_t abs64(int64_t v) { return v < 0 ? -v : v; }
-int64_t clamp64(int64_t v, int64_t lo, int64_t hi) { return v < lo ? lo : (v > hi ? hi : v); }
 constexpr int64_t kDiffMaxQ24 = int64_t{1} << 28;  // two ValueQ28 differ by < 2^32, 2^28 in Q24
 static_assert(kMaxKernels <= 64, "the match's sums of squares (< 2^56 each) must stay below 2^62");
 
@@ -141,9 +140,9 @@ bool TimeOfFlight::search(const TofTrackInput& in, int trail, int64_t want_ns, i
       const int32_t rb = static_cast<int32_t>(
           (int64_t{now.r[trail][k]} + (int64_t{a.r[lead][k]} + b.r[lead][k]) / 2) / 2);  // Q20
       const int64_t tv = int64_t{now.f[trail][k]} - fx::shr_round(int64_t{dth_a} * rb, fx::kSlopeFrac);  // Q28
-      const int32_t e = static_cast<int32_t>(clamp64(fx::shr_round(tv - a.f[lead][k], 4), -kDiffMaxQ24, kDiffMaxQ24));
+      const int32_t e = static_cast<int32_t>(fx::clamp64(fx::shr_round(tv - a.f[lead][k], 4), -kDiffMaxQ24, kDiffMaxQ24));
       const int64_t step = int64_t{b.f[lead][k]} - a.f[lead][k] - fx::shr_round(int64_t{dth_ab} * rb, fx::kSlopeFrac);
-      const int32_t d = static_cast<int32_t>(clamp64(fx::shr_round(step, 4), -kDiffMaxQ24, kDiffMaxQ24));
+      const int32_t d = static_cast<int32_t>(fx::clamp64(fx::shr_round(step, 4), -kDiffMaxQ24, kDiffMaxQ24));
       step_q24[k] = d;
       ee += int64_t{e} * e;
       ed += int64_t{e} * d;
@@ -242,8 +241,8 @@ int64_t TimeOfFlight::chord_time(int lead, uint16_t back, uint8_t count, const i
   bool sat = false;  // (a saturated ratio is held by the shift's bound below)
   const int64_t ratio = fx::div_q(c2d, 2 * den, 16, &sat);  // D2 . d / (2 |d|^2), Q16 (< 2^31)
   const int64_t s1s = (fr * (kOneQ16 - fr)) >> 16;          // s (1 - s) <= 2^14, Q16
-  const int64_t shift = clamp64((ratio * s1s) >> 16, -kChordMaxShiftQ16, kChordMaxShiftQ16);
-  return clamp64(fr + shift, 0, kOneQ16);
+  const int64_t shift = fx::clamp64((ratio * s1s) >> 16, -kChordMaxShiftQ16, kChordMaxShiftQ16);
+  return fx::clamp64(fr + shift, 0, kOneQ16);
 }
 
 TofResult TimeOfFlight::track(const TofTrackInput& in) {

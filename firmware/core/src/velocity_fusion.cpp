@@ -55,7 +55,6 @@ static_assert(kCoastGrowth * 4 == fx::q_of(kFusionCoastSigmaGrowth, 2), "a whole
 static_assert(kFusionAccelMax * kTofMaxTau / 2 < 4, "the time of flight's move to the present below 2^18 in Q16: its square fits");
 
 int64_t abs64(int64_t v) { return v < 0 ? -v : v; }
-int64_t clamp64(int64_t v, int64_t lo, int64_t hi) { return v < lo ? lo : (v > hi ? hi : v); }
 
 }  // namespace
 
@@ -181,7 +180,7 @@ FusionOutput VelocityFusion::update(const FusionInput& in) {
       const int64_t nu = int64_t{tof.v} - vd;
       const int64_t g = fx::div_q(nu * nu, st2 + sd2, 16);  // Q16
       tof_inflation_ = static_cast<int32_t>(
-          clamp64(tof_inflation_ + fx::shr_round(kInflationGainQ16 * (g - tof_inflation_), 16), kOneQ16, kInflationMaxQ16));
+          fx::clamp64(tof_inflation_ + fx::shr_round(kInflationGainQ16 * (g - tof_inflation_), 16), kOneQ16, kInflationMaxQ16));
     }
   }
   if (!use_tof) {
@@ -228,10 +227,10 @@ FusionOutput VelocityFusion::update(const FusionInput& in) {
   const int64_t nv = v_ + fx::div_q((target - v_) * dt_us, teff_us + dt_us, 0, &sat);
   if (dt_us > 0) {
     // accel += (rate - accel) dt / (tau_a + dt), with rate = (nv - v) / dt: one division.
-    accel_ = static_cast<AccelQ16>(clamp64(
+    accel_ = static_cast<AccelQ16>(fx::clamp64(
         accel_ + fx::div_q((nv - v_) * 1000000 - int64_t{accel_} * dt_us, kAccelTauUs + dt_us, 0, &sat),
         -kAccelMaxQ16, kAccelMaxQ16));
-    move_accel_ = static_cast<AccelQ16>(clamp64(
+    move_accel_ = static_cast<AccelQ16>(fx::clamp64(
         move_accel_ + fx::div_q((nv - v_) * 1000000 - int64_t{move_accel_} * dt_us, kMoveAccelTauUs + dt_us, 0, &sat),
         -kAccelMaxQ16, kAccelMaxQ16));
   }
@@ -267,7 +266,7 @@ int64_t VelocityFusion::shown_move(const FusionInput& in, int64_t moved, int64_t
   const int64_t share = clean_share();
   if (share == 0 || in.observer_tau_us == 0) return moved;
   // |V_half - V| held to kLagMaxQ16 (2^23), tau_us < 2^20: < 2^43
-  const int64_t half_lag = clamp64(int64_t{half_} - in.v_differential, -kLagMaxQ16, kLagMaxQ16);
+  const int64_t half_lag = fx::clamp64(int64_t{half_} - in.v_differential, -kLagMaxQ16, kLagMaxQ16);
   const int64_t cap = fx::div_trunc(half_lag * tau_us, in.observer_tau_us);
   const int64_t held = (cap > 0) != (moved > 0) ? 0 : (abs64(cap) < abs64(moved) ? cap : moved);
   return moved + ((share * (held - moved)) >> 16);  // |moved| < 2^18 (kFusionAccelMax kTofMaxTau / 2)
@@ -283,7 +282,7 @@ int64_t VelocityFusion::lag_compensation(const FusionInput& in, int64_t dt_us, i
   }
   const int64_t tau_us = in.observer_tau_us;
   // The scatter of the direct values: half the mean square of their differences.
-  const int64_t dv = clamp64(int64_t{in.v_direct} - prev_direct_, -kLagMaxQ16, kLagMaxQ16);
+  const int64_t dv = fx::clamp64(int64_t{in.v_direct} - prev_direct_, -kLagMaxQ16, kLagMaxQ16);
   direct_var_ += ((dv * dv - direct_var_) * fx::fraction_q16(dt_us, kAccelTauUs + dt_us)) >> 16;  // Q32 <= 2^46
   prev_direct_ = in.v_direct;
   // The lag from the fused rate, c = tau A, weighed by how far it stands out
@@ -291,7 +290,7 @@ int64_t VelocityFusion::lag_compensation(const FusionInput& in, int64_t dt_us, i
   // sigma^2 dt / (2 tau_a + dt), sigma^2 = var / 2; and of the differential's
   // own floor (kFusionDiffFloor of the speed: a lag below it is not one the
   // differential can tell from its texture's slow errors).
-  const int64_t c = clamp64(fx::div_trunc(int64_t{accel_} * tau_us, 1000000), -kLagMaxQ16, kLagMaxQ16);  // Q16
+  const int64_t c = fx::clamp64(fx::div_trunc(int64_t{accel_} * tau_us, 1000000), -kLagMaxQ16, kLagMaxQ16);  // Q16
   const int64_t floor_sd = (kDiffFloorQ16 * std::min(abs64(in.v_differential), kLagMaxQ16)) >> 16;  // Q16
   const int64_t var_c =
       (((direct_var_ >> 1) * fx::fraction_q16(dt_us, 2 * kAccelTauUs + dt_us)) >> 16) + floor_sd * floor_sd;  // Q32
@@ -303,7 +302,7 @@ int64_t VelocityFusion::lag_compensation(const FusionInput& in, int64_t dt_us, i
   // tau_a, the observer's lag does not.
   bool sat = false;  // (the term is held to kLagMaxQ16 below)
   half_ = observer_step(half_, in.v_direct, dt_us, tau_us / 2, &sat);
-  const int64_t shown = clamp64(2 * (int64_t{half_} - in.v_differential), -kLagMaxQ16, kLagMaxQ16);
+  const int64_t shown = fx::clamp64(2 * (int64_t{half_} - in.v_differential), -kLagMaxQ16, kLagMaxQ16);
   if ((weighed > 0) != (shown > 0) || weighed == 0 || shown == 0) return 0;
   const int64_t lag = abs64(weighed) < abs64(shown) ? weighed : shown;
   // The same ramp lags twice more downstream: the direct values stand for the
@@ -319,13 +318,13 @@ void VelocityFusion::learn_scale(const FusionInput& in, int64_t dt_us, int64_t q
   // travel (Q16 m/s x ns) over h (Q24 m) in Q24: travel 2^8 / (h 1e9); travel < 2^50 over the window
   const int64_t ratio = fx::div_q(fx::travel_between(in.y, tof.y_then) * 256, disp * 1000000000, fx::kScaleFrac);
   if (ratio <= 0) return;
-  const int64_t measured = clamp64(ratio, kScaleMinQ24, kScaleMaxQ24);
+  const int64_t measured = fx::clamp64(ratio, kScaleMinQ24, kScaleMaxQ24);
   if (!scale_started_) {
     scale_ = int32_t{1} << fx::kScaleFrac;
     scale_var_ = kScaleStartVarQ40;
     scale_started_ = true;
   }
-  const int64_t sig = clamp64(tof.sig, kTofFloorQ16, kOneQ16);
+  const int64_t sig = fx::clamp64(tof.sig, kTofFloorQ16, kOneQ16);
   // frames in the window, in ns as the twin (32-bit: tau < 0.6 s, dt < 2^31 ns)
   const uint32_t dt32 = static_cast<uint32_t>(std::min<int64_t>(in.dt_ns, kInt31 - 1));
   const int64_t frames =
@@ -342,7 +341,7 @@ void VelocityFusion::learn_scale(const FusionInput& in, int64_t dt_us, int64_t q
   // Q40) times 2^24 stays below 2^55.
   const int64_t k = fx::div_q(scale_var_, scale_var_ + r_weighed, kGainFrac);
   scale_ = static_cast<ScaleQ24>(
-      clamp64(scale_ + fx::shr_round(k * (measured - scale_), kGainFrac), kScaleMinQ24, kScaleMaxQ24));
+      fx::clamp64(scale_ + fx::shr_round(k * (measured - scale_), kGainFrac), kScaleMinQ24, kScaleMaxQ24));
   scale_var_ -= fx::shr_round(scale_var_ * k, kGainFrac);
   // 1 / scale in Q24 (scale in [0.5, 2]): the differential is divided by it every frame.
   inv_scale_ = fx::div_q(int64_t{1} << (2 * fx::kScaleFrac), scale_, 0);  // 2^48 / scale_Q24 = 1/scale in Q24

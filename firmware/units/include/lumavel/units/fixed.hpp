@@ -186,6 +186,9 @@ inline int32_t fraction_q16(int64_t num, int64_t den) {
   return static_cast<int32_t>(((n << 16) + d / 2) / d);
 }
 
+// v held to [lo, hi] (lo <= hi).
+constexpr int64_t clamp64(int64_t v, int64_t lo, int64_t hi) { return v < lo ? lo : (v > hi ? hi : v); }
+
 // |v| as unsigned: exact for every int64, INT64_MIN included (2^63).
 constexpr uint64_t magnitude(int64_t v) { return v < 0 ? 0 - static_cast<uint64_t>(v) : static_cast<uint64_t>(v); }
 
