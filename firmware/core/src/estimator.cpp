@@ -197,8 +197,8 @@ Estimate Estimator::step_profiles(uint64_t t_ns, ColumnProfile& p0, ColumnProfil
       // (dt held below 2^31 ns, so the product stays below 2^62; y wraps by design)
       y_ += static_cast<TravelQ16Ns>(int64_t{o.updated ? o.v_direct : o.v} * std::min<int64_t>(dt_ns, int64_t{1} << 31));
       TofResult tof{};
-      if (!gyro_saturated) direction_.update(meas_[cur_], m, fx::sat32(dtheta), dt_ns, look_);
       if (!gyro_saturated) {
+        direction_.update(meas_[cur_], m, fx::sat32(dtheta), dt_ns, look_);
         TofFrame& tf = tof_.push();
         tf.t_ns = t_ns;
         tf.heading = heading_;

@@ -122,8 +122,8 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
       // over an interval whose rotation is unknown).
       y_ += (o.updated ? o.v_direct : o.v) * dt;
       FloatTofResult tof;
-      if (!gyro_saturated) direction_.update(prev_, m, dtheta, static_cast<double>(t_ns - prev_t_ns_), look_);
       if (!gyro_saturated) {
+        direction_.update(prev_, m, dtheta, static_cast<double>(t_ns - prev_t_ns_), look_);
         FloatTofFrame tf;
         tf.t_ns = t_ns;
         tf.heading = heading_;
