@@ -123,12 +123,15 @@ void check_before_import(const std::string& data_dir, const std::string& out_rec
   }
 }
 
+// The tolerance of both checks below: the angle one pixel spans at fx.
+double pixel_angle(double fx) { return std::atan(1.0 / fx); }
+
 // The import reads positions as camera axes and makes cam1 from cam0's frames
 // by time shift, with a zero gyro: a slider that does not turn. A pose turned
 // by more than a pixel's angle at fx from the dataset's axes is refused (was:
 // imported, exit 0, the turn written as none).
 void check_does_not_turn(const std::vector<SliderPose>& poses, double fx, const std::string& gt_file) {
-  const double limit = std::atan(1.0 / fx);
+  const double limit = pixel_angle(fx);
   for (const SliderPose& p : poses) {
     const double n = std::sqrt(p.q[0] * p.q[0] + p.q[1] * p.q[1] + p.q[2] * p.q[2] + p.q[3] * p.q[3]);
     const double turn = 2 * std::acos(std::min(1.0, std::fabs(p.q[3]) / n));
@@ -152,7 +155,7 @@ void check_does_not_turn(const std::vector<SliderPose>& poses, double fx, const 
 void check_moves_along_x(const std::vector<SliderPose>& poses, double fx, const std::string& gt_file) {
   const SliderPose &a = poses.front(), &b = poses.back();
   const double dx = b.p[0] - a.p[0], dy = b.p[1] - a.p[1], dz = b.p[2] - a.p[2];
-  const double off = std::atan2(std::hypot(dy, dz), dx), limit = std::atan(1.0 / fx);
+  const double off = std::atan2(std::hypot(dy, dz), dx), limit = pixel_angle(fx);
   if (off <= limit) return;
   char m[512];
   std::snprintf(m, sizeof m,
