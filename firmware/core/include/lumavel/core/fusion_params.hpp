@@ -52,11 +52,11 @@ constexpr double kTofVertexSlack = 1.0 / 16384;
 // sigma. The matching turns the trail's F back with the mean of the two
 // sightings' slopes (a trapezoid: what it leaves is (dtheta / sigma)^3 / 12
 // of F's third derivative, 1 % at 0.5). Measured on arcs past walls at
-// 0.5-1 m (R 0.5-3 m, 0.25-1.5 m/s, 50 deg views; docs/design.md): at 0.25
-// a tight arc never had a time of flight and the differential alone read V
-// 40 % low beside a wall at 0.5 m (E 46-52 %); at 0.5 those arcs 6.6-12 %
-// and no render worse by more than 4 % of its E; at 0.75 and beyond, arcs at
-// 2 m (w 0.5-2 rad/s) 16-95 % worse, the third order now within the gates.
+// 0.5-2.5 m (R 0.5-3 m, 0.25-1.5 m/s, 50 deg views; docs/design.md): at 0.25
+// no arc under R = 4.4 m had a time of flight, and beside a wall at 0.5 m the
+// differential alone read V 40 % low (E 46-52 % on R = 3 m); at 0.5 those
+// arcs 6.6-12 % and no render worse by more than 4 % of its E; at 0.75 and
+// beyond, arcs of R 0.5-2 m 16-95 % worse (the gates let the error through).
 constexpr double kTofMaxRotationSigma = 0.5;
 // The tracked time of flight may move by this many frame periods, or by this
 // fraction of itself, from one frame to the next.
