@@ -3,12 +3,15 @@
 #include <CppUTest/MemoryLeakWarningPlugin.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <zlib.h>
 
 #include <cstdio>
 #include <cstdlib>
 
 #include <string>
+#include <vector>
 
+#include "lumavel/host/image_io.hpp"
 #include "lumavel/host/render/scenario_loader.hpp"
 #include "lumavel/host/render/surface_pattern.hpp"
 
@@ -175,6 +178,44 @@ TEST(ScenarioErrors, APhotoPgmWithBytesAfterItsRasterIsRefused) {
   STRCMP_EQUAL((photo + ": PGM has 2 bytes after the raster of its header's 2x1 pixels: the header does not "
                 "describe the image").c_str(),
                e.c_str());
+}
+
+// A photo PNG whose header says fewer rows than its data holds (31 rows
+// under a header of 30), or with bytes after its zlib stream: libpng's
+// simplified API read on with a warning nobody saw, and the photo was
+// rendered from what the header says, exit 0. Refused as a recording's frame
+// is ("corrupt PNG: IDAT: Too much image data").
+TEST(ScenarioErrors, APhotoPngWithMoreDataThanItsHeaderSaysIsRefused) {
+  char dir[] = "/tmp/lumavel_photo_png_XXXXXX";
+  CHECK(mkdtemp(dir) != nullptr);
+  const std::string photo = std::string(dir) + "/p.png";
+  std::vector<uint8_t> px(40 * 31);
+  for (size_t i = 0; i < px.size(); ++i) px[i] = static_cast<uint8_t>((i * 37 + i / 7) & 0xff);
+  lumavel::host::write_png_gray(photo, px.data(), 40, 31);
+  std::string bytes;
+  {
+    std::FILE* f = std::fopen(photo.c_str(), "rb");
+    char b[4096];
+    size_t n;
+    while ((n = std::fread(b, 1, sizeof b, f)) > 0) bytes.append(b, n);
+    std::fclose(f);
+  }
+  bytes[23] = 30;  // IHDR height (big-endian, bytes 20..23): 31 -> 30, and the chunk's CRC-32 (bytes 29..32) made right
+  const uLong crc = crc32(0, reinterpret_cast<const Bytef*>(bytes.data() + 12), 17);
+  for (int k = 0; k < 4; ++k) bytes[static_cast<size_t>(29 + k)] = static_cast<char>(crc >> (24 - 8 * k));
+  std::FILE* f = std::fopen(photo.c_str(), "wb");
+  std::fwrite(bytes.data(), 1, bytes.size(), f);
+  std::fclose(f);
+  std::string e = "(read)";
+  try {
+    int w = 0, h = 0;
+    load_photo_gray(photo, w, h);
+  } catch (const std::runtime_error& x) {
+    e = x.what();
+  }
+  std::remove(photo.c_str());
+  rmdir(dir);
+  STRCMP_EQUAL((photo + ": corrupt PNG: IDAT: Too much image data").c_str(), e.c_str());
 }
 
 TEST(ScenarioErrors, BadPlaneGeometry) {

@@ -76,15 +76,11 @@ void png_fail(png_structp png, png_const_charp msg) {
 void png_quiet_warning(png_structp, png_const_charp) {}
 
 // libpng reads past its "benign" errors with a warning. Those about the
-// image data (more rows than the header says, data after the zlib stream,
-// IDAT chunks out of place) mean a damaged frame: kept, to refuse it. Those
-// about an ancillary chunk (a colour profile known to be wrong, a bad text
-// chunk) do not touch the pixels: the frame is read as it is.
+// image data mean a damaged frame: kept, to refuse it; the others
+// (ancillary chunks) leave the frame read as it is (png_warning_is_about_pixels).
 void png_note_warning(png_structp png, png_const_charp msg) {
   auto* src = static_cast<PngSource*>(png_get_error_ptr(png));
-  const bool about_pixels = std::strstr(msg, "IDAT") != nullptr || std::strstr(msg, "image data") != nullptr ||
-                            std::strstr(msg, "compressed data") != nullptr;
-  if (about_pixels && !src->damage[0]) std::snprintf(src->damage, sizeof src->damage, "%s", msg);
+  if (png_warning_is_about_pixels(msg) && !src->damage[0]) std::snprintf(src->damage, sizeof src->damage, "%s", msg);
 }
 
 void png_read_mem(png_structp png, png_bytep out, png_size_t n) {
@@ -301,6 +297,11 @@ GrayImage decode(const uint8_t* data, size_t size, const std::string& name, Expe
 }
 
 }  // namespace
+
+bool png_warning_is_about_pixels(const char* message) {
+  return std::strstr(message, "IDAT") != nullptr || std::strstr(message, "image data") != nullptr ||
+         std::strstr(message, "compressed data") != nullptr;
+}
 
 GrayImage decode_gray_image(const uint8_t* data, size_t size, const std::string& name) {
   return decode(data, size, name, Expect{});

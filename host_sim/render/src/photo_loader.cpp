@@ -52,6 +52,13 @@ std::vector<unsigned char> load_png(const std::string& path, int& w, int& h) {
     png_image_free(&img);
     throw std::runtime_error(path + ": corrupt PNG: " + msg);
   }
+  // The simplified API reads past damaged image data with a warning, which
+  // it keeps in the message (the first one) and does not fail on: a photo
+  // whose header says fewer rows than its data holds, or with data after its
+  // zlib stream, was rendered from what the header says, exit 0. Refused as
+  // a recording's frame is, by the same rule.
+  if ((img.warning_or_error & PNG_IMAGE_WARNING) != 0 && png_warning_is_about_pixels(img.message))
+    throw std::runtime_error(path + ": corrupt PNG: " + img.message);
   w = static_cast<int>(img.width);
   h = static_cast<int>(img.height);
   return px;

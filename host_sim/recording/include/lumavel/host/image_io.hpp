@@ -36,6 +36,14 @@ GrayImage read_gray_image(const std::string& path, int expect_width, int expect_
 // Same, from bytes already in memory; `name` is used in error messages.
 GrayImage decode_gray_image(const uint8_t* data, size_t size, const std::string& name);
 
+// Whether a warning libpng gives while it reads on (one of its "benign"
+// errors) is about the image data: more rows than the header says, data
+// after the zlib stream, IDAT chunks out of place. Such a file is damaged and
+// refused; a warning about an ancillary chunk (a colour profile known to be
+// wrong, a bad text chunk) does not touch the pixels. One rule for the
+// frames read here and the photos a scenario's walls show.
+bool png_warning_is_about_pixels(const char* message);
+
 // Writes an 8-bit grayscale PNG. Favours speed (zlib level 1): the renderer
 // writes thousands of frames. Throws RecordingError naming `path` on failure.
 void write_png_gray(const std::string& path, const uint8_t* px, int w, int h);
