@@ -218,6 +218,18 @@ TEST(ScenarioErrors, APhotoPngWithMoreDataThanItsHeaderSaysIsRefused) {
   STRCMP_EQUAL((photo + ": corrupt PNG: IDAT: Too much image data").c_str(), e.c_str());
 }
 
+// 'dark' is a list of intervals: one interval without its outer brackets
+// was refused as "'dark' must be a list of 2 numbers", which it is.
+TEST(ScenarioErrors, ADarkIntervalWithoutItsBracketsIsSaidAsSuch) {
+  STRCMP_EQUAL("bad.yaml:14: 'dark' must be a list of [start_s, end_s] intervals (e.g. dark: [[3, 3.5]]): an element "
+               "is '0.5', not an interval",
+               error_of(std::string(kGood) + "lighting: {dark: [0.5, 0.8]}\n").c_str());
+  STRCMP_EQUAL("bad.yaml:14: 'dark' must be a list of [start_s, end_s] intervals (e.g. dark: [[3, 3.5]]): an element "
+               "is a list of 3 numbers, not 2",
+               error_of(std::string(kGood) + "lighting: {dark: [[0.5, 0.8, 1]]}\n").c_str());
+  STRCMP_EQUAL("(accepted)", error_of(std::string(kGood) + "lighting: {dark: [[0.5, 0.8]]}\n").c_str());
+}
+
 TEST(ScenarioErrors, BadPlaneGeometry) {
   STRCMP_CONTAINS("bad.yaml:12:", error_of(replace(kGood, "z: [-1, 1]", "z: [1, -1]")).c_str());
   STRCMP_CONTAINS("bad.yaml:11:", error_of(replace(kGood, "to: [5, 2]", "to: [0, 2]")).c_str());

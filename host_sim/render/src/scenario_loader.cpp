@@ -496,6 +496,14 @@ void read_lighting(const Reader& r, const YAML::Node& n, Scenario& s) {
   if (const YAML::Node d = n["dark"]) {
     if (!d.IsSequence()) r.fail(d, "'dark' must be a list of [start_s, end_s]");
     for (const auto& e : d) {
+      // Each element is an interval: 'dark: [3, 3.5]' (one interval without
+      // its brackets) was refused as "'dark' must be a list of 2 numbers", a
+      // rule the value meets. Said with the element that is no interval.
+      if (!e.IsSequence() || e.size() != 2)
+        r.fail(e, "'dark' must be a list of [start_s, end_s] intervals (e.g. dark: [[3, 3.5]]): an element is " +
+                      (e.IsScalar() ? "'" + shown_path(e.Scalar()) + "', not an interval"
+                       : e.IsSequence() ? "a list of " + std::to_string(e.size()) + " numbers, not 2"
+                                        : std::string("a map, not an interval")));
       const auto v = r.list(e, "dark", 2, -kInf, kInf);
       if (v[1] <= v[0]) r.fail(e, "dark interval must be [start_s, end_s] with end > start");
       l.dark.emplace_back(v[0], v[1]);
