@@ -351,6 +351,18 @@ TEST(ImportSlider, DamagedDatasetsAreRefusedNamingTheLine) {
        "groundtruth.txt: from line 1 to line 41 the slider moves 63.435 deg off the camera's x axis (x 0.1 m, y 0.2 "
        "m, z 0 m): the import makes cam1 from cam0's frames h further on along x, which holds for a slider that moves "
        "along x: at most 1.1458 deg (a pixel at fx = 50 px)"},
+      // A slider that ends where it started, or behind (was: 'the slider does
+      // not move along +x (the import assumes it does)', no line, no value).
+      {[&] {
+         std::vector<std::string> l = fixture::read_lines(d + "/groundtruth.txt");
+         for (std::string& s : l) {
+           const size_t a = s.find(' ') + 1, b = s.find(' ', a);
+           s = s.substr(0, a) + std::to_string(3 * kX0 - std::stod(s.substr(a, b - a))) + s.substr(b);
+         }
+         fixture::write_lines(d + "/groundtruth.txt", l);
+       },
+       "groundtruth.txt: from line 1 to line 41 the slider moves -0.1 m along x (x 0.2 m to 0.1 m): the import makes "
+       "cam1 from cam0's frames h further on along +x, which needs a slider that ends further along +x than it starts"},
       // The recording's physical bounds (was: exit 0, a speed of 2.5e301 m/s written).
       {[&] { line5("groundtruth.txt", [](const std::string& l) { const size_t a = l.find(' ') + 1; return l.substr(0, a) + "1e300" + l.substr(l.find(' ', a)); }); },
        "groundtruth.txt:5: x: 1e+300 m is beyond +-1e+07 m"},

@@ -123,6 +123,21 @@ void check_before_import(const std::string& data_dir, const std::string& out_rec
   }
 }
 
+// The slider must end further along +x than it starts: cam1 is cam0's frame
+// h further on along +x. Said with the lines and the positions compared (was:
+// 'the slider does not move along +x (the import assumes it does)', neither
+// the lines nor the values said), as check_moves_along_x says its travel.
+RecordingError not_along_plus_x(const std::vector<SliderPose>& poses, const std::string& gt_file) {
+  const SliderPose &a = poses.front(), &b = poses.back();
+  char m[400];
+  std::snprintf(m, sizeof m,
+                "from line %ld to line %ld the slider moves %.6g m along x (x %.6g m to %.6g m): the import makes cam1 "
+                "from cam0's frames h further on along +x, which needs a slider that ends further along +x than it "
+                "starts",
+                a.line, b.line, b.p[0] - a.p[0], a.p[0], b.p[0]);
+  return recording_error_in(gt_file, m);
+}
+
 // The tolerance of both checks below: the angle one pixel spans at fx.
 double pixel_angle(double fx) { return std::atan(1.0 / fx); }
 
@@ -206,8 +221,7 @@ ImportSliderSummary import_slider(const std::string& data_dir, const std::string
     throw std::invalid_argument("the baseline must be a positive number of metres");
   const SliderDataset d = read_slider_dataset(data_dir);
   const std::string gt_file = data_dir + "/groundtruth.txt";
-  if (!(d.poses.back().p[0] > d.poses.front().p[0]))
-    throw recording_error_in(gt_file, "the slider does not move along +x (the import assumes it does)");
+  if (!(d.poses.back().p[0] > d.poses.front().p[0])) throw not_along_plus_x(d.poses, gt_file);
   check_does_not_turn(d.poses, d.calib.fx, gt_file);
   check_moves_along_x(d.poses, d.calib.fx, gt_file);
   // Before anything is written: its speeds are checked.
