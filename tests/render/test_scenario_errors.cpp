@@ -378,6 +378,11 @@ TEST(ScenarioErrors, WholeNumbersAreReadAsTheCommandLinesReadThem) {
   STRCMP_EQUAL("bad.yaml:14: 'frames' must be a whole number in 0..1000000000 (frame numbers), written without a "
                "leading zero, not '010'",
                error_of(std::string(kGood) + "drops: {frames: [3, 010]}\n").c_str());
+  // A list or a map where the number belongs (was: "not '?'").
+  STRCMP_EQUAL("bad.yaml:1: 'seed' must be a whole number in 0..9007199254740992, not a list",
+               error_of(std::string("seed: [7]\n") + kGood).c_str());
+  STRCMP_EQUAL("bad.yaml:14: 'frames' must be a whole number in 0..1000000000 (frame numbers), not a map",
+               error_of(std::string(kGood) + "drops: {frames: [{a: 1}]}\n").c_str());
 }
 
 // start_ns is read as the command lines read whole numbers: yaml-cpp read

@@ -160,9 +160,12 @@ class Reader {
                   const std::string& range) const {
     const WholeText w = n.IsScalar() ? read_whole(n.Scalar()) : WholeText{WholeText::Problem::kNotAWholeNumber, 0};
     if (w.problem == WholeText::Problem::kNone && w.value >= lo && w.value <= hi) return w.value;
+    // A list or a map there was said as "not '?'", a value the file does not hold.
     fail(n, "'" + key + "' must be a whole number" + range +
-                (w.problem == WholeText::Problem::kLeadingZero ? ", written without a leading zero" : "") + ", not '" +
-                (n.IsScalar() ? shown_path(n.Scalar()) : std::string("?")) + "'");
+                (w.problem == WholeText::Problem::kLeadingZero ? ", written without a leading zero" : "") + ", not " +
+                (n.IsScalar()     ? "'" + shown_path(n.Scalar()) + "'"
+                 : n.IsSequence() ? std::string("a list")
+                                  : std::string("a map")));
   }
 
   std::vector<double> list(const YAML::Node& n, const std::string& key, size_t count, double lo,
