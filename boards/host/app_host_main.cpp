@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <system_error>
 
+#include "lumavel/core/limits.hpp"
+#include "lumavel/stream/format.hpp"
 #include "lumavel/stream/run_stream.hpp"
 
 namespace {
@@ -28,6 +30,19 @@ class FileSink final : public lumavel::stream::ByteSink {
  private:
   std::FILE* f_;
 };
+
+// For a stream whose frames this build cannot hold: the size its header
+// gives and the build's, which "frame larger than the build's capacity" left
+// unsaid (was all of it, for a 161x30 stream of lumavel_make_test_stream).
+void print_size_beyond_capacity(const char* path) {
+  uint8_t h[lumavel::stream::kHeaderSize] = {};
+  std::FILE* f = std::fopen(path, "rb");
+  const bool read = f != nullptr && std::fread(h, 1, sizeof h, f) == sizeof h;
+  if (f != nullptr) std::fclose(f);
+  if (!read) return;
+  std::fprintf(stderr, ": its header says %ux%u pixels, this build takes at most %dx%d", unsigned{h[4]} | unsigned{h[5]} << 8,
+               unsigned{h[6]} | unsigned{h[7]} << 8, lumavel::kMaxColumns, lumavel::kMaxRows);
+}
 
 }  // namespace
 
@@ -82,8 +97,9 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "%s: read error: %s\n", argv[1], std::strerror(read_errno));
         return 2;
       }
-      std::fprintf(stderr, "%s: record %u: %s\n", argv[1], s.record_index,
-                   lumavel::stream::to_string(s.stream_error));
+      std::fprintf(stderr, "%s: record %u: %s", argv[1], s.record_index, lumavel::stream::to_string(s.stream_error));
+      if (s.stream_error == lumavel::stream::StreamError::kTooLarge) print_size_beyond_capacity(argv[1]);
+      std::fprintf(stderr, "\n");
       return 2;
     case lumavel::stream::RunOutcome::kUnconfigured:
       std::fprintf(stderr, "%s: no configuration accepted (%s)\n", argv[1],

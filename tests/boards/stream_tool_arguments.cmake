@@ -54,6 +54,12 @@ if(NOT rc EQUAL 1 OR NOT err MATCHES "out\\.lvr: needs a path, not an empty one"
   message(FATAL_ERROR "lumavel_app_host in.lvs '': expected exit 1 and 'out.lvr: needs a path', got exit ${rc}: ${err}")
 endif()
 expect("${WORK}: read error: Is a directory" ${HOST_APP} ${WORK} out.lvr)
+# A stream whose frames are larger than this build holds (lumavel_make_test_stream
+# writes up to 2048 columns): 'record 0: frame larger than the build's
+# capacity' said neither the stream's size nor the build's.
+execute_process(COMMAND ${GEN} wide.lvs 2048 30 1 WORKING_DIRECTORY ${WORK} RESULT_VARIABLE rc ERROR_QUIET)
+expect("wide.lvs: record 0: frame larger than the build's capacity: its header says 2048x30 pixels, this build takes at most [0-9]+x[0-9]+"
+       ${HOST_APP} wide.lvs wide.lvr)
 # A 0.1 s render to convert (its cam0/data.csv the output named).
 file(REMOVE_RECURSE ${WORK}/rec)
 execute_process(COMMAND ${SIM} render ${CMAKE_CURRENT_LIST_DIR}/../../host_sim/scenarios/paper_sim_aligned.yaml
