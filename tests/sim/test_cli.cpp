@@ -232,6 +232,24 @@ TEST(Cli, AWholeNumberWithALeadingZeroIsRefused) {
   STRCMP_CONTAINS("not '0'", r.err.c_str());
 }
 
+// A number nearer 0 than any double, as a file's is (a77d867): '--exposure
+// 1e-400' rendered with exposure 0, exit 0, and '--max-shift 1e-400' was
+// told 'must be a number in (0, 20]', a rule the number meets.
+TEST(Cli, ANumberNearerZeroThanAnyDoubleIsRefusedSayingSo) {
+  Outcome r = sim("render a.yaml out --exposure 1e-400");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("lumavel-sim render: --exposure: must be a number in [0, 10], not '1e-400', which is nearer 0 than "
+                  "the smallest number (about 2.2e-308)",
+                  r.err.c_str());
+  r = sim("calibrate nowhere --max-shift 1e-400");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("lumavel-sim calibrate: --max-shift: must be a number in (0, 20], not '1e-400', which is nearer 0 "
+                  "than the smallest number (about 2.2e-308)",
+                  r.err.c_str());
+  r = sim("render a.yaml out --exposure 0e-400");  // exactly 0: a number like any other
+  CHECK(r.err.find("--exposure") == std::string::npos);
+}
+
 TEST(Cli, MissingRecordingExitsOne) {
   Outcome r = sim("run nowhere");
   LONGS_EQUAL(1, r.code);

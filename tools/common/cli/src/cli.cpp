@@ -71,12 +71,24 @@ std::string space_note(const std::string& s) {
   return space ? ", written without spaces (a space is no part of a number)" : "";
 }
 
-// Decimal only, as the files' numbers (decimal_text.hpp): '--baseline 0x1p-5' is refused, not 0.03125.
+// Decimal only, as the files' numbers (decimal_text.hpp): '--baseline 0x1p-5'
+// is refused, not 0.03125. A number nearer 0 than any double is refused too,
+// as a file's is (a77d867): '--exposure 1e-400' rendered with exposure 0,
+// exit 0, and '--max-shift 1e-400' was told 'must be a number in (0, 20]',
+// a rule the number meets (underflow_note says why).
 bool parse_double(const std::string& s, double& out) {
   if (s.empty() || std::isspace(static_cast<unsigned char>(s[0]))) return false;
   const host::DecimalText d = host::read_decimal(s);
   out = d.value;
-  return d.problem == host::DecimalText::Problem::kNone;
+  return d.problem == host::DecimalText::Problem::kNone && !d.underflow;
+}
+
+// What a message adds when the number is nearer 0 than any double.
+std::string underflow_note(const std::string& s) {
+  const host::DecimalText d = host::read_decimal(s);
+  return d.problem == host::DecimalText::Problem::kNone && d.underflow
+             ? std::string(", which is ") + host::kNearerZeroThanAnyNumber
+             : std::string();
 }
 
 }  // namespace
@@ -231,7 +243,7 @@ CLI::Validator number_in(double lo, double hi) {
         double v = 0;
         if (!parse_double(s, v) || v < lo || v > hi)
           return "must be a number in [" + number_text(lo) + ", " + number_text(hi) + "]" + space_note(s) + ", not " +
-                 in_quotes(s);
+                 in_quotes(s) + underflow_note(s);
         return {};
       },
       "");
@@ -242,7 +254,8 @@ CLI::Validator positive_number_up_to(double hi) {
       [hi](std::string& s) -> std::string {
         double v = 0;
         if (!parse_double(s, v) || !(v > 0) || v > hi)
-          return "must be a number in (0, " + number_text(hi) + "]" + space_note(s) + ", not " + in_quotes(s);
+          return "must be a number in (0, " + number_text(hi) + "]" + space_note(s) + ", not " + in_quotes(s) +
+                 underflow_note(s);
         return {};
       },
       "");
