@@ -230,6 +230,13 @@ TEST(ScenarioErrors, ADarkIntervalWithoutItsBracketsIsSaidAsSuch) {
   STRCMP_EQUAL("(accepted)", error_of(std::string(kGood) + "lighting: {dark: [[0.5, 0.8]]}\n").c_str());
 }
 
+// An empty photo name was said as the scenario's folder: "photo 'DIR/' is a
+// folder, not a file".
+TEST(ScenarioErrors, AnEmptyPhotoNameIsSaidAsSuch) {
+  STRCMP_EQUAL("bad.yaml:13: photo 'file' is empty: it names the photo (relative to the scenario file)",
+               error_of(replace(kGood, "{type: uniform, value: 90}", "{type: photo, file: \"\", size_m: [1, 1]}")).c_str());
+}
+
 TEST(ScenarioErrors, BadPlaneGeometry) {
   STRCMP_CONTAINS("bad.yaml:12:", error_of(replace(kGood, "z: [-1, 1]", "z: [1, -1]")).c_str());
   STRCMP_CONTAINS("bad.yaml:11:", error_of(replace(kGood, "to: [5, 2]", "to: [0, 2]")).c_str());

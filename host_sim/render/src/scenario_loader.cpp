@@ -438,6 +438,9 @@ void read_pattern(const Reader& r, const YAML::Node& n, PatternSpec& p,
     p.kind = PatternKind::Photo;
     const YAML::Node f = n["file"];
     if (!f || !f.IsScalar()) r.fail(n, "photo pattern needs 'file'");
+    // An empty name resolved to the scenario's own folder: 'photo 'DIR/' is a
+    // folder, not a file', a name the file does not hold.
+    if (f.Scalar().empty()) r.fail(f, "photo 'file' is empty: it names the photo (relative to the scenario file)");
     // "a.png\0junk" (a YAML escape) would open a.png (was: rendered, exit 0).
     if (const std::string why = why_nul_in_name(f.Scalar()); !why.empty()) r.fail(f, "photo file name " + why);
     p.file = resolve_path(f.Scalar(), base_dir);
