@@ -691,8 +691,8 @@ std::string photo_scenario(const std::string& file) {
 }
 
 #if LUMAVEL_CAMPAIGN_JPEG
-// A w x h 8-bit gray baseline JPEG of a ramp.
-void write_jpeg(const std::string& path, int w, int h) {
+// A w x h 8-bit gray baseline JPEG of a ramp (CMYK, each ink the ramp, with `cmyk`).
+void write_jpeg(const std::string& path, int w, int h, bool cmyk = false) {
   std::FILE* f = std::fopen(path.c_str(), "wb");
   jpeg_compress_struct c{};
   jpeg_error_mgr e{};
@@ -701,13 +701,14 @@ void write_jpeg(const std::string& path, int w, int h) {
   jpeg_stdio_dest(&c, f);
   c.image_width = static_cast<JDIMENSION>(w);
   c.image_height = static_cast<JDIMENSION>(h);
-  c.input_components = 1;
-  c.in_color_space = JCS_GRAYSCALE;
+  const int n = cmyk ? 4 : 1;
+  c.input_components = n;
+  c.in_color_space = cmyk ? JCS_CMYK : JCS_GRAYSCALE;
   jpeg_set_defaults(&c);
   jpeg_start_compress(&c, TRUE);
-  std::vector<JSAMPLE> row(static_cast<size_t>(w));
+  std::vector<JSAMPLE> row(static_cast<size_t>(w * n));
   for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) row[static_cast<size_t>(x)] = static_cast<JSAMPLE>((x * 7 + y * 13) ^ (x * y));
+    for (int x = 0; x < w * n; ++x) row[static_cast<size_t>(x)] = static_cast<JSAMPLE>((x / n * 7 + y * 13) ^ (x / n * y));
     JSAMPROW r = row.data();
     jpeg_write_scanlines(&c, &r, 1);
   }
@@ -772,6 +773,12 @@ std::vector<Case> render_cases() {
                  b[sof + 6] = static_cast<char>(60000 & 0xFF);
                  write_text(d + "/photo.jpg", b);
                }, Expect::kRefused, "scenario.yaml:8: photo", "photo.jpg: is 60000x60000", {}, {}, {}, 1024});
+  // libjpeg converts no CMYK to gray: a valid print file was refused as
+  // 'corrupt JPEG: Unsupported color conversion request'.
+  c.push_back({"render: photo a CMYK JPEG", "render", [](const std::string& d) {
+                 write_text(d + "/scenario.yaml", photo_scenario("photo.jpg"));
+                 write_jpeg(d + "/photo.jpg", 64, 64, true);
+               }, Expect::kRefused, "scenario.yaml:8: photo", "photo.jpg: a CMYK JPEG: photos are read from grayscale, RGB or YCbCr JPEGs", {}});
   // libjpeg's warning went to stderr and the missing part was decoded gray: exit 0.
   c.push_back({"render: photo a truncated JPEG", "render", [](const std::string& d) {
                  write_text(d + "/scenario.yaml", photo_scenario("photo.jpg"));

@@ -101,6 +101,15 @@ std::vector<unsigned char> load_jpeg(const std::string& path, int& w, int& h) {
   jpeg_create_decompress(&cinfo);
   jpeg_stdio_src(&cinfo, f.get());
   jpeg_read_header(&cinfo, TRUE);
+  // libjpeg converts gray, YCbCr and RGB to gray, not CMYK or YCCK (print
+  // files): refused as 'corrupt JPEG: Unsupported color conversion request',
+  // a valid file called damaged. Said with its colour space.
+  if (cinfo.jpeg_color_space == JCS_CMYK || cinfo.jpeg_color_space == JCS_YCCK) {
+    const char* const space = cinfo.jpeg_color_space == JCS_CMYK ? "CMYK" : "YCCK";
+    jpeg_destroy_decompress(&cinfo);
+    throw std::runtime_error(path + ": a " + space +
+                             " JPEG: photos are read from grayscale, RGB or YCbCr JPEGs (save it as RGB or grayscale)");
+  }
   too_big = why_photo_too_big(cinfo.image_width, cinfo.image_height);
   if (!too_big.empty()) {
     jpeg_destroy_decompress(&cinfo);
