@@ -428,6 +428,11 @@ TEST(ScenarioErrors, ASecondDocumentIsRefused) {
   // '---' inside a quoted text stay what they are.
   STRCMP_EQUAL("(accepted)", error_of(std::string("# a scenario\n---\n") + kGood + "...\n\n").c_str());
   STRCMP_EQUAL("(accepted)", error_of(std::string("description: \"a\n  --- b\"\n") + kGood).c_str());
+  // A directive and the '---' it heads: one document (was: 'bad.yaml:2: a
+  // second YAML document (after '---')').
+  STRCMP_EQUAL("(accepted)", error_of(std::string("%YAML 1.2\n---\n") + kGood).c_str());
+  e = error_of(std::string(kGood) + "---\n%YAML 1.2\n---\nduration_s: 5\n");
+  STRCMP_CONTAINS("bad.yaml:14: a second YAML document (after '---')", e.c_str());
 }
 
 // Brackets nested hundreds deep stop yaml-cpp's parser with "bad file"

@@ -51,6 +51,10 @@ inline NotOneDocument why_not_one_document(const std::string& text) {
       if (content) out = {n, "a second YAML document (after '---')"};
     } else if (is_marker(l, "...")) {
       if (content && ended_at == 0) ended_at = n;
+    } else if (!content && ended_at == 0 && !l.empty() && l[0] == '%') {
+      // A directive ('%YAML 1.2', '%TAG ...') before the document's '---'
+      // is no content of it: '%YAML 1.2' then '---', one document as YAML
+      // writers head it, was refused as 'a second YAML document'.
     } else if (has_content(l)) {
       if (ended_at != 0)
         out = {n, "text after the end of the document ('...' at line " + std::to_string(ended_at) + ")"};
