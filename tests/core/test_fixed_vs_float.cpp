@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "lumavel/core/status.hpp"
 #include "lumavel/host/engine.hpp"
 #include "synthetic_rig.hpp"
 
@@ -70,6 +71,45 @@ TEST_GROUP(FixedVsFloat){};
 TEST(FixedVsFloat, At20x15) { CHECK(compare(20, 15, 3).worst_ratio <= 1.0); }
 TEST(FixedVsFloat, At40x30) { CHECK(compare(40, 30, 3).worst_ratio <= 1.0); }
 TEST(FixedVsFloat, At160x120) { CHECK(compare(160, 120, 2).worst_ratio <= 1.0); }
+
+// A step of about ten baselines a frame (12 m/s at 15 Hz, h = 8 cm): the
+// core holds the step's ratio d / h in 32 bits (Q28), which saturates at 8
+// and raises SATURATED; the twin must stop and say so on the same frames
+// (it went on to 10 h, and a street at 15 Hz split by 1.6 points of E).
+TEST(FixedVsFloat, AStepBeyondEightBaselinesIsSaturatedInBoth) {
+  test::SyntheticRig rig;
+  rig.wall = 20.0;  // far, and textured in metres: the differential stays linear over the step
+  rig.texture = [](double X, double Z) {
+    return 128 + 50 * std::sin(2 * M_PI * X / 5.3) * std::cos(2 * M_PI * Z / 9) + 35 * std::sin(2 * M_PI * X / 3.1 + 1.3);
+  };
+  rig.noise = 1.0;
+  auto s = rig.settings();
+  s.frame_period = 1.0 / 15;
+  auto fixed = host::make_engine(host::EngineKind::kFixed, s);
+  auto dbl = host::make_engine(host::EngineKind::kFloat, s);
+  int saturated = 0;
+  double worst = 0;
+  for (int i = 0; i < 45; ++i) {
+    const double t = i / 15.0;
+    for (int g = 0; g < 13; ++g) {
+      const uint64_t tg = static_cast<uint64_t>(std::llround((t - 1.0 / 15 + g * 0.005) * 1e9)) + 80000000;
+      fixed->push_gyro(tg, 0);
+      dbl->push_gyro(tg, 0);
+    }
+    const test::Pose2 p{12.0 * t, 0, 0};
+    const auto a = rig.render(0, p), b = rig.render(1, p);
+    const uint64_t tn = static_cast<uint64_t>(std::llround(t * 1e9)) + 100000000;
+    const host::EngineEstimate ef = fixed->step(tn, a.data(), b.data());
+    const host::EngineEstimate ed = dbl->step(tn, a.data(), b.data());
+    CHECK_EQUAL(ef.status, ed.status);
+    saturated += (ef.status & kStatusSaturated) ? 1 : 0;
+    worst = std::fmax(worst, std::fabs(ef.v - ed.v) / std::fmax(0.001, 0.001 * std::fabs(ed.v)));
+  }
+  std::printf("\n  ten baselines a frame: SATURATED on %d of 45 frames in both, worst gap %.1f %% of the allowance",
+              saturated, 100 * worst);
+  CHECK(saturated > 0);
+  CHECK(worst <= 1.0);
+}
 
 namespace {
 // Barrel-distorted column edges (k1 = -0.14 on the principal row), as the

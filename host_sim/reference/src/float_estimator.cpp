@@ -116,6 +116,7 @@ EngineEstimate FloatEstimator::step(uint64_t t_ns, const uint8_t* cam0, const ui
         gyro_offset_.update({&m, t_ns, angle, o.updated, s_.baseline, s_.still_distance, still_min_ns_});
         if (gyro_offset_.still()) status |= kStatusStill;
       }
+      if (o.saturated) status |= kStatusSaturated;
       est.v_direct = o.v_direct;
       est.texture = o.texture;
       // The time of flight: this frame on the history, then its match (not

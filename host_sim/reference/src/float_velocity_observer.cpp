@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "lumavel/core/estimator_params.hpp"
+#include "lumavel/units/fixed.hpp"
 
 namespace lumavel::host {
 namespace {
@@ -16,21 +17,31 @@ double x_over_tan(double x) {
   return std::fabs(x) > 1e-12 ? x / std::tan(x) : 1.0;
 }
 
+// The core holds the step's ratio d / h in ValueQ28 (32 bits): beyond -8 ..
+// (2^31 - 1) / 2^28 baselines a frame its division saturates there and says
+// so (SATURATED); the twin stops at the same values and says so too.
+const double kRatioMin = -std::ldexp(1.0, 31 - fx::kValueFrac);
+const double kRatioMax = std::ldexp(static_cast<double>(fx::kInt32Max), -fx::kValueFrac);
+double saturating(double ratio, bool* sat) {
+  if (ratio > kRatioMax || ratio < kRatioMin) *sat = true;
+  return std::clamp(ratio, kRatioMin, kRatioMax);
+}
+
 // The finite step in time: the ratio d / h that explains e once each kernel's
 // innovation is scaled by y / tan(y), y = x_k d / h (velocity_observer.cpp).
 double step_corrected_ratio(const Eigen::VectorXd& e, const Eigen::VectorXd& a, const Eigen::VectorXd& half,
-                            double ratio, double den) {
+                            double ratio, double den, bool* sat) {
   double num = 0;
   for (Eigen::Index k = 0; k < e.size(); ++k) num += e[k] * x_over_tan(half[k] * ratio) * a[k];
-  return num / den;
+  return saturating(num / den, sat);
 }
 
 // Its fixed point: two evaluations and Aitken's extrapolation where the
 // iterates alternate (else the second iterate), as the core.
 double solve_step_correction(const Eigen::VectorXd& e, const Eigen::VectorXd& a, const Eigen::VectorXd& half,
-                             double r0, double den) {
-  const double r1 = step_corrected_ratio(e, a, half, r0, den);
-  const double r2 = step_corrected_ratio(e, a, half, r1, den);
+                             double r0, double den, bool* sat) {
+  const double r1 = step_corrected_ratio(e, a, half, r0, den, sat);
+  const double r2 = step_corrected_ratio(e, a, half, r1, den, sat);
   const double d1 = r1 - r0, d2 = r2 - r1;
   if ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) return r2 - d2 * d2 / (d2 - d1);
   return r2;
@@ -62,9 +73,10 @@ FloatObserverOutput FloatVelocityObserver::update(const FloatObserverInput& in) 
     return out;
   }
   // Distance over the interval: d = h e.A / A.A.
-  double d = in.baseline * e.dot(a) / den;
+  bool sat = false;
+  double d = in.baseline * saturating(e.dot(a) / den, &sat);
   if (in.baseline_correction) {
-    d = in.baseline * solve_step_correction(e, a, half, d / in.baseline, den);
+    d = in.baseline * solve_step_correction(e, a, half, d / in.baseline, den, &sat);
     for (Eigen::Index k = 0; k < e.size(); ++k) e[k] *= x_over_tan(half[k] * d / in.baseline);  // (the residual as corrected)
   }
   out.v_direct = d / in.dt;
@@ -83,6 +95,7 @@ FloatObserverOutput FloatVelocityObserver::update(const FloatObserverInput& in) 
   }
   out.v = v_;
   out.updated = true;
+  out.saturated = sat;
   return out;
 }
 

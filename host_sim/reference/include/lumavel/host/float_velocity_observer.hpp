@@ -31,6 +31,7 @@ struct FloatObserverOutput {
   double texture = 0;   // rms over kernels of F1 - F0, weaker frame of the interval
   double residual = 0;  // the kernels' disagreement, [0, 1]
   bool updated = false;  // false: low texture, V held
+  bool saturated = false;  // the step passed what the core's format holds (8 baselines a frame), as the core
 };
 
 class FloatVelocityObserver {
