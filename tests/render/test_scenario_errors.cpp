@@ -50,6 +50,21 @@ std::string replace(std::string s, const std::string& from, const std::string& t
 
 bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
 
+// What load_photo_gray says of `photo` ("(read)" if it reads it); the photo
+// and its folder are removed after.
+std::string photo_error(const std::string& photo, const char* dir) {
+  std::string e = "(read)";
+  try {
+    int w = 0, h = 0;
+    load_photo_gray(photo, w, h);
+  } catch (const std::runtime_error& x) {
+    e = x.what();
+  }
+  std::remove(photo.c_str());
+  rmdir(dir);
+  return e;
+}
+
 }  // namespace
 
 // yaml-cpp builds its scanner's static patterns on first use (a '-', say):
@@ -166,15 +181,7 @@ TEST(ScenarioErrors, APhotoPgmWithBytesAfterItsRasterIsRefused) {
   std::FILE* f = std::fopen(photo.c_str(), "wb");
   std::fputs("P5\n2 1\n255\n\x10\x80\x40\xf0", f);
   std::fclose(f);
-  std::string e = "(read)";
-  try {
-    int w = 0, h = 0;
-    load_photo_gray(photo, w, h);
-  } catch (const std::runtime_error& x) {
-    e = x.what();
-  }
-  std::remove(photo.c_str());
-  rmdir(dir);
+  const std::string e = photo_error(photo, dir);
   STRCMP_EQUAL((photo + ": PGM has 2 bytes after the raster of its header's 2x1 pixels: the header does not "
                 "describe the image").c_str(),
                e.c_str());
@@ -206,15 +213,7 @@ TEST(ScenarioErrors, APhotoPngWithMoreDataThanItsHeaderSaysIsRefused) {
   std::FILE* f = std::fopen(photo.c_str(), "wb");
   std::fwrite(bytes.data(), 1, bytes.size(), f);
   std::fclose(f);
-  std::string e = "(read)";
-  try {
-    int w = 0, h = 0;
-    load_photo_gray(photo, w, h);
-  } catch (const std::runtime_error& x) {
-    e = x.what();
-  }
-  std::remove(photo.c_str());
-  rmdir(dir);
+  const std::string e = photo_error(photo, dir);
   STRCMP_EQUAL((photo + ": corrupt PNG: IDAT: Too much image data").c_str(), e.c_str());
 }
 
