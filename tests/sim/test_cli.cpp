@@ -266,6 +266,29 @@ TEST(Cli, MissingRecordingExitsOne) {
   STRCMP_CONTAINS("lumavel-sim render: error: afile: is a file, not a folder to write the recording in", r.err.c_str());
 }
 
+// An output folder to be made under a symbolic link to nothing is refused
+// before any work, saying so (was: reproduce's 'filesystem error: cannot
+// create directories: File exists [lnk/sub/results]', render's
+// 'lnk/sub/mav0/cam0/data: cannot create folder: File exists', a file that is
+// not there). A read-only folder is said the same way ('no permission to
+// write in its folder ro'), which root, who runs these tests, is not refused.
+TEST(Cli, AnOutputFolderUnderALinkToNothingIsRefusedSayingSo) {
+  std::filesystem::create_symlink(dir.path() + "/gone/away", dir.path() + "/lnk");
+  Outcome r = sim("reproduce --only Lens --scenarios nowhere --out lnk/sub --doc p.md");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS(("lumavel-sim reproduce: error: lnk/sub (--out): cannot be created: its folder lnk is a symbolic link "
+                   "to " + dir.path() + "/gone/away, which does not exist").c_str(),
+                  r.err.c_str());
+  r = sim("reproduce --only Lens --scenarios nowhere --out out_r --doc p.md");  // the same, --out made
+  CHECK(r.err.find("(--out)") == std::string::npos);
+  r = sim("render '" LUMAVEL_SOURCE_DIR "/host_sim/scenarios/paper_sim_aligned.yaml' lnk/sub --duration 0.1 -q");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS(("lumavel-sim render: error: lnk/sub: cannot be created: its folder lnk is a symbolic link to " +
+                   dir.path() + "/gone/away, which does not exist").c_str(),
+                  r.err.c_str());
+  CHECK(!exists(dir.path() + "/gone"));
+}
+
 // 'render SCENARIO -' rendered into a new folder named '-' (exit 0): a
 // recording is a folder, it cannot go to standard output.
 // lumavel-bench-engines reads its options whole, as lumavel-sim does: sscanf

@@ -28,10 +28,11 @@ RecordingWriter::RecordingWriter(const std::string& rec_dir, const CameraSensor&
                                  const ImuSensor& imu, ImageFormat format)
     : root_(rec_dir + "/mav0"), cam_{cam0, cam1}, format_(format) {
   // A new folder is made; an existing one must be a folder (import-slider
-  // onto a file said 'OUT/mav0/cam0/data: cannot create folder: Not a directory').
-  if (path_present(rec_dir))
-    if (const std::string why = why_not_a_folder(rec_dir, "folder to write the recording in"); !why.empty())
-      throw recording_error_in(rec_dir, why);
+  // onto a file said 'OUT/mav0/cam0/data: cannot create folder: Not a directory'),
+  // and a new one must have a folder to be made in (render under a dangling
+  // link said 'lnk/sub/mav0/cam0/data: cannot create folder: File exists').
+  if (const std::string why = why_not_a_writable_folder(rec_dir, "folder to write the recording in"); !why.empty())
+    throw recording_error_in(rec_dir, why);
   for (int c = 0; c < 2; ++c) {
     const std::string dir = root_ + "/" + layout::kCamDir[c];
     make_dirs(dir + "/data");

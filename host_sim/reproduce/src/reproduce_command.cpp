@@ -10,6 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "lumavel/core/status.hpp"
 #include "lumavel/host/cli.hpp"
@@ -212,8 +213,14 @@ int run(const Options& o) {
   const std::vector<Study> studies = selected_studies(o);
   const fs::path doc(o.doc);
   const fs::path plot_dir = doc.parent_path() / doc.stem();
-  fs::create_directories(plot_dir);
-  fs::create_directories(o.out);
+  // Checked before (check_outputs); what the system still refuses (a folder
+  // of /sys to root) is said with the option and the reason.
+  for (const auto& [folder, option] : {std::pair<std::string, const char*>{plot_dir.string(), "the plots of --doc"},
+                                       std::pair<std::string, const char*>{o.out, "--out"}}) {
+    std::error_code ec;
+    fs::create_directories(folder, ec);
+    if (ec) throw std::runtime_error(shown_path(folder) + " (" + option + "): cannot create the folder: " + ec.message());
+  }
   const std::string machine = machine_description();
   std::fprintf(stderr, "reproduce: page %s, renders in %s, on %s\n", o.doc.c_str(), o.out.c_str(), machine.c_str());
 
@@ -323,7 +330,10 @@ void check_outputs(const Options& o) {
   const auto refuse = [](const std::string& path, const std::string& option, const std::string& why) {
     if (!why.empty()) throw std::runtime_error(shown_path(path) + " (" + option + "): " + why);
   };
-  if (path_present(o.out)) refuse(o.out, "--out", why_not_a_folder(o.out, "folder for the recordings and plots"));
+  // A folder that cannot be made or written in, as the page is checked (was:
+  // 'filesystem error: cannot create directories: File exists [lnk/sub/results]'
+  // under a dangling link, 'Permission denied [ro/results]' in a read-only one).
+  refuse(o.out, "--out", why_not_a_writable_folder(o.out, "folder for the recordings and plots"));
   const fs::path doc(o.doc);
   // A new page goes in a folder that is there, as run -o's CSV does (was: its
   // folders made, a typo in them unsaid), or in --out, which the run makes.
@@ -334,7 +344,7 @@ void check_outputs(const Options& o) {
   if (doc.stem() == doc.filename())
     refuse(o.doc, "--doc", "has no extension: its plots go to the folder named as it is without one (e.g. x.md, plots in x/)");
   const std::string plots = (doc.parent_path() / doc.stem()).string();
-  if (path_present(plots)) refuse(plots, "the plots of --doc", why_not_a_folder(plots, "folder for the page's plots"));
+  refuse(plots, "the plots of --doc", why_not_a_writable_folder(plots, "folder for the page's plots"));
 }
 
 }  // namespace

@@ -242,6 +242,25 @@ std::string why_not_writable(const std::string& path, const std::string& what) {
   return {};
 }
 
+std::string why_not_a_writable_folder(const std::string& path, const std::string& what) {
+  if (path.empty()) return "an empty path, not a " + what;
+  if (path_present(path)) {
+    if (const std::string why = why_not_a_folder(path, what); !why.empty()) return why;
+    return ::access(path.c_str(), W_OK | X_OK) == 0 ? std::string() : "no permission to write in it";
+  }
+  // The folders missing on the way are made under the nearest part that is
+  // there (was: 'filesystem error: cannot create directories: File exists
+  // [lnk/sub/results]' for a dangling link lnk, or 'Permission denied').
+  std::filesystem::path at = std::filesystem::path(path).parent_path();
+  while (!at.empty() && !path_present(at.string()) && at != at.parent_path()) at = at.parent_path();
+  const std::string folder = at.empty() ? "." : at.string();
+  if (const std::string why = why_not_a_folder(folder); !why.empty())
+    return "cannot be created: its folder " + shown_path(folder) + " " + why;
+  if (::access(folder.c_str(), W_OK | X_OK) != 0)
+    return "cannot be created: no permission to write in its folder " + shown_path(folder);
+  return {};
+}
+
 std::FILE* open_for_writing(const std::string& path, const char* mode, std::string& why) {
   struct stat st {};
   if (::stat(path.c_str(), &st) != 0 || !S_ISFIFO(st.st_mode)) {

@@ -46,6 +46,14 @@ std::string why_not_a_folder(const std::string& path, const std::string& what = 
 // which the callers that can write there take before asking) "'-' stands for
 // standard output, where no plot file is written: ...".
 std::string why_not_writable(const std::string& path, const std::string& what = "file");
+// "" when an output folder `path` can be written in: one that is there must
+// be a folder that may be written in ("no permission to write in it"); one
+// that is not is made with the folders missing on its way, under the nearest
+// part of its path that is there, which must be such a folder ("cannot be
+// created: its folder lnk is a symbolic link to /gone, which does not exist",
+// "... no permission to write in its folder ro"). `what` names the folder in
+// "is a file, not a `what`".
+std::string why_not_a_writable_folder(const std::string& path, const std::string& what = "folder");
 // Where a file written at `path` lands, absolute and normal (weakly_canonical),
 // for telling whether two outputs, or an output and an input, are one file:
 // `path` itself, or for a symbolic link to nothing, which a write follows and
