@@ -36,6 +36,7 @@
 #endif
 
 #include "lumavel/host/image_io.hpp"
+#include "lumavel/protocol/reports.hpp"
 #include "recording_fixture.hpp"
 
 namespace fs = std::filesystem;
@@ -627,6 +628,30 @@ std::vector<Case> read_cases(const std::string& report) {
          "record 6 at byte 223 (records missing: a damaged report file");
   replay("two records swapped", [](const std::string& b) { return b.substr(0, 8 + 5 * 43) + b.substr(8 + 6 * 43, 43) + b.substr(8 + 5 * 43, 43) + b.substr(8 + 7 * 43); },
          "record 7 at byte 266 (records out of order: a damaged report file)");
+  // A record whose CRC holds (re-encoded) but that goes back against the one
+  // before: its frame's time, its frame number (was: written as it was, exit 0).
+  const auto rewritten = [](std::string b, size_t record,
+                            const std::function<void(lumavel::protocol::Measurement&, const lumavel::protocol::Measurement&)>& edit) {
+    const auto at = [&b](size_t r) { return reinterpret_cast<uint8_t*>(&b[8 + (r - 1) * 43 + 1]); };
+    lumavel::protocol::Measurement before{}, m{};
+    lumavel::protocol::decode_measurement(at(record - 1), 42, before);
+    lumavel::protocol::decode_measurement(at(record), 42, m);
+    edit(m, before);
+    lumavel::protocol::encode_measurement(m, at(record), 42);
+    return b;
+  };
+  {
+    std::string intact = read_text(report);
+    lumavel::protocol::Measurement fifth{};
+    lumavel::protocol::decode_measurement(reinterpret_cast<const uint8_t*>(&intact[8 + 4 * 43 + 1]), 42, fifth);
+    const std::string t5 = std::to_string(fifth.t_ns);
+    replay("a record's t_ns not after the one before", [=](const std::string& b) {
+      return rewritten(b, 6, [](auto& m, const auto& before) { m.t_ns = before.t_ns; });
+    }, "record 6 at byte 223: t_ns " + t5 + " is not after the previous report's (" + t5 + ")");
+    replay("a record's frame_index going back", [=](const std::string& b) {
+      return rewritten(b, 6, [](auto& m, const auto&) { m.frame_index = 1; });
+    }, "record 6 at byte 223: frame_index 1 is not after the previous report's (4)");
+  }
   // A mailbox reply (a feature chunk, id 0x84) is never written to a report
   // file: there it is damage (was: skipped unsaid, exit 0; as the last record,
   // that measurement missing from the CSV).

@@ -57,6 +57,25 @@ bool Sink::take(const uint8_t* buf, size_t len, const std::string& where) {
                  *r.field ? ": " : "", r.field);
     return false;
   }
+  // A report file holds one run's reports in the order it sent them: each a
+  // later frame, its dropped frames counted up (was: a record whose CRC holds
+  // but whose t_ns or frame_index goes back written as it was, exit 0). Its
+  // seq says it is the next one, or that is said below instead.
+  if (from_file_ && have_seq_ && m.seq == next_seq_) {
+    const char* field = nullptr;
+    uint64_t was = 0, is = 0;
+    if (m.t_ns <= last_.t_ns) field = "t_ns", was = last_.t_ns, is = m.t_ns;
+    else if (m.frame_index <= last_.frame_index) field = "frame_index", was = last_.frame_index, is = m.frame_index;
+    else if (m.overruns < last_.overruns) field = "overruns", was = last_.overruns, is = m.overruns;
+    if (field != nullptr) {
+      ++malformed_;
+      std::fprintf(stderr,
+                   "malformed report %s: %s %llu is %s the previous report's (%llu): a run's reports go forward, "
+                   "one frame after another (its dropped frames counted up): a damaged record\n",
+                   where.c_str(), field, static_cast<unsigned long long>(is),
+                   field[0] == 'o' ? "below" : "not after", static_cast<unsigned long long>(was));
+    }
+  }
   if (have_seq_ && m.seq != next_seq_) {
     const unsigned gap = static_cast<uint16_t>(m.seq - next_seq_);
     if (gap == 0xFFFFu) {  // the previous report again: not new data
@@ -81,6 +100,7 @@ bool Sink::take(const uint8_t* buf, size_t len, const std::string& where) {
   }
   have_seq_ = true;
   next_seq_ = static_cast<uint16_t>(m.seq + 1);
+  last_ = m;
   ++count_;
   if (csv_ != nullptr) std::fprintf(csv_, "%s\n", csv_row(m).c_str());
   if (live_) draw(m);

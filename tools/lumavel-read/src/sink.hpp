@@ -36,6 +36,7 @@ class Sink {
   bool live_, from_file_;
   bool have_seq_ = false;
   uint16_t next_seq_ = 0;
+  protocol::Measurement last_{};  // the last measurement taken (a report file's order is checked against it)
   uint64_t count_ = 0, malformed_ = 0, lost_ = 0, duplicated_ = 0;
   std::deque<std::chrono::steady_clock::time_point> window_;
   std::chrono::steady_clock::time_point last_draw_{};
