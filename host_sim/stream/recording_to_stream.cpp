@@ -14,6 +14,7 @@
 #include "lumavel/host/path_check.hpp"
 #include "lumavel/host/recording.hpp"
 #include "lumavel/host/recording_error.hpp"
+#include "lumavel/host/rig.hpp"
 #include "lumavel/stream/format.hpp"
 #include "lumavel/stream/stream_writer.hpp"
 #include "lumavel/stream/tool_args.hpp"
@@ -41,6 +42,8 @@ int main(int argc, char** argv) {
                    argv[0], lumavel::host::shown_path(argv[2]).c_str(), lumavel::host::shown_path(rec.root).c_str());
       return 2;
     }
+    // Its hint names this tool's arguments (was: '--width/--height', which it has not).
+    lumavel::host::check_bins_down(rec, {w, h}, "<width> <height>");
     lumavel::host::FileStereoCamera camera(rec, w, h);
     lumavel::host::FileGyro gyro(rec);
     // Written aside and moved into place once whole (OutputFile): a frame

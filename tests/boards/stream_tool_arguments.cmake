@@ -75,6 +75,12 @@ file(READ ${WORK}/rec/mav0/cam0/data.csv after)
 if(NOT before STREQUAL after)
   message(FATAL_ERROR "the converter wrote over the recording's cam0/data.csv")
 endif()
+# A size the sensor cannot be binned up to: the hint names the converter's
+# own arguments (was: 'choose a smaller --width/--height', options it has not).
+execute_process(COMMAND ${CONVERT} rec up.lvs 41 30 WORKING_DIRECTORY ${WORK} RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT rc EQUAL 1 OR NOT err MATCHES "sensor.yaml:[0-9]+: cannot bin the 40x30 sensor up to the working resolution 41x30 \\(choose a smaller <width> <height>\\)")
+  message(FATAL_ERROR "the converter at 41x30 from a 40x30 sensor: expected exit 1 and its arguments named, got exit ${rc}: ${err}")
+endif()
 # The app host's results onto the stream it reads, by name or through a link.
 execute_process(COMMAND ${CONVERT} rec in.lvs 40 30 WORKING_DIRECTORY ${WORK} RESULT_VARIABLE rc ERROR_QUIET)
 file(READ ${WORK}/in.lvs stream HEX)

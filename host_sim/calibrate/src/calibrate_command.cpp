@@ -77,7 +77,9 @@ int calibrate(CalibrateArgs& a) {
   // --width wider than the sensor is refused by run's rule, naming the
   // sensor.yaml (was: registered at the sensor's width with a warning, where
   // run refuses); only the default is cut to a narrower sensor.
-  if (a.width > 0) check_bins_down(rec, {a.width, rec.cam[0].height});
+  // Its hint names --width alone: calibrate has no --height (was: 'choose a
+  // smaller --width/--height').
+  if (a.width > 0) check_bins_down(rec, {a.width, rec.cam[0].height}, "--width");
   a.opt.width = a.width > 0 ? a.width : std::min(kRegistrationColumns, rec.cam[0].width);
   if (!a.write_path.empty() && overwrites_recording(rec, a.write_path))
     throw cli::UsageError(shown_path(a.write_path) + " (--write): that is part of the recording being read (" +

@@ -261,14 +261,14 @@ WorkingSize default_working_size(const Recording& rec) {
   return {default_columns(rec.cam[0].width), default_rows(rec.cam[0].height)};
 }
 
-void check_bins_down(const Recording& rec, WorkingSize size) {
+void check_bins_down(const Recording& rec, WorkingSize size, const std::string& asked_by) {
   for (int c = 0; c < 2; ++c) {
     const CameraSensor& cam = rec.cam[c];
     if (size.width > cam.width || size.height > cam.height)
       throw error_at_key(rec.root + "/" + layout::kCamDir[c] + "/sensor.yaml", cam.line.resolution,
                          "cannot bin the " + std::to_string(cam.width) + "x" + std::to_string(cam.height) +
                              " sensor up to the working resolution " + std::to_string(size.width) + "x" +
-                             std::to_string(size.height) + " (choose a smaller --width/--height)");
+                             std::to_string(size.height) + " (choose a smaller " + asked_by + ")");
   }
 }
 

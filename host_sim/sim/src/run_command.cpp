@@ -314,7 +314,7 @@ int run(const RunArgs& a) {
   const WorkingSize fallback = default_working_size(rec);
   options.size = {a.width > 0 ? a.width : fallback.width, a.height > 0 ? a.height : fallback.height};
   // As given: derive_settings takes a line scan's height to 1 (was: --height 2 run at height 1, silently).
-  check_bins_down(rec, options.size);
+  check_bins_down(rec, options.size, "--width/--height");
   options.ignore_distortion = a.ignore_distortion;
   options.lens_by_columns = a.lens_columns;
   options.gyro_offset_learning = !a.no_gyro_offset_learning;

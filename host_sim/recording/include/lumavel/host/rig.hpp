@@ -81,7 +81,10 @@ double max_gap_s(double frame_period_s);
 // never up. derive_settings checks it after taking a line-scan sensor's
 // height to 1; a size the user asked for is checked as given (run --height 2
 // on a line scan was worked at height 1, silently).
-void check_bins_down(const Recording& rec, WorkingSize size);
+// `asked_by` is what the user chose the size with, named in the refusal's
+// hint ("--width/--height" for run, "--width" for calibrate, "<width>
+// <height>" for lumavel_recording_to_stream).
+void check_bins_down(const Recording& rec, WorkingSize size, const std::string& asked_by = "working size");
 
 // Full settings; throws RecordingError for a working size the sensors cannot
 // be binned to, or for cameras that do not share one resolution.
