@@ -235,6 +235,14 @@ TEST(ImageIo, BadPgmFilesAreRefused) {
   STRCMP_CONTAINS("PGM has 1 bytes after the raster of its header's 2x1 pixels",
                   error_of([&] { read_gray_image(path("crlf.pgm")); }).c_str());
   STRCMP_CONTAINS("its maxval ends in CR LF", error_of([&] { read_gray_image(path("crlf.pgm")); }).c_str());
+  // A comment after maxval is read as pixels (by netpbm too): said as such
+  // (was: only 'the header does not describe the image').
+  fixture::write_text(path("late.pgm"), "P5\n2 1\n255 # by hand\nab");
+  STRCMP_CONTAINS("PGM has 10 bytes after the raster of its header's 2x1 pixels: the header does not describe the image "
+                  "(the raster starts with '# by hand': a '#' comment after maxval and its whitespace byte, where the "
+                  "format takes none: the raster starts right after that byte, so its 10 bytes are read as pixels; put "
+                  "comments before maxval)",
+                  error_of([&] { read_gray_image(path("late.pgm")); }).c_str());
 }
 
 TEST(ImageIo, OtherFilesAreRefused) {

@@ -4,6 +4,7 @@
 
 #include <png.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <csetjmp>
 #include <cstdio>
@@ -217,10 +218,21 @@ std::string decode_pgm(const uint8_t* d, size_t n, GrayImage& img, Expect expect
   if (n - pos > need) {
     // A CR LF after maxval (a header written in text mode) leaves exactly one.
     const bool crlf = n - pos - need == 1 && d[pos - 1] == '\r' && d[pos] == '\n';
+    // A '#' comment after maxval's whitespace byte is read as pixels (by
+    // netpbm too): its length is the excess (was: only 'the header does not
+    // describe the image', which it does).
+    const bool comment = d[pos] == '#';
+    size_t comment_end = pos;
+    while (comment && comment_end < n && d[comment_end] != '\n') ++comment_end;
     return "PGM has " + std::to_string(n - pos - need) + " bytes after the raster of its header's " + std::to_string(w) +
            "x" + std::to_string(h) + " pixels: the header does not describe the image" +
            (crlf ? " (its maxval ends in CR LF, two bytes where the format takes one: a header written in text mode?)"
-                 : "");
+            : comment
+                ? " (the raster starts with '" + shown_text(std::string(d + pos, d + std::min(comment_end, pos + 40))) +
+                      "': a '#' comment after maxval and its whitespace byte, where the format takes none: the raster "
+                      "starts right after that byte, so its " + std::to_string(std::min(comment_end + 1, n) - pos) +
+                      " bytes are read as pixels; put comments before maxval)"
+                : "");
   }
   img.width = static_cast<int>(w);
   img.height = static_cast<int>(h);
