@@ -41,6 +41,12 @@ grep -q "duplicated report in dup.hidrep record 3 at byte 94: seq 1 again, skipp
 grep -q "lost" dup.err && fail "a duplicate reported as a loss: $(cat dup.err)"
 cmp -s out.csv dup.csv || fail "the duplicate changed the CSV"
 
+# -o named as long as a name may be (255 bytes): its temporary name, with
+# '.tmpPID' after it, was too long, and the CSV refused ('File name too long').
+long=$(printf 'v%.0s' $(seq 251)).csv
+"$READ" replay run.hidrep -o "$long" 2> long.err || fail "replay -o a 255-byte name: exit $?: $(cat long.err)"
+cmp -s out.csv "$long" || fail "replay -o a 255-byte name: the CSV differs"
+rm -f "$long"
 "$READ" replay missing.hidrep > /dev/null 2> missing.err && fail "missing file accepted"
 grep -q "missing.hidrep" missing.err || fail "missing file not named"
 "$READ" replay adir > /dev/null 2> dir.err && fail "a folder accepted as a report file"

@@ -289,6 +289,24 @@ TEST(Cli, AnOutputFolderUnderALinkToNothingIsRefusedSayingSo) {
   CHECK(!exists(dir.path() + "/gone"));
 }
 
+// An output named as long as a name may be (255 bytes) is written: its
+// temporary name, the name and '.tmpPID', was longer, and the output was
+// refused as 'VVV...csv (255 characters): cannot create the CSV: File name
+// too long' ('--hid file:' named the temporary file, 'VVV....hid.tmp29720').
+TEST(Cli, AnOutputNamedAsLongAsANameMayBeIsWritten) {
+  rec();
+  const std::string csv = std::string(251, 'v') + ".csv", hid = std::string(251, 'h') + ".hid",
+                    svg = std::string(251, 'v') + ".svg";
+  const Outcome r = sim("run rec -q -o " + csv + " --plot " + svg + " --hid file:" + hid);
+  LONGS_EQUAL_TEXT(0, r.code, r.err.c_str());
+  CHECK(exists(dir.path() + "/" + csv) && exists(dir.path() + "/" + svg) && exists(dir.path() + "/" + hid));
+  CHECK(fixture::read_text(dir.path() + "/" + svg).find("<svg") != std::string::npos);
+  CHECK(fixture::read_text(dir.path() + "/" + csv).rfind("timestamp_ns,", 0) == 0);
+  size_t files = 0;
+  for (const auto& e : std::filesystem::directory_iterator(dir.path())) files += e.path().filename().string().size() > 250;
+  LONGS_EQUAL(3, files);  // no temporary file left beside them
+}
+
 // 'render SCENARIO -' rendered into a new folder named '-' (exit 0): a
 // recording is a folder, it cannot go to standard output.
 // lumavel-bench-engines reads its options whole, as lumavel-sim does: sscanf

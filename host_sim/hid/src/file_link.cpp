@@ -1,6 +1,6 @@
 // file:PATH: input reports appended to a report-stream file.
 //
-// Complete or absent, like `run -o`: the reports go to PATH.tmpPID and the
+// Complete or absent, like `run -o`: the reports go to PATH.tmpPID-N and the
 // file is moved to PATH only when the link is closed normally; a run that
 // fails mid-way (the link destroyed while an exception unwinds) removes it,
 // so `lumavel-read replay` never reads half a run as if it were whole.
@@ -18,6 +18,7 @@
 
 #include "links.hpp"
 #include "lumavel/host/hid_link.hpp"
+#include "lumavel/host/path_check.hpp"
 #include "lumavel/host/report_file.hpp"
 
 namespace lumavel::host {
@@ -33,7 +34,7 @@ class FileLink : public hal::ReportLink {
  public:
   explicit FileLink(const std::string& path)
       : path_(path),
-        temp_(is_special(path) ? std::string() : path + ".tmp" + std::to_string(::getpid())),
+        temp_(is_special(path) ? std::string() : temporary_name_for(path)),
         out_(std::make_unique<ReportFileWriter>(temp_.empty() ? path_ : temp_)),
         exceptions_(std::uncaught_exceptions()) {}
   ~FileLink() override {

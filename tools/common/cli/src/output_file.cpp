@@ -44,7 +44,7 @@ OutputFile::OutputFile(const std::string& path, const std::string& what, Placeme
     // a symlink, which a rename would replace) is written in place.
     struct stat st {};
     const bool special = ::lstat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode);
-    if (!special && placement == Placement::kReplaced) temp_ = path + ".tmp" + std::to_string(::getpid());
+    if (!special && placement == Placement::kReplaced) temp_ = temporary_name_for(path);
     raw_ = open_for_writing(temp_.empty() ? path : temp_, "w", why);
   }
   if (raw_) {

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <chrono>
 #include <climits>
@@ -259,6 +260,16 @@ std::string why_not_a_writable_folder(const std::string& path, const std::string
   if (::access(folder.c_str(), W_OK | X_OK) != 0)
     return "cannot be created: no permission to write in its folder " + shown_path(folder);
   return {};
+}
+
+std::string temporary_name_for(const std::string& path) {
+  static std::atomic<unsigned> given{0};
+  const std::string suffix = ".tmp" + std::to_string(::getpid()) + "-" + std::to_string(given++);
+  const size_t slash = path.find_last_of('/');
+  const size_t at = slash == std::string::npos ? 0 : slash + 1;
+  std::string name = path.substr(at);
+  if (name.size() + suffix.size() > NAME_MAX) name.resize(NAME_MAX - suffix.size());
+  return path.substr(0, at) + name + suffix;
 }
 
 std::FILE* open_for_writing(const std::string& path, const char* mode, std::string& why) {

@@ -54,6 +54,12 @@ std::string why_not_writable(const std::string& path, const std::string& what = 
 // "... no permission to write in its folder ro"). `what` names the folder in
 // "is a file, not a `what`".
 std::string why_not_a_writable_folder(const std::string& path, const std::string& what = "folder");
+// The name an output is written under before it is renamed to `path`: beside
+// it (one file system), "PATH.tmpPID-N", N counting the names given in this
+// process; the name before the suffix cut where the whole would be longer
+// than a name may be (a legal 255-character output name was refused as 'File
+// name too long', said of its temporary name).
+std::string temporary_name_for(const std::string& path);
 // Where a file written at `path` lands, absolute and normal (weakly_canonical),
 // for telling whether two outputs, or an output and an input, are one file:
 // `path` itself, or for a symbolic link to nothing, which a write follows and
