@@ -192,4 +192,13 @@ TEST(HostLinks, FileConfigStoreRoundTrips) {
   MEMCMP_EQUAL(blob, buf, 5);
   CHECK_EQUAL(0u, s.load(buf, 4));  // larger than the caller's buffer: not ours
   std::remove(path.c_str());
+  // A store named as long as a name may be (255 bytes) is saved: its
+  // temporary name, the name and '.tmp', was too long, and every save failed.
+  std::string name = "lumavel_hid_test_" + std::to_string(::getpid()) + "_";
+  name.resize(251, 's');
+  const std::string longest = "/tmp/" + name + ".bin";
+  host::FileConfigStore l(longest);
+  CHECK_TRUE(l.save(blob, sizeof blob));
+  CHECK_EQUAL(5u, l.load(buf, sizeof buf));
+  std::remove(longest.c_str());
 }

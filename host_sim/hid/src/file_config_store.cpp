@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "lumavel/host/path_check.hpp"
+
 namespace lumavel::host {
 
 size_t FileConfigStore::load(uint8_t* buf, size_t cap) {
@@ -14,7 +16,9 @@ size_t FileConfigStore::load(uint8_t* buf, size_t cap) {
 }
 
 bool FileConfigStore::save(const uint8_t* buf, size_t len) {
-  const std::string tmp = path_ + ".tmp";
+  // The one temporary-name rule of the outputs (was: PATH.tmp, too long a
+  // name for a 252- to 255-byte store name, whose every save then failed).
+  const std::string tmp = temporary_name_for(path_);
   std::FILE* f = std::fopen(tmp.c_str(), "wb");
   if (f == nullptr) return false;
   const bool ok = std::fwrite(buf, 1, len, f) == len;
