@@ -61,10 +61,4 @@ void stereo_measurement(const ColumnProfile& p0, const ColumnProfile& p1, const 
                         const PhotometricBalance* balance, StereoMeasurement& out,
                         kdot::Normaliser* norm1 = nullptr);
 
-// Whether each camera's own kernels see texture (F away from a uniform
-// image's, rms over the kernels) beyond `floor`: what a time of flight needs,
-// whatever the depth (the stereo difference, the observer's texture, shrinks
-// with it). Pixel noise alone stays far below (docs/design.md).
-bool views_textured(const StereoMeasurement& m, const KernelBank& bank, ValueQ28 floor);
-
 }  // namespace lumavel
