@@ -558,6 +558,23 @@ TEST(TimeOfFlight, FasterThanAFrame) {
   }
 }
 
+// The same pass, timed: on the newest segment the chord between the lead's
+// last two frames models a path that moves 1.7 h a frame poorly (median
+// |tau / (h/V) - 1| 0.079); the stereo cubic, through the lead's last three
+// frames and with the older one's stereo difference as its change over the
+// trail's lag, times it within 0.008 (docs/design.md, "Search").
+TEST(TimeOfFlight, UnderAFrameTheStereoCubicTimesTheMatch) {
+  test::SyntheticRig rig;
+  rig.wall = 3.0;
+  for (auto kind : kEngines) {
+    const auto run = drive(kind, rig, 8, [](double) { return 8.0; });
+    const Summary s = summarise(run, rig.baseline, 5.0);
+    print("8 m/s, wall at 3 m, after 5 s", kind, s);
+    CHECK(s.tof_share > 0.5);
+    CHECK(s.tof_err < 0.02);
+  }
+}
+
 // Turning at 0.4 rad/s past a near wall: the rotation between the sightings is
 // removed with the gyro, or the match is refused; never a wrong one.
 TEST(TimeOfFlight, TurningIsDeRotatedOrRefused) {

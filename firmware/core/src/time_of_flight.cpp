@@ -28,6 +28,23 @@ constexpr int64_t kOneQ16 = int64_t{1} << 16;
 constexpr int64_t kChordMaxShiftQ16 = fx::q_of(kTofChordMaxShift, 16);
 
 int64_t abs64(int64_t v) { return v < 0 ? -v : v; }
+constexpr int64_t kCubicTakeQ16 = fx::q_of(kTofCubicTake, 16);
+constexpr int64_t kCubicBlendQ16 = fx::q_of(kTofCubicBlend, 16);
+constexpr int64_t kCubicMaxMoveQ16 = fx::q_of(kTofCubicMaxMove, 16);
+constexpr int64_t kCubicEndsQ16 = fx::q_of(kTofCubicEnds, 16);
+constexpr int64_t kCubicSigmaQ16 = fx::q_of(kTofCubicSigma, 16);
+static_assert(kCubicBlendQ16 > kCubicTakeQ16, "the blend needs a width");
+// The cubic's search: a grid over the segment that does not move with the
+// chord's point (so that the twins' last bits of it cannot move the grid),
+// then parabolas through three points about the best, each kTofCubicShrink
+// times narrower: continuous in the costs, where halving an interval would
+// turn the twins' last bits into a step of it (tau under a frame moves by
+// ds / (1 - s) of itself).
+constexpr int kCubicGrid = kTofCubicGrid;
+constexpr int kCubicParabolas = kTofCubicParabolas;
+constexpr int64_t kCubicShrink = kTofCubicShrink;
+// The cubic's inputs held to +-4 (Q24): its coefficients then stay below 2^34 (Q24).
+constexpr int64_t kCubicInMaxQ24 = int64_t{4} << 24;
 constexpr int64_t kDiffMaxQ24 = int64_t{1} << 28;  // two ValueQ28 differ by < 2^32, 2^28 in Q24
 static_assert(kMaxKernels <= 64, "the match's sums of squares (< 2^56 each) must stay below 2^62");
 
@@ -203,7 +220,6 @@ bool TimeOfFlight::search(const TofTrackInput& in, int trail, int64_t want_ns, i
         fr = bent;
       }
     }
-    out.y_then = a.y + static_cast<TravelQ16Ns>((fx::travel_between(b.y, a.y) * fr) >> 16);
     // Timing uncertainty: the residual over the segment's step, in frames, times the step.
     // (res / dd in Q32 up to half a step squared; beyond, where the window's gate
     // took the match, in Q16: at most kTofMaxPathResidualLong^2.)
@@ -212,8 +228,108 @@ bool TimeOfFlight::search(const TofTrackInput& in, int trail, int64_t want_ns, i
     const uint32_t sig_q16 = wide ? fx::isqrt32(static_cast<uint32_t>(fx::div_q(out.res, best_dd, 16))) << 8
                                   : fx::isqrt32(static_cast<uint32_t>(ratio_q32));
     out.sig_ns = (best_span * int64_t{sig_q16}) >> 16;
+    // Under a frame: the stereo cubic's point where it meets the trail's F
+    // closely against the step, blended with the chord's as its residual
+    // grows, and its sigma alike (continuous in the residual: no switch
+    // that the twins' last bits could throw).
+    int64_t s = 0, cres = 0;
+    if (best_inside && best_back == 0 && stereo_cubic(trail, in.count, fr, &s, &cres)) {
+      const int64_t qr = cres >= best_dd ? kOneQ16 : fx::isqrt32(static_cast<uint32_t>(fx::div_q(cres, best_dd, 32)));
+      if (qr < kCubicBlendQ16) {
+        const int64_t w = qr <= kCubicTakeQ16 ? kOneQ16 : fx::div_q(kCubicBlendQ16 - qr, kCubicBlendQ16 - kCubicTakeQ16, 16);
+        const int64_t moved = fr + ((w * (s - fr)) >> 16);
+        const int64_t tau = static_cast<int64_t>(now.t_ns) - (static_cast<int64_t>(a.t_ns) + ((best_span * moved) >> 16));
+        if (tau > 0) {
+          out.stau_ns = trail == 0 ? tau : -tau;
+          fr = moved;
+          const int64_t cubic_sig = (((kCubicSigmaQ16 * qr) >> 16) * best_span) >> 16;
+          if (cubic_sig < out.sig_ns) out.sig_ns += (w * (cubic_sig - out.sig_ns)) >> 16;
+        }
+      }
+    }
+    out.y_then = a.y + static_cast<TravelQ16Ns>((fx::travel_between(b.y, a.y) * fr) >> 16);
   }
   return found;
+}
+
+bool TimeOfFlight::stereo_cubic(int trail, uint8_t count, int64_t fr, int64_t* s_out, int64_t* res_out) const {
+  // G(s) = A + g s + k s^2 + m s^3 over the newest segment (s its time, as
+  // a fraction: a = 0, now = 1, the frame before = -1), each frame turned to
+  // now's heading: G(1) = B, G(-1) = P, and G(0) - G(-u) = S_a, the stereo
+  // difference at a (the trail, u = 1 - s behind, stood where the lead had
+  // been). Then k = (d + e) / 2, m = -(S_a + k u^2 - (d - e) u / 2) / (u (1 - u^2)),
+  // g = (d - e) / 2 - m with d = B - A, e = P - A; the point is where G(1 - u)
+  // meets the trail's F now.
+  if (count_ < 3) return false;
+  const int lead = 1 - trail;
+  const TofFrame& now = at(0);
+  const TofFrame& a = at(1);
+  const TofFrame& p = at(2);
+  const int64_t span = static_cast<int64_t>(now.t_ns - a.t_ns), before = static_cast<int64_t>(a.t_ns - p.t_ns);
+  if (span <= 0 || abs64(before - span) * 16 > span) return false;  // a frame dropped before the segment
+  int64_t d[kMaxKernels], e[kMaxKernels], sa[kMaxKernels], w[kMaxKernels];  // Q24
+  const auto dth_a = static_cast<int32_t>(now.heading - a.heading);
+  const auto dth_p = static_cast<int32_t>(now.heading - p.heading);
+  for (uint8_t k = 0; k < count; ++k) {
+    const int32_t rb = static_cast<int32_t>(
+        (int64_t{now.r[trail][k]} + (int64_t{a.r[lead][k]} + now.r[lead][k]) / 2) / 2);  // Q20, as search's
+    const int64_t la = int64_t{a.f[lead][k]} + fx::shr_round(int64_t{dth_a} * rb, fx::kSlopeFrac);  // A, Q28
+    const int64_t lp = int64_t{p.f[lead][k]} + fx::shr_round(int64_t{dth_p} * rb, fx::kSlopeFrac);  // P, Q28
+    auto q24 = [](int64_t v) { return fx::clamp64(fx::shr_round(v, 4), -kCubicInMaxQ24, kCubicInMaxQ24); };
+    d[k] = q24(int64_t{now.f[lead][k]} - la);
+    e[k] = q24(lp - la);
+    sa[k] = q24(int64_t{a.f[lead][k]} - a.f[trail][k]);
+    w[k] = q24(int64_t{now.f[trail][k]} - la);
+  }
+  // The squared residual at s (Q16), Q48.
+  auto cost = [&](int64_t s16) {
+    const int64_t s = s16 << 12, u = (kOneQ16 - s16) << 12;  // Q28
+    const int64_t s2 = (s * s) >> 28, s3 = (s2 * s) >> 28, u2 = (u * u) >> 28;
+    const int64_t den = u - ((u2 * u) >> 28);  // u (1 - u^2) >= 0.019 (Q28: > 2^22)
+    const int64_t inv = fx::div_trunc(int64_t{1} << 56, den);  // 1 / den, Q28 (< 2^34): one division per point
+    int64_t sum = 0;
+    for (uint8_t k = 0; k < count; ++k) {
+      const int64_t kk = (d[k] + e[k]) / 2, h = (d[k] - e[k]) / 2;                       // Q24, < 2^27
+      const int64_t num = sa[k] + ((kk * u2) >> 28) - ((h * u) >> 28);                   // Q24, < 2^28
+      const int64_t m = -((num * inv) >> 28);                                            // Q24, < 2^34
+      const int64_t g = h - m;
+      const int64_t r = fx::clamp64(((g * s) >> 28) + ((kk * s2) >> 28) + ((m * s3) >> 28) - w[k], -(int64_t{1} << 30),
+                                    int64_t{1} << 30);
+      sum += r * r;  // < 2^60, kMaxKernels of them (a sum held below 2^62 below)
+      if (sum > (int64_t{1} << 61)) sum = int64_t{1} << 61;
+    }
+    return sum;
+  };
+  const int64_t lo = kCubicEndsQ16, hi = kOneQ16 - kCubicEndsQ16;
+  int64_t best = lo, best_cost = cost(lo);
+  for (int i = 1; i <= kCubicGrid; ++i) {
+    const int64_t s = lo + (hi - lo) * i / kCubicGrid;
+    const int64_t c = cost(s);
+    if (c < best_cost) {
+      best = s;
+      best_cost = c;
+    }
+  }
+  // Parabolas about it: the vertex through (x - h, x, x + h), held to that
+  // bracket, where the three are convex; else x stands.
+  int64_t x = best, cx = best_cost, h = (hi - lo) / kCubicGrid;
+  for (int i = 0; i < kCubicParabolas && h > 0; ++i) {
+    const int64_t xm = std::max(lo, x - h), xp = std::min(hi, x + h);
+    const int64_t cm = cost(xm), cp = cost(xp);
+    const int64_t curv = (cm >> 1) + (cp >> 1) - cx;  // (c- - 2 c0 + c+) / 2, Q48
+    if (xp - x == h && x - xm == h && curv > 0) {
+      const int64_t off = fx::div_q((cm >> 2) - (cp >> 2), curv, 16);  // h units, Q16: (c- - c+) / (2 (c- - 2 c0 + c+))
+      x = fx::clamp64(x + ((h * fx::clamp64(off, -kOneQ16, kOneQ16)) >> 16), xm, xp);
+      cx = cost(x);
+    } else if (cm < cx || cp < cx) {
+      x = cm < cp ? xm : xp;
+      cx = cm < cp ? cm : cp;
+    }
+    h /= kCubicShrink;
+  }
+  *s_out = x;
+  *res_out = cx;
+  return abs64(x - fr) <= kCubicMaxMoveQ16;
 }
 
 int64_t TimeOfFlight::chord_time(int lead, uint16_t back, uint8_t count, const int32_t* d, int64_t dd, int64_t fr) const {

@@ -113,9 +113,84 @@ bool FloatTimeOfFlight::search(int trail, double max_rotation, double want_ns, d
         fr = bent;
       }
     }
+    // Under a frame: the stereo cubic's point, blended with the chord's, and its sigma alike (the core's comment).
+    double s = 0, cres = 0;
+    if (best_inside && best_back == 0 && stereo_cubic(trail, fr, &s, &cres)) {
+      const double qr = std::sqrt(std::min(cres / best_dd, 1.0));
+      if (qr < kTofCubicBlend) {
+        const double w = qr <= kTofCubicTake ? 1.0 : (kTofCubicBlend - qr) / (kTofCubicBlend - kTofCubicTake);
+        const double moved = fr + w * (s - fr);
+        const double tau = static_cast<double>(now.t_ns) - (static_cast<double>(a.t_ns) + best_span * moved);
+        if (tau > 0) {
+          out.stau_ns = trail == 0 ? tau : -tau;
+          fr = moved;
+          const double cubic_sig = kTofCubicSigma * qr * best_span;
+          if (cubic_sig < out.sig_ns) out.sig_ns += w * (cubic_sig - out.sig_ns);
+        }
+      }
+    }
     out.y_then = a.y + fr * (b.y - a.y);
   }
   return found;
+}
+
+bool FloatTimeOfFlight::stereo_cubic(int trail, double fr, double* s_out, double* res_out) const {
+  // The cubic through the lead's last three frames (the core's comment), its
+  // fraction searched on the core's Q16 grid.
+  if (ring_.size() < 3) return false;
+  const int lead = 1 - trail;
+  const FloatTofFrame& now = at(0);
+  const FloatTofFrame& a = at(1);
+  const FloatTofFrame& p = at(2);
+  const int64_t span = static_cast<int64_t>(now.t_ns - a.t_ns), before = static_cast<int64_t>(a.t_ns - p.t_ns);
+  if (span <= 0 || std::llabs(before - span) * 16 > span) return false;
+  const Eigen::VectorXd rb = (now.r[trail] + (a.r[lead] + now.r[lead]) / 2) / 2;
+  const Eigen::VectorXd la = a.f[lead] + (now.heading - a.heading) * rb;
+  const Eigen::VectorXd lp = p.f[lead] + (now.heading - p.heading) * rb;
+  auto held = [](Eigen::VectorXd v) { return v.cwiseMax(-4.0).cwiseMin(4.0); };  // (the core's clamp)
+  const Eigen::VectorXd d = held(now.f[lead] - la), e = held(lp - la), sa = held(a.f[lead] - a.f[trail]),
+                        w = held(now.f[trail] - la);
+  auto cost = [&](int64_t s16) {
+    const double s = static_cast<double>(s16) / 65536, u = 1 - s;
+    const Eigen::VectorXd k = (d + e) / 2, h = (d - e) / 2;
+    const Eigen::VectorXd m = -(sa + k * u * u - h * u) / (u * (1 - u * u));
+    const Eigen::VectorXd g = h - m;
+    return (g * s + k * s * s + m * s * s * s - w).cwiseMax(-64.0).cwiseMin(64.0).squaredNorm();
+  };
+  // The grid and the thirds, as the core's (integer fractions, Q16).
+  const int64_t one = 65536, ends = std::llround(kTofCubicEnds * 65536);
+  const int64_t lo = ends, hi = one - ends;  // (a grid that does not move with fr: the core's comment)
+  constexpr int kGrid = kTofCubicGrid;
+  int64_t best = lo;
+  double best_cost = cost(lo);
+  for (int i = 1; i <= kGrid; ++i) {
+    const int64_t s = lo + (hi - lo) * i / kGrid;
+    const double c = cost(s);
+    if (c < best_cost) {
+      best = s;
+      best_cost = c;
+    }
+  }
+  // Parabolas about it (the core's comment), the points on the core's integer fractions.
+  int64_t x = best, h = (hi - lo) / kGrid;
+  double cx = best_cost;
+  for (int i = 0; i < kTofCubicParabolas && h > 0; ++i) {
+    const int64_t xm = std::max(lo, x - h), xp = std::min(hi, x + h);
+    const double cm = cost(xm), cp = cost(xp);
+    const double curv = (cm + cp) / 2 - cx;
+    if (xp - x == h && x - xm == h && curv > 0) {
+      const double off = std::clamp((cm - cp) / 4 / curv, -1.0, 1.0);
+      x = std::clamp(x + static_cast<int64_t>(std::floor(static_cast<double>(h) * off)), xm, xp);
+      cx = cost(x);
+    } else if (cm < cx || cp < cx) {
+      x = cm < cp ? xm : xp;
+      cx = cm < cp ? cm : cp;
+    }
+    h /= kTofCubicShrink;
+  }
+  *s_out = static_cast<double>(x) / 65536;
+  *res_out = cx;
+  return std::fabs(*s_out - fr) <= kTofCubicMaxMove;
 }
 
 double FloatTimeOfFlight::chord_time(int lead, size_t back, const Eigen::VectorXd& d, double dd, double fr) const {

@@ -37,6 +37,26 @@ constexpr int kTofWindowGateFrames = 6;
 // where one camera's auto-exposure steps, the second difference is noise
 // (unheld: near clutter with per-camera auto-exposure +11 %).
 constexpr double kTofChordMaxShift = 0.02;
+// Under a frame (the newest segment) the lead moves several h between its
+// frames and the chord models its path poorly (streets at 30 Hz: h / tau
+// 0.65-2 V). There the path is taken as the cubic through the lead's last
+// three frames whose change over the trail's lag at the older one is that
+// frame's stereo difference (docs/design.md, "Search"); its point is taken
+// where its residual is within kTofCubicTake of the step, blended with the
+// chord's up to kTofCubicBlend, the chord's beyond; within kTofCubicMaxMove
+// of the chord's fraction, kTofCubicEnds from the segment's ends. Its timing
+// sigma is kTofCubicSigma of its residual's, blended as the point.
+constexpr double kTofCubicTake = 0.1;
+constexpr double kTofCubicBlend = 0.3;
+constexpr double kTofCubicMaxMove = 0.5;
+constexpr double kTofCubicEnds = 0.02;
+constexpr double kTofCubicSigma = 0.5;
+// Its search: a grid of this many steps over the segment, then this many
+// parabolas about the grid's best point, each this many times narrower (the
+// last over a few 2^-16 of a frame).
+constexpr int kTofCubicGrid = 16;
+constexpr int kTofCubicParabolas = 2;
+constexpr int kTofCubicShrink = 8;
 // ... and against the trail camera's own change since its previous frame
 // (so that a still or slowly changing view cannot match anything).
 constexpr double kTofMaxResidualVsMotion = 1.0;

@@ -41,6 +41,8 @@ class FloatTimeOfFlight {
   const FloatTofFrame& at(size_t back) const;
   bool search(int trail, double max_rotation, double want_ns, double min_ns, double max_ns, Candidate& out) const;
   double chord_time(int lead, size_t back, const Eigen::VectorXd& d, double dd, double fr) const;  // (the core's)
+  // The newest segment's stereo cubic (the core's): its fraction on the same Q16 grid, and its squared residual.
+  bool stereo_cubic(int trail, double fr, double* s_out, double* res_out) const;
 
   std::vector<FloatTofFrame> ring_;  // capacity kTofFrames, oldest first
   double track_ns_ = 0;
