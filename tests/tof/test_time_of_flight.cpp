@@ -538,8 +538,9 @@ TEST(TimeOfFlight, ASlowPassKeepsItsTrack) {
 // 8 m/s at 60 Hz and h = 8 cm: the trail camera reaches the lead's place
 // within 10 ms, less than a frame; the match lies between the last two frames.
 // The wall's finest texture (0.23 m) then moves more than half its period per
-// frame: interpolating between frames is off by up to 12 % (a quadratic
-// through three frames was tried and did worse), but without bias. The
+// frame: the chord between frames was off by up to 12 % (a quadratic through
+// three frames was tried and did worse), but without bias (the stereo cubic
+// now: UnderAFrameTheStereoCubicTimesTheMatch, below). The
 // differential read 14 % high there until the finite-step correction
 // (velocity_observer.hpp); the time of flight must not pull the fused V off it
 // now: windows shorter than a few frame steps teach the scale little
