@@ -8,7 +8,6 @@
 #include <system_error>
 
 #include "lumavel/core/limits.hpp"
-#include "lumavel/stream/format.hpp"
 #include "lumavel/stream/run_stream.hpp"
 
 namespace {
@@ -30,19 +29,6 @@ class FileSink final : public lumavel::stream::ByteSink {
  private:
   std::FILE* f_;
 };
-
-// For a stream whose frames this build cannot hold: the size its header
-// gives and the build's, which "frame larger than the build's capacity" left
-// unsaid (was all of it, for a 161x30 stream of lumavel_make_test_stream).
-void print_size_beyond_capacity(const char* path) {
-  uint8_t h[lumavel::stream::kHeaderSize] = {};
-  std::FILE* f = std::fopen(path, "rb");
-  const bool read = f != nullptr && std::fread(h, 1, sizeof h, f) == sizeof h;
-  if (f != nullptr) std::fclose(f);
-  if (!read) return;
-  std::fprintf(stderr, ": its header says %ux%u pixels, this build takes at most %dx%d", unsigned{h[4]} | unsigned{h[5]} << 8,
-               unsigned{h[6]} | unsigned{h[7]} << 8, lumavel::kMaxColumns, lumavel::kMaxRows);
-}
 
 }  // namespace
 
@@ -107,7 +93,10 @@ int main(int argc, char** argv) {
         return 2;
       }
       std::fprintf(stderr, "%s: record %u: %s", argv[1], s.record_index, lumavel::stream::to_string(s.stream_error));
-      if (s.stream_error == lumavel::stream::StreamError::kTooLarge) print_size_beyond_capacity(argv[1]);
+      // (the size, which "frame larger than the build's capacity" leaves unsaid)
+      if (s.stream_error == lumavel::stream::StreamError::kTooLarge)
+        std::fprintf(stderr, ": its header says %ux%u pixels, this build takes at most %dx%d", unsigned{s.width},
+                     unsigned{s.height}, lumavel::kMaxColumns, lumavel::kMaxRows);
       std::fprintf(stderr, "\n");
       return 2;
     case lumavel::stream::RunOutcome::kUnconfigured:

@@ -9,7 +9,10 @@ protocol::DeviceConfig defaults_for(uint16_t width, uint16_t height) { return pr
 RunSummary run_stream(ByteSource& in, ByteSink& out, const char* board_name) {
   RunSummary s{};
   StreamReader reader(in);
-  if (!reader.open()) {
+  const bool opened = reader.open();
+  s.width = reader.width();
+  s.height = reader.height();
+  if (!opened) {
     s.outcome = RunOutcome::kBadStream;
     s.stream_error = reader.error();
     return s;

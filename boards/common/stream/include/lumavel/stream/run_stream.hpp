@@ -17,6 +17,7 @@ struct RunSummary {
   RunOutcome outcome;
   StreamError stream_error;  // kBadStream: why
   uint32_t record_index;     // kBadStream: the record it happened at (1-based)
+  uint16_t width, height;    // the header's frame size (kTooLarge: beyond kMaxColumns x kMaxRows)
   app::Counters counters;
   uint32_t watchdog_kicks;
   uint32_t gyro_dropped;
