@@ -39,10 +39,7 @@ static_assert(kCubicBlendQ16 > kCubicTakeQ16, "the blend needs a width");
 // then parabolas through three points about the best, each kTofCubicShrink
 // times narrower: continuous in the costs, where halving an interval would
 // turn the twins' last bits into a step of it (tau under a frame moves by
-// ds / (1 - s) of itself).
-constexpr int kCubicGrid = kTofCubicGrid;
-constexpr int kCubicParabolas = kTofCubicParabolas;
-constexpr int64_t kCubicShrink = kTofCubicShrink;
+// ds / (1 - s) of itself): kTofCubicGrid, kTofCubicParabolas, kTofCubicShrink.
 // The cubic's inputs held to +-4 (Q24): its coefficients then stay below 2^34 (Q24).
 constexpr int64_t kCubicInMaxQ24 = int64_t{4} << 24;
 constexpr int64_t kDiffMaxQ24 = int64_t{1} << 28;  // two ValueQ28 differ by < 2^32, 2^28 in Q24
@@ -267,7 +264,8 @@ bool TimeOfFlight::stereo_cubic(int trail, uint8_t count, int64_t fr, int64_t* s
   const TofFrame& p = at(2);
   const int64_t span = static_cast<int64_t>(now.t_ns - a.t_ns), before = static_cast<int64_t>(a.t_ns - p.t_ns);
   if (span <= 0 || abs64(before - span) * 16 > span) return false;  // a frame dropped before the segment
-  int64_t d[kMaxKernels], e[kMaxKernels], sa[kMaxKernels], w[kMaxKernels];  // Q24
+  // Per kernel, Q24: k = (d + e) / 2 and h = (d - e) / 2 (< 2^27), S_a and the trail's F now, from A.
+  int64_t kk[kMaxKernels], hh[kMaxKernels], sa[kMaxKernels], w[kMaxKernels];
   const auto dth_a = static_cast<int32_t>(now.heading - a.heading);
   const auto dth_p = static_cast<int32_t>(now.heading - p.heading);
   for (uint8_t k = 0; k < count; ++k) {
@@ -276,8 +274,9 @@ bool TimeOfFlight::stereo_cubic(int trail, uint8_t count, int64_t fr, int64_t* s
     const int64_t la = int64_t{a.f[lead][k]} + fx::shr_round(int64_t{dth_a} * rb, fx::kSlopeFrac);  // A, Q28
     const int64_t lp = int64_t{p.f[lead][k]} + fx::shr_round(int64_t{dth_p} * rb, fx::kSlopeFrac);  // P, Q28
     auto q24 = [](int64_t v) { return fx::clamp64(fx::shr_round(v, 4), -kCubicInMaxQ24, kCubicInMaxQ24); };
-    d[k] = q24(int64_t{now.f[lead][k]} - la);
-    e[k] = q24(lp - la);
+    const int64_t d = q24(int64_t{now.f[lead][k]} - la), e = q24(lp - la);
+    kk[k] = (d + e) / 2;
+    hh[k] = (d - e) / 2;
     sa[k] = q24(int64_t{a.f[lead][k]} - a.f[trail][k]);
     w[k] = q24(int64_t{now.f[trail][k]} - la);
   }
@@ -289,11 +288,10 @@ bool TimeOfFlight::stereo_cubic(int trail, uint8_t count, int64_t fr, int64_t* s
     const int64_t inv = fx::div_trunc(int64_t{1} << 56, den);  // 1 / den, Q28 (< 2^34): one division per point
     int64_t sum = 0;
     for (uint8_t k = 0; k < count; ++k) {
-      const int64_t kk = (d[k] + e[k]) / 2, h = (d[k] - e[k]) / 2;                       // Q24, < 2^27
-      const int64_t num = sa[k] + ((kk * u2) >> 28) - ((h * u) >> 28);                   // Q24, < 2^28
-      const int64_t m = -((num * inv) >> 28);                                            // Q24, < 2^34
-      const int64_t g = h - m;
-      const int64_t r = fx::clamp64(((g * s) >> 28) + ((kk * s2) >> 28) + ((m * s3) >> 28) - w[k], -(int64_t{1} << 30),
+      const int64_t num = sa[k] + ((kk[k] * u2) >> 28) - ((hh[k] * u) >> 28);  // Q24, < 2^28
+      const int64_t m = -((num * inv) >> 28);                                  // Q24, < 2^34
+      const int64_t g = hh[k] - m;
+      const int64_t r = fx::clamp64(((g * s) >> 28) + ((kk[k] * s2) >> 28) + ((m * s3) >> 28) - w[k], -(int64_t{1} << 30),
                                     int64_t{1} << 30);
       sum += r * r;  // < 2^60, kMaxKernels of them (a sum held below 2^62 below)
       if (sum > (int64_t{1} << 61)) sum = int64_t{1} << 61;
@@ -302,8 +300,8 @@ bool TimeOfFlight::stereo_cubic(int trail, uint8_t count, int64_t fr, int64_t* s
   };
   const int64_t lo = kCubicEndsQ16, hi = kOneQ16 - kCubicEndsQ16;
   int64_t best = lo, best_cost = cost(lo);
-  for (int i = 1; i <= kCubicGrid; ++i) {
-    const int64_t s = lo + (hi - lo) * i / kCubicGrid;
+  for (int i = 1; i <= kTofCubicGrid; ++i) {
+    const int64_t s = lo + (hi - lo) * i / kTofCubicGrid;
     const int64_t c = cost(s);
     if (c < best_cost) {
       best = s;
@@ -312,8 +310,8 @@ bool TimeOfFlight::stereo_cubic(int trail, uint8_t count, int64_t fr, int64_t* s
   }
   // Parabolas about it: the vertex through (x - h, x, x + h), held to that
   // bracket, where the three are convex; else x stands.
-  int64_t x = best, cx = best_cost, h = (hi - lo) / kCubicGrid;
-  for (int i = 0; i < kCubicParabolas && h > 0; ++i) {
+  int64_t x = best, cx = best_cost, h = (hi - lo) / kTofCubicGrid;
+  for (int i = 0; i < kTofCubicParabolas && h > 0; ++i) {
     const int64_t xm = std::max(lo, x - h), xp = std::min(hi, x + h);
     const int64_t cm = cost(xm), cp = cost(xp);
     const int64_t curv = (cm >> 1) + (cp >> 1) - cx;  // (c- - 2 c0 + c+) / 2, Q48
@@ -325,7 +323,7 @@ bool TimeOfFlight::stereo_cubic(int trail, uint8_t count, int64_t fr, int64_t* s
       x = cm < cp ? xm : xp;
       cx = cm < cp ? cm : cp;
     }
-    h /= kCubicShrink;
+    h /= kTofCubicShrink;
   }
   *s_out = x;
   *res_out = cx;

@@ -150,21 +150,20 @@ bool FloatTimeOfFlight::stereo_cubic(int trail, double fr, double* s_out, double
   auto held = [](Eigen::VectorXd v) { return v.cwiseMax(-4.0).cwiseMin(4.0); };  // (the core's clamp)
   const Eigen::VectorXd d = held(now.f[lead] - la), e = held(lp - la), sa = held(a.f[lead] - a.f[trail]),
                         w = held(now.f[trail] - la);
+  const Eigen::VectorXd kk = (d + e) / 2, hh = (d - e) / 2;
   auto cost = [&](int64_t s16) {
     const double s = static_cast<double>(s16) / 65536, u = 1 - s;
-    const Eigen::VectorXd k = (d + e) / 2, h = (d - e) / 2;
-    const Eigen::VectorXd m = -(sa + k * u * u - h * u) / (u * (1 - u * u));
-    const Eigen::VectorXd g = h - m;
-    return (g * s + k * s * s + m * s * s * s - w).cwiseMax(-64.0).cwiseMin(64.0).squaredNorm();
+    const Eigen::VectorXd m = -(sa + kk * u * u - hh * u) / (u * (1 - u * u));
+    const Eigen::VectorXd g = hh - m;
+    return (g * s + kk * s * s + m * s * s * s - w).cwiseMax(-64.0).cwiseMin(64.0).squaredNorm();
   };
-  // The grid and the thirds, as the core's (integer fractions, Q16).
+  // The grid, as the core's (integer fractions, Q16).
   const int64_t one = 65536, ends = std::llround(kTofCubicEnds * 65536);
   const int64_t lo = ends, hi = one - ends;  // (a grid that does not move with fr: the core's comment)
-  constexpr int kGrid = kTofCubicGrid;
   int64_t best = lo;
   double best_cost = cost(lo);
-  for (int i = 1; i <= kGrid; ++i) {
-    const int64_t s = lo + (hi - lo) * i / kGrid;
+  for (int i = 1; i <= kTofCubicGrid; ++i) {
+    const int64_t s = lo + (hi - lo) * i / kTofCubicGrid;
     const double c = cost(s);
     if (c < best_cost) {
       best = s;
@@ -172,7 +171,7 @@ bool FloatTimeOfFlight::stereo_cubic(int trail, double fr, double* s_out, double
     }
   }
   // Parabolas about it (the core's comment), the points on the core's integer fractions.
-  int64_t x = best, h = (hi - lo) / kGrid;
+  int64_t x = best, h = (hi - lo) / kTofCubicGrid;
   double cx = best_cost;
   for (int i = 0; i < kTofCubicParabolas && h > 0; ++i) {
     const int64_t xm = std::max(lo, x - h), xp = std::min(hi, x + h);

@@ -94,10 +94,11 @@ class TimeOfFlight {
   // along its chord d (Q24 per kernel, |d|^2 = dd, Q48): kTofChordMaxShift.
   int64_t chord_time(int lead, uint16_t back, uint8_t count, const int32_t* d, int64_t dd, int64_t fr) const;
   // On the newest segment, where tau is under a frame: the fraction (Q16) at
-  // which the stereo cubic meets the trail's F now, searched within
-  // kTofCubicMaxMove of the chord's fr, and its squared residual (Q48, the
-  // chord's units). False where the cubic does not apply (no frame before
-  // the segment, or one not a frame before it: a dropped frame).
+  // which the stereo cubic meets the trail's F now, searched over the
+  // segment, and its squared residual (Q48, the chord's units). False where
+  // the cubic does not apply (no frame before the segment, or one not a
+  // frame before it: a dropped frame) or its point lies further than
+  // kTofCubicMaxMove from the chord's fr.
   bool stereo_cubic(int trail, uint8_t count, int64_t fr, int64_t* s_out, int64_t* res_out) const;
 
   TofFrame ring_[kTofFrames];
