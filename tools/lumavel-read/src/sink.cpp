@@ -62,18 +62,18 @@ bool Sink::take(const uint8_t* buf, size_t len, const std::string& where) {
   // but whose t_ns or frame_index goes back written as it was, exit 0). Its
   // seq says it is the next one, or that is said below instead.
   if (from_file_ && have_seq_ && m.seq == next_seq_) {
-    const char* field = nullptr;
+    const char *field = nullptr, *relation = "not after";
     uint64_t was = 0, is = 0;
     if (m.t_ns <= last_.t_ns) field = "t_ns", was = last_.t_ns, is = m.t_ns;
     else if (m.frame_index <= last_.frame_index) field = "frame_index", was = last_.frame_index, is = m.frame_index;
-    else if (m.overruns < last_.overruns) field = "overruns", was = last_.overruns, is = m.overruns;
+    else if (m.overruns < last_.overruns) field = "overruns", relation = "below", was = last_.overruns, is = m.overruns;
     if (field != nullptr) {
       ++malformed_;
       std::fprintf(stderr,
                    "malformed report %s: %s %llu is %s the previous report's (%llu): a run's reports go forward, "
                    "one frame after another (its dropped frames counted up): a damaged record\n",
-                   where.c_str(), field, static_cast<unsigned long long>(is),
-                   field[0] == 'o' ? "below" : "not after", static_cast<unsigned long long>(was));
+                   where.c_str(), field, static_cast<unsigned long long>(is), relation,
+                   static_cast<unsigned long long>(was));
     }
   }
   if (have_seq_ && m.seq != next_seq_) {
