@@ -129,6 +129,9 @@ AngleQ28 atan2_fast(int32_t y32, int32_t x32) {
     y *= 2;
   }
   int32_t xs = static_cast<int32_t>(x), ys = static_cast<int32_t>(y), z = 0;
+  // Unrolled: each step's shift and angle become constants, and the loop's
+  // count, compare and table load go (the same steps, in the same order).
+#pragma GCC unroll 24
   for (int i = 0; i < kFastSteps; ++i) {
     const int32_t dx = xs >> i, dy = ys >> i;
     const int32_t a = kAtanQ28.v[i];
