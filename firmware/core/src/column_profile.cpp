@@ -188,6 +188,39 @@ int32_t to_band_q8(const uint8_t* col, int32_t s, uint16_t from, uint16_t height
   return s;
 }
 
+bool little_endian() {
+  uint8_t probe[4] = {1, 0, 0, 0};
+  return load_word(probe) == 1u;
+}
+
+// The edge rows' 3 (t + b) - t' - b' (column_profile below) four columns a
+// step on word-aligned rows: the even and the odd bytes in two 16-bit lanes
+// each, 512 above the value, so that every lane stays in [2, 2042] at each
+// step (no borrow or carry between lanes); then h edge - 4 sum per column,
+// the same integers as the byte loop (M3: 15 instructions a column there).
+// Returns the columns done (n rounded down to a multiple of 4). Where
+// kWideColumnSums (on ARMv6-M its spills made the 160x120 frame some 2 900
+// instructions longer).
+uint32_t edge_words(const uint8_t* top, const uint8_t* bottom, uint16_t stride, uint32_t n, int32_t h,
+                    ColumnProfile& out) {
+  constexpr uint32_t kMask = 0x00FF00FFu, kBias = 0x02000200u;
+  const int32_t bias = 512 * h;  // h (lane - 512) = h lane - 512 h
+  uint32_t c = 0;
+  for (; c + 4 <= n; c += 4) {
+    const auto word = [&](const uint8_t* row) {
+      return load_word(static_cast<const uint8_t*>(__builtin_assume_aligned(row + c, 4)));
+    };
+    const uint32_t t = word(top), b = word(bottom), t2 = word(top + stride), b2 = word(bottom - stride);
+    const uint32_t even = 3 * ((t & kMask) + (b & kMask)) + kBias - (t2 & kMask) - (b2 & kMask);
+    const uint32_t odd =
+        3 * (((t >> 8) & kMask) + ((b >> 8) & kMask)) + kBias - ((t2 >> 8) & kMask) - ((b2 >> 8) & kMask);
+    const int32_t lanes[4] = {static_cast<int32_t>(even & 0xFFFFu), static_cast<int32_t>(odd & 0xFFFFu),
+                              static_cast<int32_t>(even >> 16), static_cast<int32_t>(odd >> 16)};
+    for (uint32_t i = 0; i < 4; ++i) out.edge4[c + i] = h * lanes[i] - bias - 4 * int32_t{out.sum[c + i]};
+  }
+  return c;
+}
+
 }  // namespace
 
 bool column_profile(const uint8_t* pixels, uint16_t width, uint16_t height, uint16_t stride,
@@ -230,8 +263,12 @@ bool column_profile(const uint8_t* pixels, uint16_t width, uint16_t height, uint
     const uint8_t* top = pixels;
     const uint8_t* bottom = pixels + uint32_t(height - 1) * stride;
     const int32_t h = height;
-    for (uint16_t c = 0; c < width && c < kBandColumns; ++c) {
-      const int32_t edge = height >= 4 ? 3 * (top[c] + bottom[c]) - top[c + stride] - bottom[c - stride]
+    const uint32_t n = width < kBandColumns ? width : uint32_t{kBandColumns};
+    uint32_t c = 0;
+    if (kWideColumnSums && aligned && height >= 4 && little_endian()) c = edge_words(top, bottom, stride, n, h, out);
+    const uint8_t* const above_bottom = bottom - stride;  // (c - stride would wrap: c is unsigned)
+    for (; c < n; ++c) {
+      const int32_t edge = height >= 4 ? 3 * (top[c] + bottom[c]) - top[c + stride] - above_bottom[c]
                                        : 2 * (top[c] + bottom[c]);
       out.edge4[c] = h * edge - 4 * int32_t{out.sum[c]};
     }
