@@ -1232,6 +1232,24 @@ TEST(Cli, RenderRefusesBeforeRenderingWhatRunWouldRefuse) {
   CHECK(!exists(dir.path() + "/out/mav0"));
 }
 
+// A first frame at or after the end: first_frame_s 5 s with a duration of 4
+// s (or --duration shorter than it). Was 'out/mav0/cam0/data.csv:2: no
+// frames (0 before duration_s, all dropped)', a file never written and drops
+// the scenario does not have, neither value said.
+TEST(Cli, AFirstFrameAfterTheDurationIsSaidAsSuch) {
+  std::string s = fixture::read_text(LUMAVEL_SOURCE_DIR "/host_sim/scenarios/paper_sim_aligned.yaml");
+  const size_t at = s.find("  rate_hz: 60");
+  CHECK(at != std::string::npos);
+  s.insert(at, "  first_frame_s: 0.5\n");
+  fixture::write_text(dir.path() + "/late_frames.yaml", s);
+  const Outcome r = sim("render late_frames.yaml out --resolution 40x30 --duration 0.2 -q");
+  LONGS_EQUAL(1, r.code);
+  STRCMP_CONTAINS("late_frames.yaml: first_frame_s = 0.5 s is not before duration_s = 0.2 s: frames are rendered at "
+                  "first_frame_s + i / rate_hz before duration_s, so the recording would hold none",
+                  r.err.c_str());
+  CHECK(!exists(dir.path() + "/out/mav0"));
+}
+
 // The gyro values run would refuse, before rendering too (was: rendered
 // whole, then 'out/mav0 was written, but lumavel-sim run refuses it', exit 1
 // and the recording left behind): a 100 m/s turn on a 1 mm radius (a yaw

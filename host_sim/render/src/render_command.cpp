@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "lumavel/host/cli.hpp"
+#include "lumavel/host/csv_table.hpp"
 #include "lumavel/host/image_io.hpp"
 #include "lumavel/host/path_check.hpp"
 #include "lumavel/host/recording.hpp"
@@ -67,6 +68,15 @@ void check_before_render(const render::Scenario& s, const std::string& out) {
   rec.groundtruth = render::synthesize_groundtruth(s, trajectory);
   rec.frame_period_s = 1.0 / s.camera.rate_hz;
   rec.imu_period_s = 1.0 / s.imu.rate_hz;
+  // No frame before duration_s at all: first_frame_s (mid-exposure time of
+  // frame 0) at or after it (was: 'cam0/data.csv:2: no frames (0 before
+  // duration_s, all dropped)', a file never written and drops there were not).
+  if (n == 0)
+    throw render::ScenarioError(shown_path(s.file) + ": first_frame_s = " + format_double(s.camera.first_frame_s) +
+                                " s is not before duration_s = " + format_double(s.duration_s) +
+                                " s: frames are rendered at first_frame_s + i / rate_hz before duration_s, so the "
+                                "recording would hold none (nothing rendered; a later first_frame_s needs a longer "
+                                "duration_s or --duration)");
   try {
     if (rec.frames.empty())
       throw recording_error_at(rec.root + "/" + layout::kCamDir[0] + "/data.csv", 2,
