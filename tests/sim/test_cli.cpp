@@ -1232,6 +1232,21 @@ TEST(Cli, RenderRefusesBeforeRenderingWhatRunWouldRefuse) {
   CHECK(!exists(dir.path() + "/out/mav0"));
 }
 
+// A standard output closed at the start ('run REC >&-'): the CSV, gathered
+// in a temporary file to be copied to standard output, took descriptor 1
+// itself and was copied into itself, then dropped: exit 0, nothing said. Now
+// the write fails as on a full disk.
+TEST(Cli, AClosedStandardOutputIsAWriteError) {
+  rec();
+  const std::string cmd = "cd '" + dir.path() + "' && '" LUMAVEL_SIM_EXE "' run rec -q >&- 2>'" + dir.path() +
+                          "/stderr.txt'";
+  const int status = std::system(cmd.c_str());
+  CHECK(WIFEXITED(status));
+  LONGS_EQUAL(1, WEXITSTATUS(status));
+  STRCMP_EQUAL("lumavel-sim run: error: standard output: write error: Bad file descriptor\n",
+               fixture::read_text(dir.path() + "/stderr.txt").c_str());
+}
+
 // A first frame at or after the end: first_frame_s 5 s with a duration of 4
 // s (or --duration shorter than it). Was 'out/mav0/cam0/data.csv:2: no
 // frames (0 before duration_s, all dropped)', a file never written and drops

@@ -2,6 +2,9 @@
 
 #include "lumavel/host/path_check.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -155,9 +158,28 @@ std::string shown_lines(const std::string& text) {
   return out;
 }
 
+// A standard stream closed when the tool starts ('lumavel-sim run REC >&-'):
+// the next file opened took its descriptor, and what was written to standard
+// output went into that file (run's CSV into its own temporary copy, lost, exit
+// 0, nothing said; a recording's file could have taken it as well). Each
+// closed one is held by /dev/null opened read-only: a write to it fails
+// (EBADF) and is said as standard output's write error, and no file the tool
+// opens takes its number.
+void hold_closed_standard_streams() {
+  for (int fd = 0; fd <= 2; ++fd) {
+    if (::fcntl(fd, F_GETFD) != -1 || errno != EBADF) continue;
+    const int held = ::open("/dev/null", O_RDONLY);
+    if (held >= 0 && held != fd) {
+      ::dup2(held, fd);
+      ::close(held);
+    }
+  }
+}
+
 }  // namespace
 
 int Tool::run(int argc, const char* const* argv) {
+  hold_closed_standard_streams();
   // The deepest command named so far: messages and help hints are its own.
   auto deepest = [this] {
     const CLI::App* a = &app_;
