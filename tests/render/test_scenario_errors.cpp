@@ -217,6 +217,61 @@ TEST(ScenarioErrors, APhotoPngWithMoreDataThanItsHeaderSaysIsRefused) {
   STRCMP_EQUAL((photo + ": corrupt PNG: IDAT: Too much image data").c_str(), e.c_str());
 }
 
+namespace {
+
+// A gray + alpha PNG of w x 1 pixels, written by hand (zlib): gray ramp,
+// alpha `alpha` in column `at`, 255 elsewhere.
+void write_gray_alpha_png(const std::string& path, int w, int at, uint8_t alpha) {
+  std::string raw(1, '\0');  // filter byte of the one row
+  for (int x = 0; x < w; ++x) {
+    raw += static_cast<char>(x * 255 / w);
+    raw += static_cast<char>(x == at ? alpha : 255);
+  }
+  std::vector<Bytef> z(compressBound(raw.size()));
+  uLongf zn = z.size();
+  CHECK(compress(z.data(), &zn, reinterpret_cast<const Bytef*>(raw.data()), raw.size()) == Z_OK);
+  std::string png("\x89PNG\r\n\x1a\n", 8);
+  const auto chunk = [&png](const char* type, const std::string& data) {
+    const auto be32 = [&png](uLong v) { for (int k = 0; k < 4; ++k) png += static_cast<char>((v >> (24 - 8 * k)) & 0xff); };
+    be32(data.size());
+    const std::string body = std::string(type, 4) + data;
+    png += body;
+    be32(crc32(0, reinterpret_cast<const Bytef*>(body.data()), body.size()));
+  };
+  std::string ihdr;
+  for (uLong v : {static_cast<uLong>(w), uLong{1}})
+    for (int k = 0; k < 4; ++k) ihdr += static_cast<char>((v >> (24 - 8 * k)) & 0xff);
+  ihdr += std::string("\x08\x04\x00\x00\x00", 5);  // 8-bit, gray + alpha, no interlace
+  chunk("IHDR", ihdr);
+  chunk("IDAT", std::string(reinterpret_cast<const char*>(z.data()), zn));
+  chunk("IEND", "");
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  std::fwrite(png.data(), 1, png.size(), f);
+  std::fclose(f);
+}
+
+}  // namespace
+
+// A photo with transparent pixels: the simplified API composed them onto
+// black when it converted to gray, and the photo was rendered so, exit 0 (a
+// fully transparent one as a plain black wall). Refused, where it says; an
+// alpha channel that is opaque throughout is read as before.
+TEST(ScenarioErrors, APhotoPngWithTransparentPixelsIsRefused) {
+  char dir[] = "/tmp/lumavel_photo_alpha_XXXXXX";
+  CHECK(mkdtemp(dir) != nullptr);
+  const std::string photo = std::string(dir) + "/p.png";
+  write_gray_alpha_png(photo, 16, 5, 0);
+  STRCMP_EQUAL((photo + ": 1 of its 16 pixels are transparent or partly so (the first at column 5, row 0, alpha 0 of "
+                "255): a photo paints its plane opaque, and what shows through is not known (it would be read as "
+                "composed onto black); flatten it onto a background first").c_str(),
+               photo_error(photo, dir).c_str());
+  char opaque_dir[] = "/tmp/lumavel_photo_opaque_XXXXXX";
+  CHECK(mkdtemp(opaque_dir) != nullptr);
+  const std::string opaque = std::string(opaque_dir) + "/p.png";
+  write_gray_alpha_png(opaque, 16, 5, 255);
+  STRCMP_EQUAL("(read)", photo_error(opaque, opaque_dir).c_str());
+}
+
 // 'dark' is a list of intervals: one interval without its outer brackets
 // was refused as "'dark' must be a list of 2 numbers", which it is.
 TEST(ScenarioErrors, ADarkIntervalWithoutItsBracketsIsSaidAsSuch) {

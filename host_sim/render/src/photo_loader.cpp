@@ -45,6 +45,40 @@ std::vector<unsigned char> load_png(const std::string& path, int& w, int& h) {
     png_image_free(&img);
     throw std::runtime_error(path + ": " + why);
   }
+  // A photo with transparency (an alpha channel or a tRNS chunk): the
+  // simplified API composes it onto black when it converts to gray, so a
+  // photo whose pixels were transparent was rendered black, exit 0 (a fully
+  // transparent one a plain black wall). Refused where a pixel is not opaque.
+  if ((img.format & PNG_FORMAT_FLAG_ALPHA) != 0) {
+    png_image ga{};
+    ga.version = PNG_IMAGE_VERSION;
+    if (!png_image_begin_read_from_file(&ga, path.c_str())) {
+      png_image_free(&img);
+      throw std::runtime_error(path + ": cannot read PNG: " + ga.message);
+    }
+    ga.format = PNG_FORMAT_GA;
+    std::vector<unsigned char> gray_alpha(PNG_IMAGE_SIZE(ga));
+    if (!png_image_finish_read(&ga, nullptr, gray_alpha.data(), 0, nullptr)) {
+      const std::string msg = ga.message;
+      png_image_free(&ga);
+      png_image_free(&img);
+      throw std::runtime_error(path + ": corrupt PNG: " + msg);
+    }
+    uint64_t seen = 0;
+    size_t first = 0;
+    for (size_t i = 1; i < gray_alpha.size(); i += 2)
+      if (gray_alpha[i] != 255 && seen++ == 0) first = i / 2;
+    if (seen > 0) {
+      const uint64_t all = uint64_t{ga.width} * ga.height;
+      png_image_free(&img);
+      throw std::runtime_error(
+          path + ": " + std::to_string(seen) + " of its " + std::to_string(all) +
+          " pixels are transparent or partly so (the first at column " + std::to_string(first % ga.width) + ", row " +
+          std::to_string(first / ga.width) + ", alpha " + std::to_string(gray_alpha[2 * first + 1]) +
+          " of 255): a photo paints its plane opaque, and what shows through is not known (it would be read as "
+          "composed onto black); flatten it onto a background first");
+    }
+  }
   img.format = PNG_FORMAT_GRAY;
   std::vector<unsigned char> px(PNG_IMAGE_SIZE(img));
   if (!png_image_finish_read(&img, nullptr, px.data(), 0, nullptr)) {
