@@ -219,35 +219,45 @@ TEST(ScenarioErrors, APhotoPngWithMoreDataThanItsHeaderSaysIsRefused) {
 
 namespace {
 
-// A gray + alpha PNG of w x 1 pixels, written by hand (zlib): gray ramp,
-// alpha `alpha` in column `at`, 255 elsewhere.
-void write_gray_alpha_png(const std::string& path, int w, int at, uint8_t alpha) {
-  std::string raw(1, '\0');  // filter byte of the one row
-  for (int x = 0; x < w; ++x) {
-    raw += static_cast<char>(x * 255 / w);
-    raw += static_cast<char>(x == at ? alpha : 255);
-  }
-  std::vector<Bytef> z(compressBound(raw.size()));
+// A PNG of w x h pixels written by hand (zlib): `rows` is the raw image
+// data, each row led by its filter byte (0).
+void write_png_by_hand(const std::string& path, int w, int h, int depth, int colour, const std::string& rows) {
+  std::vector<Bytef> z(compressBound(rows.size()));
   uLongf zn = z.size();
-  CHECK(compress(z.data(), &zn, reinterpret_cast<const Bytef*>(raw.data()), raw.size()) == Z_OK);
+  CHECK(compress(z.data(), &zn, reinterpret_cast<const Bytef*>(rows.data()), rows.size()) == Z_OK);
   std::string png("\x89PNG\r\n\x1a\n", 8);
-  const auto chunk = [&png](const char* type, const std::string& data) {
-    const auto be32 = [&png](uLong v) { for (int k = 0; k < 4; ++k) png += static_cast<char>((v >> (24 - 8 * k)) & 0xff); };
-    be32(data.size());
+  const auto be32 = [](std::string& to, uLong v) {
+    for (int k = 0; k < 4; ++k) to += static_cast<char>((v >> (24 - 8 * k)) & 0xff);
+  };
+  const auto chunk = [&png, &be32](const char* type, const std::string& data) {
+    be32(png, data.size());
     const std::string body = std::string(type, 4) + data;
     png += body;
-    be32(crc32(0, reinterpret_cast<const Bytef*>(body.data()), body.size()));
+    be32(png, crc32(0, reinterpret_cast<const Bytef*>(body.data()), static_cast<uInt>(body.size())));
   };
   std::string ihdr;
-  for (uLong v : {static_cast<uLong>(w), uLong{1}})
-    for (int k = 0; k < 4; ++k) ihdr += static_cast<char>((v >> (24 - 8 * k)) & 0xff);
-  ihdr += std::string("\x08\x04\x00\x00\x00", 5);  // 8-bit, gray + alpha, no interlace
+  be32(ihdr, static_cast<uLong>(w));
+  be32(ihdr, static_cast<uLong>(h));
+  ihdr += static_cast<char>(depth);
+  ihdr += static_cast<char>(colour);
+  ihdr += std::string(3, '\0');  // compression, filter, no interlace
   chunk("IHDR", ihdr);
   chunk("IDAT", std::string(reinterpret_cast<const char*>(z.data()), zn));
   chunk("IEND", "");
   std::FILE* f = std::fopen(path.c_str(), "wb");
   std::fwrite(png.data(), 1, png.size(), f);
   std::fclose(f);
+}
+
+// A gray + alpha PNG of w x 1 pixels: gray ramp, alpha `alpha` in column
+// `at`, 255 elsewhere.
+void write_gray_alpha_png(const std::string& path, int w, int at, uint8_t alpha) {
+  std::string raw(1, '\0');
+  for (int x = 0; x < w; ++x) {
+    raw += static_cast<char>(x * 255 / w);
+    raw += static_cast<char>(x == at ? alpha : 255);
+  }
+  write_png_by_hand(path, w, 1, 8, 4, raw);
 }
 
 }  // namespace
@@ -270,6 +280,34 @@ TEST(ScenarioErrors, APhotoPngWithTransparentPixelsIsRefused) {
   const std::string opaque = std::string(opaque_dir) + "/p.png";
   write_gray_alpha_png(opaque, 16, 5, 255);
   STRCMP_EQUAL("(read)", photo_error(opaque, opaque_dir).c_str());
+}
+
+// A 16-bit gray photo without gAMA or sRGB chunk was read as linear light
+// (libpng's simplified API by default) and rendered brighter and flatter than
+// its 8-bit twin: levels 0x4040 and 0xC0C0 as 136 and 224, not 64 and 192.
+// Read as its 8-bit twin is.
+TEST(ScenarioErrors, ASixteenBitPhotoReadsAsItsEightBitTwin) {
+  char dir[] = "/tmp/lumavel_photo_16_XXXXXX";
+  CHECK(mkdtemp(dir) != nullptr);
+  const std::string p8 = std::string(dir) + "/p8.png", p16 = std::string(dir) + "/p16.png";
+  std::string raw8(1, '\0'), raw16(1, '\0');
+  for (int x = 0; x < 16; ++x) {
+    const char level = static_cast<char>(x * 17);
+    raw8 += level;
+    raw16 += std::string(2, level);  // 0xLL -> 0xLLLL: the same level in 16 bits
+  }
+  write_png_by_hand(p8, 16, 1, 8, 0, raw8);
+  write_png_by_hand(p16, 16, 1, 16, 0, raw16);
+  int w8 = 0, h8 = 0, w16 = 0, h16 = 0;
+  const std::vector<unsigned char> a = load_photo_gray(p8, w8, h8);
+  const std::vector<unsigned char> b = load_photo_gray(p16, w16, h16);
+  std::remove(p8.c_str());
+  std::remove(p16.c_str());
+  rmdir(dir);
+  LONGS_EQUAL(16, w16);
+  LONGS_EQUAL(16, a.size());
+  LONGS_EQUAL(a.size(), b.size());
+  for (size_t i = 0; i < a.size(); ++i) LONGS_EQUAL(static_cast<int>(i) * 17, b[i]);
 }
 
 // 'dark' is a list of intervals: one interval without its outer brackets

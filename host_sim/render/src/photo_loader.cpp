@@ -45,6 +45,13 @@ std::vector<unsigned char> load_png(const std::string& path, int& w, int& h) {
     png_image_free(&img);
     throw std::runtime_error(path + ": " + why);
   }
+  // 16-bit samples without gAMA or sRGB chunk: the simplified API takes them
+  // as linear light by default, and a 16-bit copy of a photo (as GIMP,
+  // ImageMagick or PIL write it, the same encoding as the 8-bit one) was
+  // rendered brighter and flatter than the 8-bit photo (levels 64 and 192 as
+  // 136 and 224), exit 0. Read as sRGB, as its 8-bit twin is (libpng's
+  // recommendation for files from elsewhere); a gAMA or sRGB chunk still rules.
+  img.flags |= PNG_IMAGE_FLAG_16BIT_sRGB;
   // A photo with transparency (an alpha channel or a tRNS chunk): the
   // simplified API composes it onto black when it converts to gray, so a
   // photo whose pixels were transparent was rendered black, exit 0 (a fully
@@ -56,6 +63,7 @@ std::vector<unsigned char> load_png(const std::string& path, int& w, int& h) {
       png_image_free(&img);
       throw std::runtime_error(path + ": cannot read PNG: " + ga.message);
     }
+    ga.flags |= PNG_IMAGE_FLAG_16BIT_sRGB;
     ga.format = PNG_FORMAT_GA;
     std::vector<unsigned char> gray_alpha(PNG_IMAGE_SIZE(ga));
     if (!png_image_finish_read(&ga, nullptr, gray_alpha.data(), 0, nullptr)) {
