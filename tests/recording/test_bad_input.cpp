@@ -589,6 +589,13 @@ TEST(BadInput, SensorYamlThatIsAFolderOrEmpty) {
   std::filesystem::remove(m + "cam1/sensor.yaml");
   fixture::write_text(m + "cam1/sensor.yaml", "");
   STRCMP_CONTAINS((m + "cam1/sensor.yaml: empty file").c_str(), load_error().c_str());
+  // Comments alone, or a null value, are no empty file (were: 'empty file').
+  fixture::write_text(m + "cam1/sensor.yaml", "# cam1, calibrated later\n\n");
+  STRCMP_EQUAL((m + "cam1/sensor.yaml: no key: the file holds only comments: a sensor.yaml holds the sensor's keys "
+                "(docs/recording-format.md)").c_str(),
+               load_error().c_str());
+  fixture::write_text(m + "cam1/sensor.yaml", "# cam1\n~\n");
+  STRCMP_CONTAINS((m + "cam1/sensor.yaml: no key: line 2 is a null value: ").c_str(), load_error().c_str());
   fixture::write_text(m + "cam1/sensor.yaml", "\n- a list\n");
   STRCMP_CONTAINS((m + "cam1/sensor.yaml:2: not a YAML mapping of sensor keys").c_str(), load_error().c_str());
 }

@@ -416,6 +416,10 @@ TEST(ScenarioErrors, ScenarioThatIsNotAFileSaysWhatItIs) {
   ::rmdir(dir.c_str());
   STRCMP_EQUAL((path + ": is a FIFO (named pipe), not a scenario file").c_str(), e.c_str());
   STRCMP_CONTAINS("bad.yaml: empty file", error_of("").c_str());
+  // Comments alone are no empty file (was: 'empty file').
+  STRCMP_EQUAL("bad.yaml: no key: the file holds only comments: a scenario holds KEY: VALUE lines "
+               "(host_sim/scenarios/README.md)",
+               error_of("# to do\n").c_str());
   STRCMP_CONTAINS("bad.yaml:1: a scenario must be a YAML map", error_of("- a list").c_str());
 }
 

@@ -88,7 +88,8 @@ YAML::Node load_yaml(const std::string& path) {
       throw recording_error_at(path, bad.line, bad.why + ": a sensor.yaml is one mapping of keys");
     YAML::Node root = YAML::Load(text);
     if (root.IsNull())
-      throw recording_error_in(path, "empty file: a sensor.yaml holds the sensor's keys (docs/recording-format.md)");
+      throw recording_error_in(path, yaml_text::why_null_document(text) +
+                                         ": a sensor.yaml holds the sensor's keys (docs/recording-format.md)");
     if (!root.IsMap())
       throw recording_error_at(path, line_of(root),
                                "not a YAML mapping of sensor keys (KEY: VALUE lines, docs/recording-format.md)");

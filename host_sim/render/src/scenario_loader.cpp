@@ -599,7 +599,8 @@ Scenario parse_scenario(const std::string& text, const std::string& name,
                         yaml_text::tab_indent_note(text, e.mark.line + 1));
   }
   if (root.IsNull())
-    throw ScenarioError(shown + ": empty file: a scenario holds KEY: VALUE lines (host_sim/scenarios/README.md)");
+    throw ScenarioError(shown + ": " + yaml_text::why_null_document(text) +
+                        ": a scenario holds KEY: VALUE lines (host_sim/scenarios/README.md)");
   if (!root.IsMap())
     throw ScenarioError(shown + ":" + std::to_string(root.Mark().line + 1) +
                         ": a scenario must be a YAML map of KEY: VALUE lines (host_sim/scenarios/README.md)");

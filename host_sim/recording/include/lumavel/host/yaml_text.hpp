@@ -64,6 +64,27 @@ inline NotOneDocument why_not_one_document(const std::string& text) {
   return out;
 }
 
+// What a file that loads as no document at all holds, for its refusal:
+// "empty file" (nothing, or blanks alone), "no key: the file holds only
+// comments" (and blank lines, document markers or directives), or "no key:
+// line N is a null value" ('~' or 'null' alone). A file of comments alone
+// was said to be an empty file, which it is not.
+inline std::string why_null_document(const std::string& text) {
+  long comment = 0, value = 0;
+  for_each_line(text, [&](long n, const std::string& l) {
+    const size_t first = l.find_first_not_of(" \t\r");
+    if (first == std::string::npos) return;
+    if (l[first] == '#' || is_marker(l, "---") || is_marker(l, "...") || l[0] == '%') {
+      if (comment == 0) comment = n;
+    } else if (value == 0) {
+      value = n;
+    }
+  });
+  if (value != 0) return "no key: line " + std::to_string(value) + " is a null value";
+  if (comment != 0) return "no key: the file holds only comments";
+  return "empty file";
+}
+
 // The first line that yaml-cpp would misread, and why: a first line of
 // UTF-16 or UTF-32 text (why_wide_text's reason), a carriage return
 // before more text (why_cr_inside_line's reason; yaml-cpp ends lines at LF
