@@ -72,6 +72,17 @@ TEST(BadInput, MissingDataCsv) {
   STRCMP_CONTAINS((m + "imu0/data.csv: does not exist").c_str(), load_error().c_str());
 }
 
+// A table missing where a stopped write left its temporary file (a render
+// interrupted by Ctrl-C writes each table under NAME.tmpPID-N, renamed when
+// whole): said beside 'does not exist' (was: that alone, the half-written
+// recording unexplained).
+TEST(BadInput, AMissingTableLeftByAStoppedWriteSaysSo) {
+  std::rename((m + "cam0/data.csv").c_str(), (m + "cam0/data.csv.tmp16620-1").c_str());
+  STRCMP_EQUAL((m + "cam0/data.csv: does not exist (data.csv.tmp16620-1 lies beside it: the file of a write stopped "
+                    "before its end, as a render interrupted by Ctrl-C leaves; write it again)").c_str(),
+               load_error().c_str());
+}
+
 TEST(BadInput, MissingHeaderLine) {
   fixture::erase_line(m + "cam0/data.csv", 1);
   const std::string e = load_error();

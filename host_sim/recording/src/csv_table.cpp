@@ -117,7 +117,8 @@ bool next_table_line(std::istream& in, std::vector<char>& buf, std::string& out,
 
 void for_each_csv_row(const std::string& path, const std::vector<std::string>& columns,
                       const std::function<void(const CsvRow&)>& on_row) {
-  if (const std::string why = why_not_a_file(path); !why.empty()) throw recording_error_in(path, why);
+  if (const std::string why = why_not_a_file(path); !why.empty())
+    throw recording_error_in(path, why == "does not exist" ? why + left_by_a_stopped_write(path) : why);
   std::ifstream in(path);
   if (!in) throw recording_error_in(path, std::string("cannot open: ") + std::strerror(errno));
   std::string text;

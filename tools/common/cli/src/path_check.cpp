@@ -272,6 +272,30 @@ std::string temporary_name_for(const std::string& path) {
   return path.substr(0, at) + name + suffix;
 }
 
+std::string left_by_a_stopped_write(const std::string& path) {
+  const size_t slash = path.find_last_of('/');
+  const std::string folder = slash == std::string::npos ? "." : path.substr(0, slash + 1);
+  const std::string name = path.substr(slash == std::string::npos ? 0 : slash + 1);
+  std::error_code ec;
+  for (std::filesystem::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string other = it->path().filename().string();
+    // NAME.tmpPID-N (a long NAME cut to make room is not looked for).
+    if (other.size() <= name.size() + 4 || other.compare(0, name.size(), name) != 0 ||
+        other.compare(name.size(), 4, ".tmp") != 0)
+      continue;
+    const std::string tail = other.substr(name.size() + 4);
+    const size_t dash = tail.find('-');
+    const auto digits = [](const std::string& t) {
+      return !t.empty() && std::all_of(t.begin(), t.end(), [](char c) { return c >= '0' && c <= '9'; });
+    };
+    if (dash == std::string::npos || !digits(tail.substr(0, dash)) || !digits(tail.substr(dash + 1))) continue;
+    return " (" + shown_path(other) +
+           " lies beside it: the file of a write stopped before its end, as a render interrupted by Ctrl-C leaves; "
+           "write it again)";
+  }
+  return {};
+}
+
 std::FILE* open_for_writing(const std::string& path, const char* mode, std::string& why) {
   struct stat st {};
   if (::stat(path.c_str(), &st) != 0 || !S_ISFIFO(st.st_mode)) {

@@ -60,6 +60,10 @@ std::string why_not_a_writable_folder(const std::string& path, const std::string
 // than a name may be (a legal 255-character output name was refused as 'File
 // name too long', said of its temporary name).
 std::string temporary_name_for(const std::string& path);
+// For a `path` that does not exist: " (NAME.tmpPID-N lies beside it: ...)"
+// when a temporary name temporary_name_for gave it is there, the output of a
+// write stopped before its end (a render interrupted by Ctrl-C), else "".
+std::string left_by_a_stopped_write(const std::string& path);
 // Where a file written at `path` lands, absolute and normal (weakly_canonical),
 // for telling whether two outputs, or an output and an input, are one file:
 // `path` itself, or for a symbolic link to nothing, which a write follows and
