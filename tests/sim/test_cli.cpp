@@ -1098,7 +1098,11 @@ TEST(Cli, AnInvalidHidConfigIsRefused) {
   fixture::write_text(dir.path() + "/rig.cfg", rig);
   Outcome r = sim("run rec --quiet -o est.csv --hid file:run.hidrep --hid-config rig.cfg");
   LONGS_EQUAL(1, r.code);
-  STRCMP_CONTAINS("lumavel-sim run: error: rig.cfg (--hid-config): is not a stored configuration (", r.err.c_str());
+  // In a file's words, not a report's (was: '(malformed report: the report was malformed)').
+  STRCMP_CONTAINS("lumavel-sim run: error: rig.cfg (--hid-config): is not a stored configuration (its 19 bytes do "
+                  "not hold one: a stored configuration is the configuration report, its id, version and CRC "
+                  "checked, then the lens tables it names): ",
+                  r.err.c_str());
   STRCMP_CONTAINS("give a new name, or a file an earlier run saved there", r.err.c_str());
   CHECK(!exists(dir.path() + "/est.csv") && !exists(dir.path() + "/run.hidrep"));
   fixture::write_text(dir.path() + "/big", std::string(100000, 'x'));

@@ -348,6 +348,13 @@ int run(const RunArgs& a) {
                                    std::to_string(std::filesystem::file_size(a.hid_config)) +
                                    " bytes, larger than a stored configuration (" + std::to_string(sizeof buf) +
                                    " B)" + not_a_store);
+        // Bytes that frame no configuration were said in a report's words
+        // ('malformed report: the report was malformed'), of a file.
+        if (f == protocol::ConfigField::kMalformed)
+          throw std::runtime_error(shown_path(a.hid_config) + " (--hid-config): is not a stored configuration (its " +
+                                   std::to_string(n) + " bytes do not hold one: a stored configuration is the "
+                                   "configuration report, its id, version and CRC checked, then the lens tables it "
+                                   "names)" + not_a_store);
         if (f != protocol::ConfigField::kOk)
           throw std::runtime_error(shown_path(a.hid_config) + " (--hid-config): is not a stored configuration (" +
                                    protocol::to_string(f) + ": " + protocol::rule_of(f) + ")" + not_a_store);
