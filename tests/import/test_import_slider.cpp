@@ -1,6 +1,8 @@
 // import_slider() on a tiny synthetic slider sequence: a texture sliding past
 // the camera by one step per frame, so with h = two frame spacings cam1's
 // image is exactly cam0's two frames later.
+#include <unistd.h>
+
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -160,6 +162,26 @@ TEST(ImportSlider, AFileAsTheRecordingFolderIsRefused) {
   } catch (const RecordingError& e) {
     STRCMP_CONTAINS("afile: is a file, not a folder to write the recording in", e.what());
   }
+}
+
+// As render's OUT (was: a folder named '-' made, the recording in it, exit 0).
+TEST(ImportSlider, ADashAsTheRecordingFolderIsRefused) {
+  fixture::TempDir tmp;
+  write_dataset(tmp.path() + "/data");
+  char was[4096];
+  CHECK(::getcwd(was, sizeof was) != nullptr);
+  CHECK(::chdir(tmp.path().c_str()) == 0);  // where a '-' would be made
+  std::string e = "(imported)";
+  try {
+    import_slider("data", "-");
+  } catch (const std::exception& x) {
+    e = x.what();
+  }
+  CHECK(::chdir(was) == 0);
+  STRCMP_EQUAL("- (OUT_REC): '-' stands for standard output, where no recording is written: give a folder name (./- "
+               "for a folder of that name)",
+               e.c_str());
+  CHECK(!std::filesystem::exists(tmp.path() + "/-"));
 }
 
 // A dangling link as OUT_REC, or as OUT_REC/mav0, was taken for nothing there

@@ -219,6 +219,9 @@ ImportSliderSummary import_slider(const std::string& data_dir, const std::string
                                   const ImportSliderOptions& options) {
   if (!(options.baseline > 0) || !std::isfinite(options.baseline))
     throw std::invalid_argument("the baseline must be a positive number of metres");
+  // '-' made a folder named '-' (a recording is a folder: it cannot go to
+  // standard output), refused as render refuses it.
+  if (out_rec == "-") throw std::runtime_error("- (OUT_REC): " + why_dash_is_not_an_output("recording", "folder"));
   const SliderDataset d = read_slider_dataset(data_dir);
   const std::string gt_file = data_dir + "/groundtruth.txt";
   if (!(d.poses.back().p[0] > d.poses.front().p[0])) throw not_along_plus_x(d.poses, gt_file);
