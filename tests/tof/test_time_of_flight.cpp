@@ -293,38 +293,63 @@ TEST(TimeOfFlight, AStartIsTakenUpWhileTheFusedSpeedLags) {
 // The tracker on its own, both engines: four kernels that see a scene of
 // incommensurate waves along the path (cam1 h ahead of cam0), at 0.7 m/s,
 // with both hints wrong at 0.25 m/s (a failed differential holding the fused
-// V there: no candidate agrees with them). A track is taken up unguided once
-// none has held for kTofLostTime, after kTofLostAcquireFrames consistent
-// frames, and kept; never before that time. Without the rule no track at all.
+// V there: no candidate agrees with them). A history in which no track has
+// held yet is searched unguided from the start (nothing has vouched for the
+// hints) and a track taken up after kTofLostAcquireFrames consistent frames;
+// one that held and was lost (cam1 sees another scene for 0.1 s while the
+// hints turn wrong) is taken up unguided only once none has held for
+// kTofLostTime, never before. Without the rule no track at all.
 TEST(TimeOfFlight, ALostTrackIsTakenUpWhereTheHintsAreWrong) {
   const double h = 0.08, v = 0.7, hint = 0.25, dt = 1 / kRate;
   const double wavelength[4] = {0.3, 0.4, 0.55, 0.7};
   auto scene = [&](int k, double s) { return 0.05 * std::sin(2 * M_PI * s / wavelength[k] + k); };
-  KernelTof tof;
-  double first[2] = {-1, -1}, worst[2] = {0, 0};
-  int after[2] = {0, 0}, with[2] = {0, 0};
-  for (int i = 0; i < 2 * kRate; ++i) {
-    const double t = i * dt, x0 = v * t;
-    const auto got = tof.step(t, 0, h, 0.01, hint, [&](int c, int k, double* f, double* r) {
-      *f = scene(k, x0 + c * h);
-      *r = 0;
-    });
-    for (int e = 0; e < 2; ++e) {
-      if (first[e] < 0 && got[e] != 0) first[e] = t;
-      if (first[e] >= 0 && t > first[e]) {
-        ++after[e];
-        with[e] += got[e] != 0;
+  // lost_at < 0: hints wrong throughout; else right until lost_at, cam1 on another scene for 0.1 s from then.
+  struct Run {
+    double first[2] = {-1, -1}, last_hold[2] = {-1, -1}, retake[2] = {-1, -1}, worst[2] = {0, 0};
+    int after[2] = {0, 0}, with[2] = {0, 0};
+  };
+  auto run = [&](double lost_at) {
+    KernelTof tof;
+    Run r;
+    for (int i = 0; i < 3 * kRate; ++i) {
+      const double t = i * dt, x0 = v * t;
+      const bool hints_right = lost_at >= 0 && t < lost_at;
+      const bool other = lost_at >= 0 && t >= lost_at && t < lost_at + 0.1;
+      const auto got = tof.step(t, 0, h, 0.01, hints_right ? v : hint, [&](int c, int k, double* f, double* rr) {
+        *f = scene(k, x0 + c * h + (other && c == 1 ? 0.37 : 0));
+        *rr = 0;
+      });
+      for (int e = 0; e < 2; ++e) {
+        if (r.first[e] < 0 && got[e] != 0) r.first[e] = t;
+        if (lost_at >= 0 && got[e] != 0) {
+          if (r.last_hold[e] >= 0 && r.retake[e] < 0 && t - r.last_hold[e] > 2 * dt) r.retake[e] = t;
+          if (r.retake[e] < 0) r.last_hold[e] = t;
+        }
+        if (r.first[e] >= 0 && t > r.first[e]) {
+          ++r.after[e];
+          r.with[e] += got[e] != 0;
+        }
+        if (got[e] != 0) r.worst[e] = std::max(r.worst[e], std::fabs(got[e] / v - 1));
       }
-      if (got[e] != 0) worst[e] = std::max(worst[e], std::fabs(got[e] / v - 1));
     }
-  }
+    return r;
+  };
+  const Run fresh = run(-1), lost = run(0.6);
+  // The first frame whose trail can stand where the lead stood (tau = h / v).
+  const double reachable = std::ceil(h / v / dt) * dt;
   for (int e = 0; e < 2; ++e) {
-    std::printf("\n  hints %.2f m/s at %.1f m/s, %s: a track from %.3f s, then on %d of %d frames, worst |h/tau / V - 1| %.4f",
-                hint, v, e == 0 ? "fixed" : "float", first[e], with[e], after[e], worst[e]);
-    CHECK(first[e] >= params::kTofLostTime);
-    CHECK(first[e] < params::kTofLostTime + 0.2);
-    CHECK(with[e] > 0.95 * after[e]);
-    CHECK(worst[e] < 0.02);
+    std::printf("\n  hints %.2f m/s at %.1f m/s, %s: a track from %.3f s (reachable from %.3f s), then on %d of %d "
+                "frames, worst |h/tau / V - 1| %.4f; held until %.3f s, lost, taken up again at %.3f s",
+                hint, v, e == 0 ? "fixed" : "float", fresh.first[e], reachable, fresh.with[e], fresh.after[e],
+                fresh.worst[e], lost.last_hold[e], lost.retake[e]);
+    CHECK(fresh.first[e] >= reachable + (params::kTofLostAcquireFrames - 1) * dt - 1e-9);
+    CHECK(fresh.first[e] < reachable + 0.2);
+    CHECK(fresh.with[e] > 0.95 * fresh.after[e]);
+    CHECK(fresh.worst[e] < 0.02);
+    CHECK(lost.last_hold[e] > 0.6);
+    CHECK(lost.retake[e] - lost.last_hold[e] >= params::kTofLostTime);
+    CHECK(lost.retake[e] - lost.last_hold[e] < params::kTofLostTime + 0.2);
+    CHECK(lost.worst[e] < 0.02);
   }
 }
 
@@ -1345,30 +1370,38 @@ TEST(TimeOfFlight, NoTrackAgainstTheImagesDirection) {
 // reads about -2 V (so did the time of flight before it was held to the
 // images' direction). Where V runs against the direction the images state,
 // the frame says so (kStatusAgainstImages); a plain wall never raises it.
+// At 0.6-0.9 m/s the time of flight, acquired in the images' direction where
+// the hints run against it, sets V right; at 0.10-0.115 m/s (tau beyond
+// kTofMaxTau) the differential's -2 V stays, and is flagged.
 TEST(TimeOfFlight, AnOutputAgainstTheImagesIsFlagged) {
   test::SyntheticRig striped;
   striped.wall = 0.8;
   striped.texture = [](double X, double) { return 128 + 90 * std::sin(2 * M_PI * X / 0.12); };
   test::SyntheticRig plain;
   plain.wall = 1.5;
+  const std::function<double(double)> speeds[2] = {[](double t) { return 0.6 + 0.1 * t; },
+                                                   [](double t) { return 0.1 + 0.005 * t; }};
   for (auto kind : kEngines) {
-    int wrong = 0, wrong_flagged = 0, right_flagged = 0, plain_flagged = 0;
-    for (const Frame& f : drive(kind, striped, 3, [](double t) { return 0.6 + 0.1 * t; })) {
-      if (f.t < 0.5) continue;
-      const bool flagged = (f.e.status & kStatusAgainstImages) != 0;
-      if (f.e.v * f.v_true < 0 && std::fabs(f.e.v) > 0.1) {
-        ++wrong;
-        wrong_flagged += flagged;
-      } else {
-        right_flagged += flagged;
+    int wrong = 0, wrong_flagged = 0, right_flagged = 0, plain_flagged = 0, wrong_fast = 0;
+    for (int s = 0; s < 2; ++s) {
+      for (const Frame& f : drive(kind, striped, 3, speeds[s])) {
+        if (f.t < 0.5) continue;
+        const bool flagged = (f.e.status & kStatusAgainstImages) != 0;
+        if (f.e.v * f.v_true < 0 && std::fabs(f.e.v) > 0.1) {
+          ++wrong;
+          wrong_fast += s == 0;
+          wrong_flagged += flagged;
+        } else {
+          right_flagged += flagged;
+        }
       }
     }
-    for (const Frame& f : drive(kind, plain, 3, [](double t) { return 0.6 + 0.1 * t; }))
-      plain_flagged += (f.e.status & kStatusAgainstImages) != 0;
-    std::printf("\n  stripes of 12 cm, %s: V against the truth on %d frames after 0.5 s, %d of them flagged, %d flagged "
-                "otherwise; a plain wall flagged on %d",
-                host::engine_name(kind), wrong, wrong_flagged, right_flagged, plain_flagged);
+    for (const Frame& f : drive(kind, plain, 3, speeds[0])) plain_flagged += (f.e.status & kStatusAgainstImages) != 0;
+    std::printf("\n  stripes of 12 cm, %s: V against the truth on %d frames after 0.5 s (%d of them at 0.6-0.9 m/s), "
+                "%d of them flagged, %d flagged otherwise; a plain wall flagged on %d",
+                host::engine_name(kind), wrong, wrong_fast, wrong_flagged, right_flagged, plain_flagged);
     CHECK(wrong > 10);
+    CHECK(wrong_fast < 5);
     LONGS_EQUAL(wrong, wrong_flagged);
     LONGS_EQUAL(0, right_flagged);
     LONGS_EQUAL(0, plain_flagged);

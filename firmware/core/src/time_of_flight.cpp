@@ -70,6 +70,10 @@ bool against_images(int8_t direction, int64_t stau_ns, LengthQ24 h) {
   return direction != 0 && ((stau_ns > 0) == (h > 0)) != (direction > 0);
 }
 
+// A hint that runs against the images' direction of travel (direction: the
+// sign of V that the images state, 0 none).
+bool hint_against_images(int8_t direction, int64_t v_hint) { return direction != 0 && (v_hint > 0) != (direction > 0); }
+
 // A hint fast enough to guide the acquisition, in the direction in which
 // this camera trails: cam0 trails when the body moves along +h (h = x1 - x0:
 // +x when cam1 is ahead, -x when cam0 is).
@@ -364,6 +368,7 @@ TofResult TimeOfFlight::track(const TofTrackInput& in) {
   if (count_ < 3) {
     misses_ = 255;
     track_t_ns_ = at(0).t_ns;  // lost since the history began
+    held_once_ = false;
     return r;
   }
   const int64_t frame_ns = static_cast<int64_t>(at(0).t_ns - at(1).t_ns);
@@ -401,13 +406,19 @@ TofResult TimeOfFlight::track(const TofTrackInput& in) {
     // neither but is noisier), confirmed over several frames. Above
     // kTofAcquireMinSpeed only the hints' directions and the taus that agree
     // with them are searched (the agreement is checked exactly below); with
-    // no hint that fast, both directions, every usable tau.
+    // no hint that fast, both directions, every usable tau. A hint against
+    // the images' direction of travel guides nothing: with no other, the
+    // search is unguided and takes kTofLostAcquireFrames.
     const int64_t hints[2] = {in.v_fused, in.v_direct};
-    bool guided = false;
-    for (int64_t h : hints) guided = guided || abs64(h) > kAcquireMinSpeedQ16;
+    bool guided = false, contradicted = false;
+    for (int64_t h : hints) {
+      if (abs64(h) <= kAcquireMinSpeedQ16) continue;
+      if (hint_against_images(in.direction, h)) contradicted = true; else guided = true;
+    }
     const int64_t num = int64_t{in.baseline < 0 ? -in.baseline : in.baseline} * 1000000000;  // Q24 m ns
-    // Lost long (kTofLostTime): unguided as well where the hints agree with nothing.
-    const bool lost_long = at(0).t_ns - track_t_ns_ >= static_cast<uint64_t>(kLostNs);
+    // Lost long (kTofLostTime), or no track since the history began (nothing
+    // has vouched for the hints): unguided as well where they agree with nothing.
+    const bool lost_long = !held_once_ || at(0).t_ns - track_t_ns_ >= static_cast<uint64_t>(kLostNs);
     Candidate best{};
     bool any = false, unguided = false;
     for (int pass = 0; pass < 2 && !any; ++pass) {
@@ -436,7 +447,7 @@ TofResult TimeOfFlight::track(const TofTrackInput& in) {
           any = true;
         }
       }
-      unguided = pass == 1;
+      unguided = pass == 1 || (!g && contradicted);
     }
     if (any) {
       acquire_gap_ = 0;
@@ -462,6 +473,7 @@ TofResult TimeOfFlight::track(const TofTrackInput& in) {
   }
   track_ns_ = pick.stau_ns;
   track_t_ns_ = at(0).t_ns;
+  held_once_ = true;
   misses_ = 0;
   r.ok = true;
   r.direction = pick.stau_ns > 0 ? 1 : -1;

@@ -21,6 +21,9 @@ bool against_images(int direction, double stau_ns, double h) {
   return direction != 0 && ((stau_ns > 0) == (h > 0)) != (direction > 0);
 }
 
+// (the core's hint_against_images)
+bool hint_against_images(int direction, double v_hint) { return direction != 0 && (v_hint > 0) != (direction > 0); }
+
 // (the core's guiding)
 bool guiding(double v_hint, int trail, double h) {
   return std::fabs(v_hint) > kTofAcquireMinSpeed && (trail == 0) == ((v_hint > 0) == (h > 0));
@@ -208,6 +211,7 @@ FloatTofResult FloatTimeOfFlight::track(int direction, double baseline, double m
   if (ring_.size() < 3) {
     misses_ = 255;
     track_t_ns_ = at(0).t_ns;  // lost since the history began
+    held_once_ = false;
     return r;
   }
   const double frame_ns = static_cast<double>(at(0).t_ns - at(1).t_ns);
@@ -234,11 +238,14 @@ FloatTofResult FloatTimeOfFlight::track(int direction, double baseline, double m
     if (misses_ < 255) ++misses_;
     // (The core's comment: a new track agrees with the fused V or the direct value.)
     const double hints[2] = {v_fused, v_direct};
-    bool guided = false;
-    for (double h : hints) guided = guided || std::fabs(h) > kTofAcquireMinSpeed;
+    bool guided = false, contradicted = false;
+    for (double h : hints) {
+      if (std::fabs(h) <= kTofAcquireMinSpeed) continue;
+      if (hint_against_images(direction, h)) contradicted = true; else guided = true;
+    }
     const double num = std::fabs(baseline) * 1e9;
-    // Lost long: unguided as well where the hints agree with nothing (the core's comment).
-    const bool lost_long = at(0).t_ns - track_t_ns_ >= static_cast<uint64_t>(std::llround(kTofLostTime * 1e9));
+    // Lost long, or no track since the history began: unguided as well where the hints agree with nothing (the core's comment).
+    const bool lost_long = !held_once_ || at(0).t_ns - track_t_ns_ >= static_cast<uint64_t>(std::llround(kTofLostTime * 1e9));
     Candidate best;
     bool any = false, unguided = false;
     for (int pass = 0; pass < 2 && !any; ++pass) {
@@ -265,7 +272,7 @@ FloatTofResult FloatTimeOfFlight::track(int direction, double baseline, double m
           any = true;
         }
       }
-      unguided = pass == 1;
+      unguided = pass == 1 || (!g && contradicted);
     }
     if (any) {
       acquire_gap_ = 0;
@@ -291,6 +298,7 @@ FloatTofResult FloatTimeOfFlight::track(int direction, double baseline, double m
   }
   track_ns_ = pick.stau_ns;
   track_t_ns_ = at(0).t_ns;
+  held_once_ = true;
   misses_ = 0;
   r.ok = true;
   r.direction = pick.stau_ns > 0 ? 1 : -1;

@@ -106,7 +106,10 @@ constexpr double kTofMaxTau = 0.6;
 // for it but its own consistency). Where a failed differential holds the
 // fused V wrong, no candidate agrees with it, and the right track could
 // never be taken up again (near clutter at h = 12 cm: V 0.25 m/s for 2.5 s of
-// a 0.7 m/s pass, no time of flight).
+// a 0.7 m/s pass, no time of flight). A history in which no track has held
+// yet counts as lost long from its start (nothing has vouched for the hints);
+// a hint against the images' direction of travel guides nothing, and with no
+// other the search is unguided from the frame it is (docs/design.md, "Tracker").
 constexpr double kTofLostTime = 0.5;
 constexpr int kTofLostAcquireFrames = 6;
 

@@ -52,6 +52,7 @@ class FloatTimeOfFlight {
   int acquire_gap_ = 0;
   double acquire_ns_ = 0;
   uint64_t track_t_ns_ = 0;  // the newest frame's time when a track last held, or the history began
+  bool held_once_ = false;   // a track has held since the history began
 };
 
 }  // namespace lumavel::host
