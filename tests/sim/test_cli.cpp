@@ -1338,3 +1338,16 @@ TEST(Cli, RunWarnsOfCamerasWhoseFocalLengthsDiffer) {
   STRCMP_CONTAINS("rec/mav0/cam1/sensor.yaml:", o.err.c_str());
   STRCMP_CONTAINS("The estimates are not to be trusted\n", o.err.c_str());
 }
+
+// One gyro value out and back within a sample (30 rad/s in a quiet gyro: a
+// read glitch) is replaced by its neighbours' mean before the engines see
+// it, and run says so, even with -q, naming the line (gyro_glitch.hpp).
+TEST(Cli, RunSaysAGyroGlitchItRepaired) {
+  const std::string r = rec();
+  fixture::set_field(r + "/mav0/imu0/data.csv", 40, 3, "30");
+  const Outcome o = sim("run rec -q -o /dev/null");
+  LONGS_EQUAL(0, o.code);
+  STRCMP_CONTAINS("run: warning: 1 gyro value taken as a read glitch and replaced by its neighbours' mean (at "
+                  "rec/mav0/imu0/data.csv:40, w_RS_S_z 30 rad/s between ",
+                  o.err.c_str());
+}

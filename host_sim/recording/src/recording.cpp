@@ -7,6 +7,7 @@
 
 #include "lumavel/host/csv_table.hpp"
 #include "lumavel/host/groundtruth.hpp"
+#include "lumavel/host/gyro_glitch.hpp"
 #include "lumavel/host/image_io.hpp"
 #include "lumavel/host/path_check.hpp"
 #include "lumavel/host/recording_layout.hpp"
@@ -335,6 +336,9 @@ Recording load_recording(const std::string& dir_arg) {
 
   set_periods(rec);
   count_gaps(rec);
+  const GyroGlitches glitches = repair_gyro_glitches(rec.imu_samples, rec.imu_period_s);
+  rec.gyro_glitches = glitches.count;
+  if (glitches.count > 0) rec.gyro_glitch_text = format_gyro_glitches(glitches, shown_path(imu_csv));
   check_gyro_coverage(rec, imu_csv, c0.csv);
   if (!rec.groundtruth.empty()) check_groundtruth_coverage(rec, gt_csv, c0.csv);
   return rec;

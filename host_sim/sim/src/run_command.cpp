@@ -395,6 +395,7 @@ int run(const RunArgs& a) {
   }
   if (bar) bar->finish();
   // Said even with -q: a warning about the input, not a part of the summary.
+  if (rec.gyro_glitches > 0) std::fprintf(stderr, "run: warning: %s\n", rec.gyro_glitch_text.c_str());
   if (result.mirrored)
     std::fprintf(stderr, "run: warning: %s. The estimates are not to be trusted\n",
                  opposite_motion_text(result.motion_opposite, result.motion_same + result.motion_opposite, rec.root)

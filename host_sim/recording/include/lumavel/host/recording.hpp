@@ -59,6 +59,8 @@ struct Recording {
   double frame_period_s = 0;   // median cam0 interval (1 / rate_hz for one frame)
   double imu_period_s = 0;     // median imu interval
   GapReport gaps;
+  int gyro_glitches = 0;       // gyro values replaced as read glitches (gyro_glitch.hpp) ...
+  std::string gyro_glitch_text;  // ... and what the first was ("" for none)
 };
 
 // "0 frame gaps (about 0 pairs missing, longest 0.000 s), 0 gyro holes
