@@ -104,6 +104,51 @@ TEST(FileCamera, RefusesAWorkingSizeAboveTheSensor) {
   STRCMP_CONTAINS(": cannot bin the 40x30 sensor up to the working resolution 41x30", e.c_str());
 }
 
+// One camera repeating its frame (the same pixels again, a new file and
+// time, while the other camera moves on: a driver read it twice) would read
+// as that camera standing still; the pair is skipped as a dropped one and
+// counted. Both cameras repeating is a still scene: delivered; so are a
+// stuck camera's repeats after its first.
+TEST(FileCamera, AFrameOneCameraRepeatsIsSkipped) {
+  fixture::Options o;
+  const std::string rec = fixture::write_recording(dir.path() + "/rec", o);
+  auto frame_file = [&](const std::string& root, int cam, int f) {
+    return root + "/mav0/cam" + std::to_string(cam) + "/data/" + std::to_string(fixture::frame_time(o, f)) + ".png";
+  };
+  fixture::write_text(frame_file(rec, 1, 5), fixture::read_text(frame_file(rec, 1, 4)));
+  const Recording r = load_recording(rec);
+  FileStereoCamera cam(r, 40, 30);
+  std::vector<uint8_t> a(1200), b(1200);
+  lumavel::hal::StereoImage img{0, {a.data(), b.data()}, 0, 0};
+  std::vector<uint64_t> seen;
+  while (cam.capture(img) == CaptureStatus::kOk) seen.push_back(img.t_ns);
+  LONGS_EQUAL(o.frames - 1, seen.size());
+  for (uint64_t t : seen) CHECK(t != fixture::frame_time(o, 5));
+  LONGS_EQUAL(1, cam.frames_repeated(1));
+  LONGS_EQUAL(5, cam.first_repeated(1));
+  LONGS_EQUAL(0, cam.frames_repeated(0));
+
+  // A camera stuck on one frame: only the first repeat is skipped, the rest
+  // are delivered (motion_direction.hpp's still camera says what they are).
+  const std::string stuck = fixture::write_recording(dir.path() + "/stuck", o);
+  for (int f = 5; f < 10; ++f) fixture::write_text(frame_file(stuck, 1, f), fixture::read_text(frame_file(stuck, 1, 4)));
+  const Recording rk = load_recording(stuck);
+  FileStereoCamera frozen(rk, 40, 30);
+  size_t got = 0;
+  while (frozen.capture(img) == CaptureStatus::kOk) ++got;
+  LONGS_EQUAL(o.frames - 1, got);
+  LONGS_EQUAL(1, frozen.frames_repeated(1));
+
+  const std::string still = fixture::write_recording(dir.path() + "/still", o);
+  for (int c = 0; c < 2; ++c) fixture::write_text(frame_file(still, c, 5), fixture::read_text(frame_file(still, c, 4)));
+  const Recording rs = load_recording(still);
+  FileStereoCamera both(rs, 40, 30);
+  size_t delivered = 0;
+  while (both.capture(img) == CaptureStatus::kOk) ++delivered;
+  LONGS_EQUAL(o.frames, delivered);
+  LONGS_EQUAL(0, both.frames_repeated(0) + both.frames_repeated(1));
+}
+
 TEST_GROUP(FileGyro) {};
 
 TEST(FileGyro, RateToQ24RoundsAndSaturates) {

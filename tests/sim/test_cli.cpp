@@ -1351,3 +1351,21 @@ TEST(Cli, RunSaysAGyroGlitchItRepaired) {
                   "rec/mav0/imu0/data.csv:40, w_RS_S_z 30 rad/s between ",
                   o.err.c_str());
 }
+
+// cam1 repeating its frame 4 as frame 5 (a new file, the same pixels) while
+// cam0 moves on: the pair is skipped as dropped, and run says so, naming the
+// file, even with -q (FileStereoCamera::frames_repeated).
+TEST(Cli, RunSaysAFrameOneCameraRepeated) {
+  const std::string r = rec();
+  const fixture::Options o;
+  auto frame = [&](int f) { return r + "/mav0/cam1/data/" + std::to_string(fixture::frame_time(o, f)) + ".png"; };
+  fixture::write_text(frame(5), fixture::read_text(frame(4)));
+  const Outcome out = sim("run rec -q -o " + dir.path() + "/est.csv");
+  LONGS_EQUAL(0, out.code);
+  STRCMP_CONTAINS(("run: warning: cam1 repeated the frame before on 1 frame pair, the first rec/mav0/cam1/data/" +
+                   std::to_string(fixture::frame_time(o, 5)) + ".png")
+                      .c_str(),
+                  out.err.c_str());
+  const std::string csv = fixture::read_text(dir.path() + "/est.csv");
+  CHECK(csv.find(std::to_string(fixture::frame_time(o, 5)) + ",") == std::string::npos);
+}

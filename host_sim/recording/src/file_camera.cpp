@@ -1,5 +1,6 @@
 #include "lumavel/host/file_camera.hpp"
 
+#include <algorithm>
 #include <cstring>
 
 #include "lumavel/core/binning.hpp"
@@ -10,6 +11,17 @@
 #include "lumavel/host/rig.hpp"
 
 namespace lumavel::host {
+namespace {
+
+// FNV-1a over a frame's pixels as read: a frame that repeats the one before
+// hashes alike whatever the clip match or the binning then make of it.
+uint64_t pixel_hash(const std::vector<uint8_t>& px) {
+  uint64_t h = 1469598103934665603ull;
+  for (uint8_t v : px) h = (h ^ v) * 1099511628211ull;
+  return h;
+}
+
+}  // namespace
 
 FileStereoCamera::FileStereoCamera(const Recording& rec, int width, int height, int threads, int lookahead,
                                    FrameProcessing processing)
@@ -78,6 +90,8 @@ void FileStereoCamera::decode_into(size_t index, Slot& slot) const {
       throw RecordingError(frame + shown_path(f.path[c]) + ": image is " + std::to_string(img[c].width) + "x" +
                            std::to_string(img[c].height) + ", sensor.yaml says resolution [" +
                            std::to_string(s.width) + ", " + std::to_string(s.height) + "]");
+    slot.raw_hash[c] = pixel_hash(img[c].px);
+    slot.plain[c] = std::all_of(img[c].px.begin(), img[c].px.end(), [&](uint8_t v) { return v == img[c].px.front(); });
     view[c] = ImageView{img[c].px.data(), static_cast<uint16_t>(img[c].width), static_cast<uint16_t>(img[c].height),
                         static_cast<uint32_t>(img[c].width)};
   }
@@ -138,34 +152,52 @@ void FileStereoCamera::worker() {
 }
 
 hal::CaptureStatus FileStereoCamera::capture(hal::StereoImage& out) {
-  if (!error_.empty()) return hal::CaptureStatus::kError;
-  if (next_out_ >= rec_.frames.size()) return hal::CaptureStatus::kEnd;
-  Slot& slot = slots_[next_out_ % slots_.size()];
-  {
-    std::unique_lock<std::mutex> lock(mu_);
-    slot_ready_.wait(lock, [&] { return slot.ready && slot.index == next_out_; });
-    if (!slot.error.empty()) {
-      error_ = slot.error;
-      stop_ = true;  // the run ends here; let the workers go
-      lock.unlock();
-      slot_free_.notify_all();
-      return hal::CaptureStatus::kError;
-    }
-  }
-  // Workers never touch this slot until next_out_ moves past it.
   const size_t n = static_cast<size_t>(width_) * height_;
-  std::memcpy(out.cam[0], slot.px[0].data(), n);
-  std::memcpy(out.cam[1], slot.px[1].data(), n);
-  out.t_ns = rec_.frames[next_out_].t_ns;
-  out.width = width_;
-  out.height = height_;
-  {
-    std::lock_guard<std::mutex> lock(mu_);
-    slot.ready = false;
-    ++next_out_;
+  for (;;) {
+    if (!error_.empty()) return hal::CaptureStatus::kError;
+    if (next_out_ >= rec_.frames.size()) return hal::CaptureStatus::kEnd;
+    Slot& slot = slots_[next_out_ % slots_.size()];
+    {
+      std::unique_lock<std::mutex> lock(mu_);
+      slot_ready_.wait(lock, [&] { return slot.ready && slot.index == next_out_; });
+      if (!slot.error.empty()) {
+        error_ = slot.error;
+        stop_ = true;  // the run ends here; let the workers go
+        lock.unlock();
+        slot_free_.notify_all();
+        return hal::CaptureStatus::kError;
+      }
+    }
+    // Workers never touch this slot until next_out_ moves past it. One camera's
+    // frame, as read, the same pixels as the one it delivered last, while the
+    // other's moved on: that camera repeated a frame (a driver read it twice).
+    // The pair is skipped, as a dropped one (both alike: a still scene). Not
+    // a plain frame (a covered lens), nor a second repeat in a row (a camera
+    // that gives one frame on and on is motion_direction.hpp's still camera).
+    bool same[2] = {false, false};
+    if (next_out_ > 0)
+      for (int c = 0; c < 2; ++c) same[c] = slot.raw_hash[c] == prev_hash_[c];
+    for (int c = 0; c < 2; ++c) repeat_run_[c] = same[c] ? repeat_run_[c] + 1 : 0;
+    const int c_rep = same[0] ? 0 : 1;
+    const bool repeated = same[0] != same[1] && !slot.plain[c_rep] && repeat_run_[c_rep] == 1;
+    if (repeated) {
+      if (repeats_[c_rep]++ == 0) first_repeat_[c_rep] = next_out_;
+    } else {
+      std::memcpy(out.cam[0], slot.px[0].data(), n);
+      std::memcpy(out.cam[1], slot.px[1].data(), n);
+      for (int c = 0; c < 2; ++c) prev_hash_[c] = slot.raw_hash[c];
+      out.t_ns = rec_.frames[next_out_].t_ns;
+      out.width = width_;
+      out.height = height_;
+    }
+    {
+      std::lock_guard<std::mutex> lock(mu_);
+      slot.ready = false;
+      ++next_out_;
+    }
+    slot_free_.notify_all();
+    if (!repeated) return hal::CaptureStatus::kOk;
   }
-  slot_free_.notify_all();
-  return hal::CaptureStatus::kOk;
 }
 
 }  // namespace lumavel::host

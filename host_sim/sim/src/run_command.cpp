@@ -396,6 +396,16 @@ int run(const RunArgs& a) {
   if (bar) bar->finish();
   // Said even with -q: a warning about the input, not a part of the summary.
   if (rec.gyro_glitches > 0) std::fprintf(stderr, "run: warning: %s\n", rec.gyro_glitch_text.c_str());
+  for (int c = 0; c < 2; ++c)
+    if (result.repeated[c] > 0) {
+      const FramePairEntry& f = rec.frames[result.first_repeated[c]];
+      std::fprintf(stderr,
+                   "run: warning: cam%d repeated the frame before on %zu frame pair%s, the first %s (t = %llu ns), "
+                   "while cam%d's moved on: %s skipped as dropped (a repeated frame reads as that camera standing "
+                   "still)\n",
+                   c, result.repeated[c], result.repeated[c] == 1 ? "" : "s", shown_path(f.path[c]).c_str(),
+                   static_cast<unsigned long long>(f.t_ns), 1 - c, result.repeated[c] == 1 ? "it was" : "they were");
+    }
   if (result.mirrored)
     std::fprintf(stderr, "run: warning: %s. The estimates are not to be trusted\n",
                  opposite_motion_text(result.motion_opposite, result.motion_same + result.motion_opposite, rec.root)

@@ -191,6 +191,8 @@ RunResult run_recording(const Recording& rec, const EstimatorSettings& settings,
     for (int c = 0; c < 2; ++c) {
       result.clip_clamped[c] = binned->frames_clamped(c);
       result.clip_lowest[c] = binned->lowest_ceiling(c);
+      result.repeated[c] = binned->frames_repeated(c);
+      result.first_repeated[c] = binned->first_repeated(c);
     }
   result.step_s = std::chrono::duration<double>(in_engine).count();
   result.motion_same = motion.same();

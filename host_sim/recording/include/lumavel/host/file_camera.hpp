@@ -4,7 +4,10 @@
 // distortion has every frame resampled onto the pinhole of its intrinsics
 // first (lens_remap.hpp): the working frames are then pinhole frames. With
 // `match_clipping`, the camera that clips less is clamped where the other
-// clips (clip_match.hpp), on the sensor's pixels, before both. Frames are
+// clips (clip_match.hpp), on the sensor's pixels, before both. A pair in
+// which one camera repeats the frame it gave before (the same pixels as read)
+// while the other's moved on is skipped as a dropped one (not a plain frame,
+// nor a repeat after the first in a row: a stuck camera). Frames are
 // decoded ahead on a small thread pool so a run is limited by the estimator,
 // not by PNG decoding.
 #pragma once
@@ -53,12 +56,20 @@ class FileStereoCamera : public hal::StereoCamera {
   // (255 when none was).
   size_t frames_clamped(int c) const { return clamped_[c].load(); }
   int lowest_ceiling(int c) const { return lowest_ceiling_[c].load(); }
+  // Pairs skipped because camera c's working frame repeated the one it had
+  // delivered last while the other camera's moved on, and the first one's
+  // index in rec.frames (capture(): a repeated frame reads as that camera
+  // standing still, i.e. as motion of the other).
+  size_t frames_repeated(int c) const { return repeats_[c]; }
+  size_t first_repeated(int c) const { return first_repeat_[c]; }
   size_t frames_delivered() const { return next_out_; }
   size_t frame_count() const { return rec_.frames.size(); }
 
  private:
   struct Slot {
     std::vector<uint8_t> px[2];
+    uint64_t raw_hash[2] = {0, 0};  // of each camera's frame as read, before any processing
+    bool plain[2] = {false, false};  // every pixel of it alike
     size_t index = 0;
     bool ready = false;
     std::string error;
@@ -78,6 +89,9 @@ class FileStereoCamera : public hal::StereoCamera {
   std::condition_variable slot_ready_;  // a worker filled a slot
   std::condition_variable slot_free_;   // the consumer released a slot
   size_t next_job_ = 0;                 // next frame index a worker takes
+  uint64_t prev_hash_[2] = {0, 0};      // of the frames delivered last, as read (the consumer's)
+  size_t repeat_run_[2] = {0, 0};       // frames in a row camera c gave the same pixels as the one delivered last
+  size_t repeats_[2] = {0, 0}, first_repeat_[2] = {0, 0};
   size_t next_out_ = 0;                 // next frame index capture() returns
   bool stop_ = false;
   std::string error_;

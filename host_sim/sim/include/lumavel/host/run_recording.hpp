@@ -62,6 +62,8 @@ struct RunResult {
   double hfov_deg = 0;            // cam0's horizontal field of view
   size_t clip_clamped[2] = {};    // frames of each camera clamped at a clip ceiling (RunOptions::clip_match)
   int clip_lowest[2] = {255, 255};  // the lowest ceiling of each camera
+  size_t repeated[2] = {};        // pairs skipped: camera c repeated its last frame (FileStereoCamera::frames_repeated) ...
+  size_t first_repeated[2] = {};  // ... the first one's index in rec.frames
   // Frames where both cameras' images clearly moved, the same way or
   // opposite ways (motion_direction.hpp); mirrored: one image is mirrored.
   size_t motion_same = 0, motion_opposite = 0;
