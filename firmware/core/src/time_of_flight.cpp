@@ -367,8 +367,7 @@ TofResult TimeOfFlight::track(const TofTrackInput& in) {
   TofResult r{};
   if (count_ < 3) {
     misses_ = 255;
-    track_t_ns_ = at(0).t_ns;  // lost since the history began
-    held_once_ = false;
+    held_once_ = false;  // lost since the history began (lost_long below)
     return r;
   }
   const int64_t frame_ns = static_cast<int64_t>(at(0).t_ns - at(1).t_ns);

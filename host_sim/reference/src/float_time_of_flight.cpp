@@ -210,8 +210,7 @@ FloatTofResult FloatTimeOfFlight::track(int direction, double baseline, double m
   FloatTofResult r;
   if (ring_.size() < 3) {
     misses_ = 255;
-    track_t_ns_ = at(0).t_ns;  // lost since the history began
-    held_once_ = false;
+    held_once_ = false;  // lost since the history began (the core's)
     return r;
   }
   const double frame_ns = static_cast<double>(at(0).t_ns - at(1).t_ns);

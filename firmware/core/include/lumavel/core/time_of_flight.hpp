@@ -110,7 +110,7 @@ class TimeOfFlight {
   uint8_t acquire_count_ = 0;
   uint8_t acquire_gap_ = 0;     // frames in a row without a candidate since the run's last
   int64_t acquire_ns_ = 0;
-  uint64_t track_t_ns_ = 0;     // the newest frame's time when a track last held, or the history began
+  uint64_t track_t_ns_ = 0;     // the newest frame's time when a track last held (read only once held_once_)
   bool held_once_ = false;       // a track has held since the history began
 };
 

@@ -51,7 +51,7 @@ class FloatTimeOfFlight {
   int acquire_count_ = 0;
   int acquire_gap_ = 0;
   double acquire_ns_ = 0;
-  uint64_t track_t_ns_ = 0;  // the newest frame's time when a track last held, or the history began
+  uint64_t track_t_ns_ = 0;  // the newest frame's time when a track last held (read only once held_once_)
   bool held_once_ = false;   // a track has held since the history began
 };
 
