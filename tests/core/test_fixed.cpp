@@ -94,3 +94,29 @@ TEST(Fixed, Udivmod64By32IsTheBuiltInDivision) {
     check((uint64_t{d} << 32) - 1 - (a & 0xFFFF), d);  // quotients near 2^32
   }
 }
+
+// div_q_short (a root below 2^16 as denominator, half_phase's 1/w) against
+// div_q over its documented range: 0 < den < 2^16, 0 <= q <= 30, every int32
+// numerator length and sign, and the edges.
+TEST(Fixed, DivQShortIsDivQOnItsRange) {
+  uint64_t x = 0x2545F4914F6CDD1Du;
+  const auto next = [&x] {
+    x ^= x << 13;
+    x ^= x >> 7;
+    x ^= x << 17;
+    return x;
+  };
+  const int32_t edges[] = {0, 1, -1, fx::kInt32Max, fx::kInt32Min + 1, 1 << 20, -(1 << 20)};
+  for (int32_t num : edges)
+    for (uint32_t den : {1u, 2u, 3u, 16384u, 32767u, 65535u})
+      for (int q = 0; q <= 30; ++q)
+        LONGS_EQUAL(fx::div_q(num, den, q), fx::div_q_short(num, den, q));
+  for (int i = 0; i < 200000; ++i) {
+    const uint64_t a = next(), b = next();
+    const int32_t num = static_cast<int32_t>(static_cast<uint32_t>(a) >> (a >> 59));
+    const uint32_t den = 1 + static_cast<uint32_t>((b & 0xFFFFu) >> ((b >> 16) & 15)) % 65535u;
+    const int q = static_cast<int>((b >> 24) % 31);
+    if (fx::div_q(num, den, q) != fx::div_q_short(num, den, q))
+      FAIL_TEST(("div_q_short(" + std::to_string(num) + ", " + std::to_string(den) + ", " + std::to_string(q) + ")").c_str());
+  }
+}

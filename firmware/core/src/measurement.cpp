@@ -117,27 +117,6 @@ constexpr int64_t kSigmaW2MaxQ24 = fx::q_of(params::kSigmaW2Max, 24);
 static_assert(kSigmaW2MinQ24 > 0 && kSigmaW2MaxQ24 < (int64_t{1} << 30), "the root below needs u in (0, 2^30)");
 static_assert(kSigmaW2MinQ24 >= (int64_t{1} << 20), "the root's division below needs s2 <= 4 (div_q_short: q <= 30)");
 
-// div_q(num, den, q) (no flag) for 0 < den < 2^16 and 0 <= q <= 30, where
-// |num| 2^q + den / 2 < 2^62 makes it div_q's one rounded division: here by
-// long division in 16-bit digits, each one 32-bit division (a remainder
-// below den < 2^16 keeps each partial dividend in 32 bits), not a 64-bit
-// division and div_q's general case (the same integers).
-int32_t div_q_short(int32_t num, uint32_t den, int q) {
-  const bool negative = num < 0;
-  const uint32_t mag = negative ? 0u - static_cast<uint32_t>(num) : static_cast<uint32_t>(num);
-  const uint64_t n = (uint64_t{mag} << q) + den / 2;
-  const uint32_t hi = static_cast<uint32_t>(n >> 32), lo = static_cast<uint32_t>(n);
-  const uint32_t q2 = hi / den;
-  uint32_t r = hi - q2 * den;
-  const uint32_t mid = (r << 16) | (lo >> 16);
-  const uint32_t q1 = mid / den;
-  r = mid - q1 * den;
-  const uint32_t q0 = ((r << 16) | (lo & 0xFFFFu)) / den;
-  const uint64_t quot = (uint64_t{q2} << 32) + (uint64_t{q1} << 16) + q0;
-  if (quot >= (uint64_t{1} << 31)) return negative ? fx::kInt32Min : fx::kInt32Max;
-  return negative ? -static_cast<int32_t>(quot) : static_cast<int32_t>(quot);
-}
-
 // Half the phase difference between the cameras of kernel k (see measurement.hpp).
 // (sigma w)^2 is clamped to [kSigmaW2Min, kSigmaW2Max] (estimator_params.hpp):
 // continuous, so that noise near w^2 = 0 cannot switch the correction.
@@ -164,7 +143,7 @@ AngleQ28 half_phase(const CameraOutputs& c0, const CameraOutputs& c1, ValueQ28 d
     ++s2;
   }
   const uint32_t root = fx::isqrt32(static_cast<uint32_t>(u));  // sqrt(u) * 2^(12 + s2), in [2^14, 2^15)
-  const int64_t inv_w = div_q_short(sigma, root, 8 + s2);         // Q24 rad
+  const int64_t inv_w = fx::div_q_short(sigma, root, 8 + s2);         // Q24 rad
   const int64_t a0 = clamp30(int64_t{c0.f[k]} - dc0), a1 = clamp30(int64_t{c1.f[k]} - dc1);
   const int64_t b0 = clamp30(-fx::shr_round(r0 * inv_w, 16)), b1 = clamp30(-fx::shr_round(r1 * inv_w, 16));
   int64_t re = a1 * a0 + b1 * b0, im = b1 * a0 - a1 * b0;  // Q56, |.| < 2^61

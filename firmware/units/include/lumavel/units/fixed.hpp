@@ -175,6 +175,27 @@ inline uint64_t udiv_trunc(uint64_t a, uint64_t b, uint64_t* r = nullptr) {
 // denominator saturates toward the sign of num and sets *saturated.
 int32_t div_q(int64_t num, int64_t den, int q, bool* saturated = nullptr);
 
+// div_q(num, den, q) (no flag) for 0 < den < 2^16 and 0 <= q <= 30, where
+// |num| 2^q + den / 2 < 2^62 makes it div_q's one rounded division: here by
+// long division in 16-bit digits, each one 32-bit division (a remainder
+// below den < 2^16 keeps each partial dividend in 32 bits), not a 64-bit
+// division and div_q's general case (the same integers).
+inline int32_t div_q_short(int32_t num, uint32_t den, int q) {
+  const bool negative = num < 0;
+  const uint32_t mag = negative ? 0u - static_cast<uint32_t>(num) : static_cast<uint32_t>(num);
+  const uint64_t n = (uint64_t{mag} << q) + den / 2;
+  const uint32_t hi = static_cast<uint32_t>(n >> 32), lo = static_cast<uint32_t>(n);
+  const uint32_t q2 = hi / den;
+  uint32_t r = hi - q2 * den;
+  const uint32_t mid = (r << 16) | (lo >> 16);
+  const uint32_t q1 = mid / den;
+  r = mid - q1 * den;
+  const uint32_t q0 = ((r << 16) | (lo & 0xFFFFu)) / den;
+  const uint64_t quot = (uint64_t{q2} << 32) + (uint64_t{q1} << 16) + q0;
+  if (quot >= (uint64_t{1} << 31)) return negative ? kInt32Min : kInt32Max;
+  return negative ? -static_cast<int32_t>(quot) : static_cast<int32_t>(quot);
+}
+
 // num / den in Q16 for 0 <= num <= den and den > 0 (a fraction), rounded,
 // with one 32-bit division instead of div_q's 64-bit ones: both are shifted
 // right until den < 2^16, which keeps 15-16 significant bits of den. Error
