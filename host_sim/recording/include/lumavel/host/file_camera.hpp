@@ -56,7 +56,7 @@ class FileStereoCamera : public hal::StereoCamera {
   // (255 when none was).
   size_t frames_clamped(int c) const { return clamped_[c].load(); }
   int lowest_ceiling(int c) const { return lowest_ceiling_[c].load(); }
-  // Pairs skipped because camera c's working frame repeated the one it had
+  // Pairs skipped because camera c's frame, as read, repeated the one it had
   // delivered last while the other camera's moved on, and the first one's
   // index in rec.frames (capture(): a repeated frame reads as that camera
   // standing still, i.e. as motion of the other).

@@ -1,7 +1,7 @@
 // A gyro sample that leaves both its neighbours and comes back within one
 // sample period is a read glitch (a bus error, a corrupted register), not a
 // turn: an out-and-back excursion of more than kGyroGlitchMinRadS (at 200 Hz,
-// 400 rad/s^2 each way) that stands kGyroGlitchScatters times out of the
+// 200 rad/s^2 each way) that stands kGyroGlitchScatters times out of the
 // sample-to-sample scatter around it. Vibration raises that scatter and is
 // left alone; a turn that starts or stops does not come back. Such a sample,
 // integrated, would turn the rig's heading by its excursion times a period
