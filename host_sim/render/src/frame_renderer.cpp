@@ -28,7 +28,7 @@ FrameRenderer::FrameRenderer(const Scenario& s, const Scene& scene)
     : s_(s),
       scene_(scene),
       rig_(s.camera),
-      traj_(s.trajectory),
+      traj_(s),
       period_ns_(static_cast<int64_t>(std::llround(1e9 / s.camera.rate_hz))) {
   for (int cam = 0; cam < 2; ++cam)
     response_[static_cast<size_t>(cam)] =

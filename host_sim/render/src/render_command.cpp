@@ -59,7 +59,7 @@ void check_before_render(const render::Scenario& s, const std::string& out) {
   const std::vector<bool> drop = render::dropped_frames(s, n);
   for (int i = 0; i < n; ++i)
     if (!drop[static_cast<size_t>(i)]) rec.frames.push_back({static_cast<uint64_t>(render::frame_stamp_ns(s, i)), {}});
-  const render::Trajectory trajectory(s.trajectory);
+  const render::Trajectory trajectory(s);
   rec.imu_samples = render::synthesize_imu(s, trajectory);
   // Their values too (was: a 100 m/s turn on a 1 mm radius, a 1000 m/s
   // pass taking the ground truth beyond 1e7 m, or gyro noise of 10

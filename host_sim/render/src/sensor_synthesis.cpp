@@ -7,6 +7,37 @@
 
 namespace lumavel::host::render {
 
+void body_rates(const BodyState& b, double w[3]) {
+  // Level (no vibration): the yaw rate alone, bit for bit as before tilts existed.
+  if (b.pitch == 0.0 && b.roll == 0.0 && b.pitch_rate == 0.0 && b.roll_rate == 0.0) {
+    w[0] = w[1] = 0;
+    w[2] = b.yaw_rate;
+    return;
+  }
+  // ZYX Euler rates (heading, pitch, roll) -> body-frame angular rate of
+  // R = yaw(heading) Ry(pitch) Rx(roll).
+  const double sp = std::sin(b.pitch), cp = std::cos(b.pitch), sr = std::sin(b.roll), cr = std::cos(b.roll);
+  w[0] = b.roll_rate - sp * b.yaw_rate;
+  w[1] = cr * b.pitch_rate + sr * cp * b.yaw_rate;
+  w[2] = -sr * b.pitch_rate + cr * cp * b.yaw_rate;
+}
+
+void specific_force(const BodyState& b, double f[3]) {
+  // In the level (yawed) frame: tangential, centripetal (towards the turn),
+  // and gravity's reaction plus the heave acceleration on z. The lever arm of
+  // the tilting is nil: the IMU sits at the body origin.
+  f[0] = b.accel;
+  f[1] = b.speed * b.yaw_rate;
+  f[2] = b.az == 0.0 ? kGravity : kGravity + b.az;
+  if (b.pitch == 0.0 && b.roll == 0.0) return;
+  // Into the tilted body frame: (Ry(pitch) Rx(roll))^T f.
+  const Eigen::Matrix3d tilt = (Eigen::AngleAxisd(b.pitch, Eigen::Vector3d::UnitY()) *
+                                Eigen::AngleAxisd(b.roll, Eigen::Vector3d::UnitX()))
+                                   .toRotationMatrix();
+  const Eigen::Vector3d fb = tilt.transpose() * Eigen::Vector3d(f[0], f[1], f[2]);
+  for (int k = 0; k < 3; ++k) f[k] = fb[k];
+}
+
 std::vector<ImuSample> synthesize_imu(const Scenario& s, const Trajectory& traj) {
   const ImuSpec& m = s.imu;
   const int64_t period = static_cast<int64_t>(std::llround(1e9 / m.rate_hz));
@@ -24,12 +55,20 @@ std::vector<ImuSample> synthesize_imu(const Scenario& s, const Trajectory& traj)
     const BodyState b = traj.at(t);
     ImuSample x;
     x.t_ns = static_cast<uint64_t>(s.start_ns + rel);
+    double w[3];
+    body_rates(b, w);
+    // The x and y rates are added only when the body tilts, so that a level
+    // body's noise-only samples keep their bits (0 + noise is the noise, but
+    // -0 would not survive it).
+    const bool tilted = w[0] != 0.0 || w[1] != 0.0;
     x.w[0] = gyro_sigma > 0 ? gyro_sigma * gyro_rng.gaussian() : 0.0;
     x.w[1] = gyro_sigma > 0 ? gyro_sigma * gyro_rng.gaussian() : 0.0;
-    x.w[2] = b.yaw_rate + m.gyro_bias_z + (gyro_sigma > 0 ? gyro_sigma * gyro_rng.gaussian() : 0.0);
-    x.a[0] = b.accel;
-    x.a[1] = b.speed * b.yaw_rate;  // centripetal, towards the turn
-    x.a[2] = kGravity;              // specific force of a level body
+    if (tilted) {
+      x.w[0] += w[0];
+      x.w[1] += w[1];
+    }
+    x.w[2] = w[2] + m.gyro_bias_z + (gyro_sigma > 0 ? gyro_sigma * gyro_rng.gaussian() : 0.0);
+    specific_force(b, x.a);
     if (accel_sigma > 0)
       for (double& a : x.a) a += accel_sigma * accel_rng.gaussian();
     out.push_back(x);
@@ -43,13 +82,25 @@ GroundTruthSample groundtruth_at(const Scenario& s, const BodyState& b, uint64_t
   g.p[0] = b.x;
   g.p[1] = b.y;
   g.p[2] = b.z;
-  g.q[0] = std::cos(0.5 * b.heading);
-  g.q[1] = 0;
-  g.q[2] = 0;
-  g.q[3] = std::sin(0.5 * b.heading);
+  if (b.pitch == 0.0 && b.roll == 0.0) {
+    g.q[0] = std::cos(0.5 * b.heading);
+    g.q[1] = 0;
+    g.q[2] = 0;
+    g.q[3] = std::sin(0.5 * b.heading);
+  } else {
+    // q = q_z(heading) q_y(pitch) q_x(roll), the same R as body_attitude.
+    const double cy = std::cos(0.5 * b.heading), sy = std::sin(0.5 * b.heading);
+    const double cp = std::cos(0.5 * b.pitch), sp = std::sin(0.5 * b.pitch);
+    const double cr = std::cos(0.5 * b.roll), sr = std::sin(0.5 * b.roll);
+    g.q[0] = cr * cp * cy + sr * sp * sy;
+    g.q[1] = sr * cp * cy - cr * sp * sy;
+    g.q[2] = cr * sp * cy + sr * cp * sy;
+    g.q[3] = cr * cp * sy - sr * sp * cy;
+  }
+  // The path's velocity plus the heave's: the body origin's, in the world.
   g.v[0] = b.speed * std::cos(b.heading);
   g.v[1] = b.speed * std::sin(b.heading);
-  g.v[2] = 0;
+  g.v[2] = b.vz;
   g.bw[2] = s.imu.gyro_bias_z;
   return g;
 }

@@ -33,7 +33,10 @@ void profile(const SegmentSpec& g, double dt, double& dist, double& v, double& a
 }
 }  // namespace
 
-Trajectory::Trajectory(const TrajectorySpec& spec) : segs_(spec.segments), z_(spec.z) {
+Trajectory::Trajectory(const Scenario& s) : Trajectory(s.trajectory, Vibration(s.vibration, s.seed)) {}
+
+Trajectory::Trajectory(const TrajectorySpec& spec, Vibration vibration)
+    : segs_(spec.segments), z_(spec.z), vib_(vibration) {
   Start s{0, spec.x0, spec.y0, spec.heading0_deg * kPi / 180.0};
   for (const auto& g : segs_) {
     starts_.push_back(s);
@@ -68,7 +71,18 @@ BodyState Trajectory::advance(const SegmentSpec& g, const Start& s, double dt, d
 BodyState Trajectory::at(double t) const {
   size_t i = 0;
   while (i + 1 < starts_.size() && t >= starts_[i + 1].t) ++i;
-  return advance(segs_[i], starts_[i], t - starts_[i].t, z_);
+  BodyState b = advance(segs_[i], starts_[i], t - starts_[i].t, z_);
+  // Untouched without vibration: a level body's states stay bit for bit.
+  if (vib_.none()) return b;
+  const VibrationState v = vib_.at(t);
+  b.z += v.heave;
+  b.vz = v.heave_rate;
+  b.az = v.heave_accel;
+  b.pitch = v.pitch;
+  b.roll = v.roll;
+  b.pitch_rate = v.pitch_rate;
+  b.roll_rate = v.roll_rate;
+  return b;
 }
 
 }  // namespace lumavel::host::render

@@ -16,7 +16,8 @@ inline uint64_t splitmix64(uint64_t& x) {
 }
 
 // Streams: 1 = pixel noise (a = frame, b = camera), 2 = gyro, 3 = drops, 4 = accel,
-// 5 = fixed patterns (a = camera, b = pattern), 6 = auto-exposure (a = camera).
+// 5 = fixed patterns (a = camera, b = pattern), 6 = auto-exposure (a = camera),
+// 7 = vibration (a = axis: pitch, roll, heave).
 inline uint64_t stream_seed(uint64_t seed, uint64_t stream, uint64_t a = 0, uint64_t b = 0) {
   uint64_t x = seed;
   uint64_t h = splitmix64(x) ^ (stream * 0xD1B54A32D192ED03ULL);

@@ -121,6 +121,25 @@ struct ImuSpec {
   double accel_noise_density = 0;    // m/s^2/sqrt(Hz)
 };
 
+// Rig vibration: the body pitches, rolls and heaves about its planar path,
+// each axis a sum of sinusoids over [freq_lo_hz, freq_hi_hz] with phases
+// drawn from the scenario seed (vibration.hpp). Amplitudes are rms; all zero
+// (the default, no 'vibration:' block) leaves the body level.
+struct VibrationSpec {
+  double pitch_rms_deg = 0;  // about body y (left): positive = nose down
+  double roll_rms_deg = 0;   // about body x (forward): positive = right side down
+  double heave_rms_m = 0;    // along world z
+  double freq_lo_hz = 2, freq_hi_hz = 15;
+  bool none() const { return pitch_rms_deg == 0.0 && roll_rms_deg == 0.0 && heave_rms_m == 0.0; }
+};
+
+// The loader's limits for 'vibration:' (what a wheeled rig plausibly does;
+// above half the frame rate the motion aliases in the images, allowed).
+constexpr double kMaxVibrationAngleDeg = 20;  // pitch_deg, roll_deg (rms)
+constexpr double kMaxVibrationHeaveM = 0.5;   // heave_m (rms)
+constexpr double kMinVibrationHz = 0.01;      // frequency_hz
+constexpr double kMaxVibrationHz = 100;
+
 // A scenario's duration_s, given in the file or by render --duration: one
 // rule for both (was: the file took [1e-3, 1e6] s, the option (0, 1e6] s).
 constexpr double kMinDurationS = 1e-3;
@@ -142,6 +161,7 @@ struct Scenario {
   ImuSpec imu;
   std::vector<int> dropped_frames;
   double drop_rate = 0;          // probability that a frame pair is lost
+  VibrationSpec vibration;       // none: a level body on its planar path
 };
 
 }  // namespace lumavel::host::render

@@ -13,9 +13,14 @@ namespace lumavel::host::render {
 
 constexpr double kGravity = 9.81;
 
-// imu0 at its own rate from `offset_s`: w_z = yaw rate + bias + white noise
-// (sigma = density * sqrt(rate)); accelerometer = specific force in the body
-// frame (tangential, centripetal, +g on z).
+// The body-frame angular rate of body_attitude(b) (level: 0, 0, yaw rate).
+void body_rates(const BodyState& b, double w[3]);
+// The body origin's specific force in the body frame: tangential,
+// centripetal, +g and the heave acceleration on world z, rotated by the tilt.
+void specific_force(const BodyState& b, double f[3]);
+
+// imu0 at its own rate from `offset_s`: w = body_rates + (on z) bias + white
+// noise (sigma = density * sqrt(rate)); accelerometer = specific_force + noise.
 std::vector<ImuSample> synthesize_imu(const Scenario& s, const Trajectory& traj);
 
 // EuRoC ground truth at groundtruth_rate_hz over [0, duration].

@@ -58,6 +58,9 @@ class StereoRig {
   RigidPose T_BS_[2];
 };
 
+// Body-to-world rotation: yaw(heading) * Ry(pitch) * Rx(roll) (ZYX Euler
+// angles; positive pitch turns body x (forward) towards -z, nose down).
+Eigen::Matrix3d body_attitude(const BodyState& b);
 RigidPose body_in_world(const BodyState& b);
 
 }  // namespace lumavel::host::render
