@@ -532,6 +532,23 @@ void read_imu(const Reader& r, const YAML::Node& n, Scenario& s) {
   m.accel_noise_density = r.num(n, "accel_noise_density", 0, 0, 100);
 }
 
+void read_vibration(const Reader& r, const YAML::Node& n, Scenario& s) {
+  r.check_keys(n, "vibration", {"pitch_deg", "roll_deg", "heave_m", "frequency_hz"});
+  VibrationSpec& v = s.vibration;
+  v.pitch_rms_deg = r.num(n, "pitch_deg", 0, 0, kMaxVibrationAngleDeg);
+  v.roll_rms_deg = r.num(n, "roll_deg", 0, 0, kMaxVibrationAngleDeg);
+  v.heave_rms_m = r.num(n, "heave_m", 0, 0, kMaxVibrationHeaveM);
+  // No default band: how fast a rig shakes is the vehicle's, said in the file.
+  const YAML::Node f = n["frequency_hz"];
+  if (!f) r.fail(n, "'vibration' needs 'frequency_hz: [low, high]' (Hz)");
+  const auto band = r.list(f, "frequency_hz", 2, kMinVibrationHz, kMaxVibrationHz);
+  if (band[1] < band[0])
+    r.fail(f, "'frequency_hz' = [" + shown_number(band[0]) + ", " + shown_number(band[1]) +
+                  "] must be [low, high] with low <= high");
+  v.freq_lo_hz = band[0];
+  v.freq_hi_hz = band[1];
+}
+
 void read_drops(const Reader& r, const YAML::Node& n, Scenario& s) {
   r.check_keys(n, "drops", {"frames", "rate"});
   if (const YAML::Node f = n["frames"]) {
@@ -610,7 +627,7 @@ Scenario parse_scenario(const std::string& text, const std::string& name,
     r.check_unique_keys(root, budget, limit);
     r.check_keys(root, "scenario", {"description", "duration_s", "seed", "start_ns",
                                     "groundtruth_rate_hz", "camera", "trajectory", "scene",
-                                    "lighting", "imu", "drops"});
+                                    "lighting", "imu", "drops", "vibration"});
     Scenario s;
     s.file = name;
     if (root["description"]) s.description = r.text(root["description"], "description");
@@ -632,6 +649,7 @@ Scenario parse_scenario(const std::string& text, const std::string& name,
     if (root["lighting"]) read_lighting(r, root["lighting"], s);
     if (root["imu"]) read_imu(r, root["imu"], s);
     if (root["drops"]) read_drops(r, root["drops"], s);
+    if (root["vibration"]) read_vibration(r, root["vibration"], s);
     return s;
   } catch (const YAML::Exception& e) {
     throw ScenarioError(shown + ":" + std::to_string(e.mark.line + 1) + ": " + e.msg);
