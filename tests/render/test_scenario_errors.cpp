@@ -686,3 +686,34 @@ TEST(ScenarioErrors, TheScenariosNameIsShownLikeAField) {
     STRCMP_CONTAINS("sc\\x1B[2J.yaml: camera rate_hz = 60 Hz for duration_s = 200000 s is ", e.what());
   }
 }
+
+// vibration: the block read, its keys and ranges refused as the others are.
+TEST(ScenarioErrors, Vibration) {
+  const std::string good = std::string(kGood) + "vibration: {pitch_deg: 1.0, roll_deg: 0.5, heave_m: 0.005, frequency_hz: [3, 11]}\n";
+  const Scenario s = parse_scenario(good, "good.yaml");
+  DOUBLES_EQUAL(1.0, s.vibration.pitch_rms_deg, 0);
+  DOUBLES_EQUAL(0.5, s.vibration.roll_rms_deg, 0);
+  DOUBLES_EQUAL(0.005, s.vibration.heave_rms_m, 0);
+  DOUBLES_EQUAL(3, s.vibration.freq_lo_hz, 0);
+  DOUBLES_EQUAL(11, s.vibration.freq_hi_hz, 0);
+  CHECK(parse_scenario(kGood, "good.yaml").vibration.none());
+  STRCMP_CONTAINS("bad.yaml:14: unknown key 'yaw_deg' in 'vibration' (allowed: pitch_deg, roll_deg, heave_m, frequency_hz)",
+                  error_of(replace(good, "roll_deg", "yaw_deg")).c_str());
+  STRCMP_CONTAINS("bad.yaml:14: 'pitch_deg' = 25 is out of range [0, 20]",
+                  error_of(replace(good, "pitch_deg: 1.0", "pitch_deg: 25")).c_str());
+  STRCMP_CONTAINS("bad.yaml:14: 'roll_deg' = -1 is out of range [0, 20]",
+                  error_of(replace(good, "roll_deg: 0.5", "roll_deg: -1")).c_str());
+  STRCMP_CONTAINS("bad.yaml:14: 'heave_m' = 0.6 is out of range [0, 0.5]",
+                  error_of(replace(good, "heave_m: 0.005", "heave_m: 0.6")).c_str());
+  STRCMP_CONTAINS("bad.yaml:14: 'frequency_hz' = 0 is out of range [0.01, 100]",
+                  error_of(replace(good, "[3, 11]", "[0, 11]")).c_str());
+  STRCMP_CONTAINS("bad.yaml:14: 'frequency_hz' = 150 is out of range [0.01, 100]",
+                  error_of(replace(good, "[3, 11]", "[3, 150]")).c_str());
+  STRCMP_CONTAINS("bad.yaml:14: 'frequency_hz' = [11, 3] must be [low, high] with low <= high",
+                  error_of(replace(good, "[3, 11]", "[11, 3]")).c_str());
+  STRCMP_CONTAINS("bad.yaml:14: 'frequency_hz' must be a list of 2 numbers",
+                  error_of(replace(good, "[3, 11]", "5")).c_str());
+  STRCMP_CONTAINS("bad.yaml:14: 'vibration' needs 'frequency_hz: [low, high]' (Hz)",
+                  error_of(replace(good, ", frequency_hz: [3, 11]", "")).c_str());
+  STRCMP_EQUAL("(accepted)", error_of(replace(good, "[3, 11]", "[7, 7]")).c_str());
+}
