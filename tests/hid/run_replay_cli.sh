@@ -47,6 +47,15 @@ long=$(printf 'v%.0s' $(seq 251)).csv
 "$READ" replay run.hidrep -o "$long" 2> long.err || fail "replay -o a 255-byte name: exit $?: $(cat long.err)"
 cmp -s out.csv "$long" || fail "replay -o a 255-byte name: the CSV differs"
 rm -f "$long"
+# Standard output appended to the report file being read (was: the CSV
+# appended as the file was read, its lines then read as damaged records: the
+# report file lost, exit 1 with dozens of 'malformed report' lines).
+cp run.hidrep app.hidrep
+"$READ" replay app.hidrep >> app.hidrep 2> app.err
+rc=$?
+[ $rc -eq 2 ] || fail "replay app.hidrep >> app.hidrep: exit $rc, expected 2: $(cat app.err)"
+grep -q "app.hidrep (standard output): that is the report file being read" app.err || fail "stdout onto the report file: $(cat app.err)"
+cmp -s run.hidrep app.hidrep || fail "replay >> onto the report file changed it"
 "$READ" replay missing.hidrep > /dev/null 2> missing.err && fail "missing file accepted"
 grep -q "missing.hidrep" missing.err || fail "missing file not named"
 "$READ" replay adir > /dev/null 2> dir.err && fail "a folder accepted as a report file"

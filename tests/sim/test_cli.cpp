@@ -1065,6 +1065,41 @@ TEST(Cli, OutputsIntoTheRecordingAreRefused) {
   CHECK(!exists(dir.path() + "/rec/mav0/new.csv"));
 }
 
+// Standard output redirected to a file is one of the outputs: 'run rec >
+// rec_estimates.svg' (the default plot's name, in the current folder when
+// the CSV goes to standard output) streamed the CSV into the file, then the
+// plot was renamed over it: the CSV lost, exit 0; '--hid file:' the same.
+TEST(Cli, StandardOutputThatIsAnotherOutputIsRefused) {
+  rec();
+  const std::string cd = "cd '" + dir.path() + "' && '" LUMAVEL_SIM_EXE "' ";
+  int status = std::system((cd + "run rec --quiet > rec_estimates.svg 2>err.txt").c_str());
+  CHECK(WIFEXITED(status));
+  LONGS_EQUAL(2, WEXITSTATUS(status));
+  STRCMP_CONTAINS("rec_estimates.svg: standard output (the CSV) and the plot name the same file",
+                  fixture::read_text(dir.path() + "/err.txt").c_str());
+  STRCMP_EQUAL("", fixture::read_text(dir.path() + "/rec_estimates.svg").c_str());
+  // (tool() sends standard output to stdout.txt)
+  Outcome r = sim("run rec --quiet --hid file:stdout.txt");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("stdout.txt: standard output (the CSV) and --hid file: name the same file", r.err.c_str());
+  // The plot on standard output, -o naming that file.
+  r = sim("run rec --quiet -o stdout.txt --plot -");
+  LONGS_EQUAL(2, r.code);
+  STRCMP_CONTAINS("stdout.txt: standard output (the plot) and -o name the same file", r.err.c_str());
+  // Appended to a file of the recording.
+  const std::string imu = dir.path() + "/rec/mav0/imu0/data.csv", before = fixture::read_text(imu);
+  status = std::system((cd + "run rec --quiet >> rec/mav0/imu0/data.csv 2>err.txt").c_str());
+  LONGS_EQUAL(2, WEXITSTATUS(status));
+  STRCMP_CONTAINS("(standard output (the CSV)): that is part of the recording being read",
+                  fixture::read_text(dir.path() + "/err.txt").c_str());
+  CHECK(fixture::read_text(imu) == before);
+  // A file standard output is, named by no other output, takes the CSV.
+  status = std::system((cd + "run rec --quiet > est.csv 2>err.txt").c_str());
+  LONGS_EQUAL(0, WEXITSTATUS(status));
+  STRCMP_CONTAINS("timestamp_ns,v_xb_mps", fixture::read_text(dir.path() + "/est.csv").c_str());
+  CHECK(exists(dir.path() + "/rec_estimates.svg"));
+}
+
 // A report file that cannot be written ends the run with the cause (it was
 // counted as overruns and reported as sent).
 TEST(Cli, AReportFileThatCannotBeWrittenFailsTheRun) {

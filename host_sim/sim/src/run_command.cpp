@@ -277,7 +277,15 @@ int run(const RunArgs& a) {
   // No output may land on what the run reads, nor two outputs on one file.
   {
     std::vector<std::pair<std::string, const char*>> outs;
-    if (a.output != "-" && !a.output.empty()) outs.emplace_back(a.output, "-o");
+    // Standard output redirected to a file is an output too: 'run rec >
+    // rec_estimates.svg' (the default plot's name) or '--hid file:x > x'
+    // streamed the CSV there, then the other output was renamed over it, the
+    // CSV lost, exit 0 ('>> rec/mav0/imu0/data.csv' appended it to the
+    // recording).
+    const bool csv_to_stdout = a.output == "-" || a.output.empty();
+    if (const std::string so = standard_output_file(); !so.empty() && (csv_to_stdout || plot_to_stdout))
+      outs.emplace_back(so, csv_to_stdout ? "standard output (the CSV)" : "standard output (the plot)");
+    if (!csv_to_stdout) outs.emplace_back(a.output, "-o");
     if ((!rec.groundtruth.empty() || !a.plot.empty()) && !plot_to_stdout)
       outs.emplace_back(a.plot.empty() ? default_plot_path(a) : a.plot, a.plot.empty() ? "the plot" : "--plot");
     if (a.hid.rfind("file:", 0) == 0) outs.emplace_back(a.hid.substr(5), "--hid file:");

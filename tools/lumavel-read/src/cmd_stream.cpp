@@ -149,6 +149,16 @@ int cmd_replay(const std::string& file, const StreamOptions& o) {
       throw cli::UsageError(host::shown_path(o.output) + " (-o): that is the report file being read (" +
                             host::shown_path(file) + "); write the CSV elsewhere");
   }
+  // Standard output the same: 'replay r.hid >> r.hid' appended the CSV to the
+  // file as it was read, then read those lines as damaged records (the report
+  // file lost, its own CSV reported as dozens of malformed reports).
+  if (o.output.empty() || o.output == "-") {
+    std::error_code ec;
+    const std::string so = host::standard_output_file();
+    if (!so.empty() && std::filesystem::equivalent(so, file, ec) && !ec)
+      throw cli::UsageError(host::shown_path(so) + " (standard output): that is the report file being read (" +
+                            host::shown_path(file) + "); write the CSV elsewhere");
+  }
   Outputs out;
   open_outputs(o, false, out);
   Sink sink(out.csv, false, true);

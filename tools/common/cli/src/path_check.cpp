@@ -331,6 +331,17 @@ std::FILE* open_for_writing(const std::string& path, const char* mode, std::stri
   }
 }
 
+std::string standard_output_file() {
+  struct stat out {}, named {};
+  if (::fstat(STDOUT_FILENO, &out) != 0 || !S_ISREG(out.st_mode)) return "";
+  std::error_code ec;
+  const std::string path = std::filesystem::read_symlink("/proc/self/fd/1", ec).string();
+  // The name the system gives is the file's only while it is that file (a
+  // removed one reads 'PATH (deleted)').
+  if (ec || ::stat(path.c_str(), &named) != 0 || named.st_dev != out.st_dev || named.st_ino != out.st_ino) return "";
+  return path;
+}
+
 bool path_present(const std::string& path) {
   struct stat st {};
   // lstat: a dangling symbolic link is something there (a ground truth that

@@ -71,6 +71,13 @@ std::string left_by_a_stopped_write(const std::string& path);
 // link to the -o file's name, not yet written, passed as another file). ""
 // when it cannot be said.
 std::string written_path(const std::string& path);
+// The regular file standard output is (a shell's '> FILE'), as its absolute
+// path, for telling whether an output the tool writes by name is the file its
+// standard output writes too: a CSV streamed to standard output, then a plot
+// of the same file renamed into place, left the plot alone, exit 0. "" when
+// standard output is no regular file (a terminal, a pipe, /dev/null) or its
+// path cannot be said (a file removed since).
+std::string standard_output_file();
 // The reason "-" is refused where an output cannot go to standard output:
 // "'-' stands for standard output, where no `what` is written: give a `kind`
 // name (./- for a `kind` of that name)" (kind: "file", or "folder" for an
