@@ -10,6 +10,8 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <sstream>
 #include <new>
 
 #include "lumavel/host/csv_table.hpp"
@@ -771,6 +773,45 @@ TEST(BadInput, GroundTruthCoveringNoFrame) {
                       .c_str(),
                   e.c_str());
   STRCMP_CONTAINS("no frame can be compared (remove the file for a run without ground truth)", e.c_str());
+}
+
+// V is compared with the ground truth's velocity, and its positions say what
+// that must be: zeros written where a tool had no velocity (the positions
+// moving 1 m/s) were read as 'the true speed is 0 throughout', every error
+// figure against it, exit 0. A velocity in km/h the same. Positions that are
+// one point throughout are not given (the velocity alone is read).
+TEST(BadInput, GroundTruthVelocityThePositionsContradict) {
+  const std::string gt = m + "state_groundtruth_estimate0/data.csv";
+  const std::vector<std::string> intact = fixture::read_lines(gt);
+  // Columns 9..11 (after the timestamp) are v_RS_R; `f` maps each one.
+  auto with_velocity = [&](const std::function<std::string(const std::string&)>& f, bool keep_positions) {
+    std::vector<std::string> lines = intact;
+    for (size_t i = 1; i < lines.size(); ++i) {
+      std::vector<std::string> c;
+      std::stringstream ss(lines[i]);
+      for (std::string x; std::getline(ss, x, ',');) c.push_back(x);
+      for (size_t k = 8; k < 11; ++k) c[k] = f(c[k]);
+      if (!keep_positions) c[1] = c[2] = c[3] = "0";
+      lines[i] = c[0];
+      for (size_t k = 1; k < c.size(); ++k) lines[i] += "," + c[k];
+    }
+    fixture::write_lines(gt, lines);
+  };
+  with_velocity([](const std::string&) { return std::string("0"); }, true);
+  std::string e = load_error();
+  STRCMP_CONTAINS((gt + ":2: the velocity v_RS_R is not the rate of change of the position p_RS_R: from line 2 to "
+                   "line 28 (t = 990000000 .. 1120000000 ns) the position moves (0.13, 0, 0) m, the velocity "
+                   "integrated (0, 0, 0) m")
+                      .c_str(),
+                  e.c_str());
+  STRCMP_CONTAINS("V is compared with the velocity: the body origin's, in the world frame, in m/s", e.c_str());
+  with_velocity([](const std::string& v) { return format_double(std::stod(v) * 3.6); }, true);
+  STRCMP_CONTAINS("is not the rate of change of the position", load_error().c_str());
+  // Positions not given: the velocity is taken as it is.
+  with_velocity([](const std::string& v) { return v; }, false);
+  STRCMP_EQUAL("(no error)", load_error().c_str());
+  fixture::write_lines(gt, intact);
+  STRCMP_EQUAL("(no error)", load_error().c_str());
 }
 
 // yaml-cpp answers a repeated key with its first value: a T_BS appended to

@@ -53,6 +53,66 @@ uint64_t longest_interpolated_interval(const std::vector<GroundTruthSample>& gt)
 
 }  // namespace
 
+std::string why_velocity_is_not_the_positions_rate(const std::vector<GroundTruthSample>& gt,
+                                                   const std::vector<long>& line, long& at_line) {
+  bool moves = false;
+  for (const GroundTruthSample& g : gt)
+    for (int k = 0; k < 3; ++k) moves = moves || g.p[k] != gt.front().p[k];
+  if (!moves) return "";
+  const uint64_t longest = longest_interpolated_interval(gt);
+  const auto stretch_ns = static_cast<uint64_t>(layout::kGroundTruthRateStretchS * 1e9);
+  auto norm = [](const double a[3]) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); };
+  double by_positions = 0, by_velocity = 0, apart = 0, worst = -1;
+  size_t worst_i = 0, worst_j = 0, stretches = 0;
+  double worst_dp[3] = {0, 0, 0}, worst_iv[3] = {0, 0, 0};
+  for (size_t i = 0; i + 1 < gt.size();) {
+    size_t j = i;
+    double iv[3] = {0, 0, 0};  // the velocity integrated (trapezoids)
+    while (j + 1 < gt.size() && gt[j + 1].t_ns - gt[j].t_ns <= longest && gt[j].t_ns - gt[i].t_ns < stretch_ns) {
+      const double dt = static_cast<double>(gt[j + 1].t_ns - gt[j].t_ns) * 1e-9;
+      for (int k = 0; k < 3; ++k) iv[k] += 0.5 * (gt[j].v[k] + gt[j + 1].v[k]) * dt;
+      ++j;
+    }
+    if (j == i) {  // a hole after sample i: nothing known across it
+      ++i;
+      continue;
+    }
+    double dp[3], d[3];
+    for (int k = 0; k < 3; ++k) {
+      dp[k] = gt[j].p[k] - gt[i].p[k];
+      d[k] = dp[k] - iv[k];
+    }
+    by_positions += norm(dp);
+    by_velocity += norm(iv);
+    apart += std::max(0.0, norm(d) - layout::kGroundTruthRateSlackM);
+    ++stretches;
+    if (norm(d) > worst) {
+      worst = norm(d);
+      worst_i = i;
+      worst_j = j;
+      std::copy(dp, dp + 3, worst_dp);
+      std::copy(iv, iv + 3, worst_iv);
+    }
+    i = j;
+  }
+  const double allowed = layout::kGroundTruthRateApartShare * std::max(by_positions, by_velocity);
+  if (stretches == 0 || apart <= allowed) return "";
+  auto vec = [](const double a[3]) {
+    return "(" + format_double(a[0]) + ", " + format_double(a[1]) + ", " + format_double(a[2]) + ") m";
+  };
+  at_line = line[worst_i];
+  return "the velocity v_RS_R is not the rate of change of the position p_RS_R: from line " +
+         std::to_string(line[worst_i]) + " to line " + std::to_string(line[worst_j]) + " (t = " +
+         std::to_string(gt[worst_i].t_ns) + " .. " + std::to_string(gt[worst_j].t_ns) + " ns) the position moves " +
+         vec(worst_dp) + ", the velocity integrated " + vec(worst_iv) + "; over the file's " +
+         std::to_string(stretches) + " stretches of up to " + format_double(layout::kGroundTruthRateStretchS) +
+         " s the positions travel " + format_double(by_positions) + " m, the velocities " +
+         format_double(by_velocity) + " m, " + format_double(apart) + " m apart beyond " +
+         format_double(layout::kGroundTruthRateSlackM) + " m a stretch, where at most " + format_double(layout::kGroundTruthRateApartShare) +
+         " of the larger travel is allowed. V is compared with the velocity: the body origin's, in the world frame, in m/s (not zeros where "
+         "it is unknown, nor the body frame's or another unit's); remove the file for a run without ground truth";
+}
+
 std::vector<double> true_forward_velocity(const std::vector<GroundTruthSample>& gt,
                                           const std::vector<uint64_t>& t_ns) {
   std::vector<double> out(t_ns.size(), std::numeric_limits<double>::quiet_NaN());

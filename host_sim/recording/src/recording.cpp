@@ -160,9 +160,11 @@ std::vector<ImuSample> read_imu(const std::string& csv) {
   return out;
 }
 
-std::vector<GroundTruthSample> read_groundtruth(const std::string& csv) {
+// The samples, and in `line` each one's line of the file.
+std::vector<GroundTruthSample> read_groundtruth(const std::string& csv, std::vector<long>& line) {
   std::vector<GroundTruthSample> out;
   for_each_csv_row(csv, layout::groundtruth_columns(), [&](const CsvRow& r) {
+    line.push_back(r.line);
     double v[16];
     for (size_t k = 0; k < 16; ++k) {
       const std::string& column = layout::groundtruth_columns()[k];
@@ -324,8 +326,9 @@ Recording load_recording(const std::string& dir_arg) {
   if (rec.imu_samples.empty()) throw recording_error_at(imu_csv, 2, "no gyro samples");
 
   const std::string gt_csv = root + "/" + layout::kGroundTruthDir + "/data.csv";
+  std::vector<long> gt_line;  // each sample's line
   if (path_present(gt_csv)) {  // absent: no ground truth; present, it must hold some
-    rec.groundtruth = read_groundtruth(gt_csv);
+    rec.groundtruth = read_groundtruth(gt_csv, gt_line);
     if (rec.groundtruth.empty())
       throw recording_error_at(gt_csv, 2,
                                "no ground-truth samples after the header (remove the file for a run without ground "
@@ -340,7 +343,15 @@ Recording load_recording(const std::string& dir_arg) {
   rec.gyro_glitches = glitches.count;
   if (glitches.count > 0) rec.gyro_glitch_text = format_gyro_glitches(glitches, shown_path(imu_csv));
   check_gyro_coverage(rec, imu_csv, c0.csv);
-  if (!rec.groundtruth.empty()) check_groundtruth_coverage(rec, gt_csv, c0.csv);
+  if (!rec.groundtruth.empty()) {
+    check_groundtruth_coverage(rec, gt_csv, c0.csv);  // first: times in another unit break the rate too
+    // A velocity the positions contradict (zeros a tool wrote for one it did
+    // not have: 'the true speed is 0 throughout', every figure against it,
+    // exit 0) is refused.
+    long at = 0;
+    if (const std::string why = why_velocity_is_not_the_positions_rate(rec.groundtruth, gt_line, at); !why.empty())
+      throw recording_error_at(gt_csv, at, why);
+  }
   return rec;
 }
 

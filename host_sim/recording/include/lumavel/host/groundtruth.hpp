@@ -17,6 +17,15 @@ std::string why_implausible_position(double p_m);
 std::string why_implausible_speed(double v_mps);
 std::string why_not_unit_quaternion(double norm);
 
+// "" when the velocities follow the positions (layout::kGroundTruthRate*),
+// or the positions are one point throughout (not given: a file may fill the
+// velocity alone, all V is compared with); otherwise the reason, naming the
+// stretch furthest apart by its lines (`line[i]` is sample i's line of the
+// file) and saying what the velocity must be. Callers name the file and
+// `at_line`, set to the stretch's first line.
+std::string why_velocity_is_not_the_positions_rate(const std::vector<GroundTruthSample>& gt,
+                                                   const std::vector<long>& line, long& at_line);
+
 // V_xb at one ground-truth sample (q need not be normalised; it is).
 double body_forward_velocity(const GroundTruthSample& g);
 

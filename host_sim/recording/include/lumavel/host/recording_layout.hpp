@@ -44,6 +44,18 @@ constexpr double kGroundTruthQuaternionNormTolerance = 0.01;
 // the motion capture lost) the motion is unknown, and a straight line through
 // it made up the truth of every frame inside, scored in E as if measured.
 constexpr double kGroundTruthMaxHoleIntervals = 10;
+// The velocity is what V is compared with, and the positions say what it
+// must be: over stretches of kGroundTruthRateStretchS (none across a hole),
+// the velocity integrated must reach where the positions go. A stretch may
+// be kGroundTruthRateSlackM apart (a motion capture's noise and a filter's
+// lag), and beyond that the stretches together at most
+// kGroundTruthRateApartShare of the larger travel: zeros where a tool had no
+// velocity, or a velocity in km/h or in the body frame of a turning rig, are
+// far beyond it; a real estimate (EuRoC's, a slider's, a render's) within a
+// thousandth of it.
+constexpr double kGroundTruthRateStretchS = 0.5;
+constexpr double kGroundTruthRateSlackM = 0.01;
+constexpr double kGroundTruthRateApartShare = 0.5;
 
 inline const std::vector<std::string>& groundtruth_columns() {
   static const std::vector<std::string> v = {
