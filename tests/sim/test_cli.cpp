@@ -828,7 +828,9 @@ TEST(Cli, UnwritableOutputsAreRefusedBeforeTheWork) {
            {"--out out_r --doc afile.md", "afile (the plots of --doc): is a file, not a folder for the page's plots"},
            // (was: its section skipped as "not there", exit 0; only the default may be missing)
            {"--out out_r --doc p.md --slider-data nowhere", "nowhere (--slider-data): does not exist"},
-           {"--out out_r --doc p.md --slider-data afile", "afile (--slider-data): is a file, not a dataset folder"}}) {
+           {"--out out_r --doc p.md --slider-data afile", "afile (--slider-data): is a file, not a dataset folder"},
+           // (was: 'reproduce: page ...' said, then 'nowhere/paper_sim_aligned.yaml: does not exist', the option unnamed)
+           {"--out out_r --doc p.md", "nowhere (--scenarios): does not exist"}}) {
     r = sim("reproduce --only Lens --scenarios nowhere " + args);
     LONGS_EQUAL_TEXT(1, r.code, args.c_str());
     STRCMP_CONTAINS(said.c_str(), r.err.c_str());

@@ -360,8 +360,15 @@ void add_reproduce_command(cli::Tool& tool) {
       if (const std::string why = why_not_a_folder(o->slider_data, kSliderDatasetFolder);
           !why.empty())
         throw std::runtime_error(shown_path(o->slider_data) + " (--slider-data): " + why);
+    const bool scenarios_given = !o->scenarios.empty();
     resolve_paths(*o);
     check_outputs(*o);
+    // A --scenarios that is no folder (a typo) was said after the run began,
+    // as its first scenario file: '/nonexist/paper_sim_aligned.yaml: does not
+    // exist', the option unnamed.
+    if (scenarios_given)
+      if (const std::string why = why_not_a_folder(o->scenarios, "scenario folder"); !why.empty())
+        throw std::runtime_error(shown_path(o->scenarios) + " (--scenarios): " + why);
     return run(*o);
   });
   c->add_flag("--quick", o->quick,
