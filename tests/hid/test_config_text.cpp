@@ -131,9 +131,12 @@ std::string offline_refusal_of_file(const std::string& suffix, const std::string
 
 // The refusal of check_settings_offline for `text` read as rig.cfg, or "".
 std::string offline_refusal(const std::string& text) {
-  const std::string why = offline_refusal_of_file(".cfg", text);
+  std::string why = offline_refusal_of_file(".cfg", text);
   const size_t at = why.find(".cfg:");
-  return at == std::string::npos ? why : "rig" + why.substr(at);
+  if (at == std::string::npos) return why;
+  const std::string path = why.substr(0, at + 4);  // the file, named again by a partner key's line
+  for (size_t p = 0; (p = why.find(path, p)) != std::string::npos; p += 7) why.replace(p, path.size(), "rig.cfg");
+  return why;
 }
 
 }  // namespace
@@ -144,9 +147,15 @@ TEST(ConfigText, OfflineCheckNamesTheLineTheKeyTheValueAndTheRule) {
   STRCMP_EQUAL("rig.cfg:3: misalignment_rad = 0.5: misalignment must be -0.35..0.35 rad",
                offline_refusal("# rig\n\nmisalignment_rad=0.5\n").c_str());
   STRCMP_EQUAL("rig.cfg:1: kernels = 9:0.07: kernel orders must be 0..3", offline_refusal("kernels=9:0.07\n").c_str());
-  STRCMP_EQUAL("rig.cfg:2: max_gap_us = 20000: max_gap_us must be frame_period_us..4000000 us",
+  // A rule of two keys says the other one's value and line (was: 'width = 20:
+  // cu must be 0..width - 1 px', cu0_px = 19.5 on line 1 unsaid).
+  STRCMP_EQUAL("rig.cfg:2: max_gap_us = 20000: max_gap_us must be frame_period_us..4000000 us (with "
+               "frame_period_us = 50000 at rig.cfg:1)",
                offline_refusal("frame_period_us=50000\nmax_gap_us=20000\n").c_str());
-  STRCMP_EQUAL("rig.cfg:2: cu0_px = 63.5: cu must be 0..width - 1 px", offline_refusal("width=40\ncu0_px=63.5\n").c_str());
+  STRCMP_EQUAL("rig.cfg:2: cu0_px = 63.5: cu must be 0..width - 1 px (with width = 40 at rig.cfg:1)",
+               offline_refusal("width=40\ncu0_px=63.5\n").c_str());
+  STRCMP_EQUAL("rig.cfg:2: width = 20: cu must be 0..width - 1 px (with cu0_px = 19.5 at rig.cfg:1)",
+               offline_refusal("cu0_px=19.5\nwidth=20\n").c_str());
   STRCMP_EQUAL("rig.cfg:2: lens_cam0 = 0.1,0.2: 2 values, but width 40 needs 41 (one per column edge)",
                offline_refusal("width=40\nlens_cam0=0.1,0.2\n").c_str());
   STRCMP_EQUAL("rig.cfg:1: tau_us = fast: not a whole number; tau_us must be 1000..10000000 us",
@@ -298,6 +307,9 @@ TEST(ConfigText, DeviceCheckBlamesTheGivenKey) {
   host::GivenSettings g;
   g.add("cu0_px=63.5", "command line");
   STRCMP_EQUAL("command line: cu0_px = 63.5: cu must be 0..width - 1 px", host::check_settings(device, g).c_str());
+  g.add("width=40", "command line");
+  STRCMP_EQUAL("command line: cu0_px = 63.5: cu must be 0..width - 1 px (with width = 40 on the command line)",
+               host::check_settings(device, g).c_str());
   host::GivenSettings narrow;
   narrow.add("width = 16", "command line");  // the device's lens table has 41 values
   STRCMP_EQUAL("command line: width = 16: 41 values, but width 16 needs 17 (one per column edge)",

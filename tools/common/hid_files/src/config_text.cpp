@@ -509,11 +509,29 @@ std::string check_settings(const DeviceSetup& base, const GivenSettings& given) 
   if (!blamed)
     for (auto it = given.items.rbegin(); it != given.items.rend() && !blamed; ++it)
       if (std::find(keys.begin(), keys.end(), it->key) != keys.end()) blamed = &*it;
-  if (blamed) {
-    std::string value = blamed->value;
+  auto shown_value = [](const GivenSetting& g) {
+    std::string value = g.value;
     if (value.size() > 40) value = value.substr(0, 37) + "...";
-    value = shown_path(value);  // a control character as \xNN
-    return blamed->where + ": " + blamed->key + " = " + value + ": " + rule;
+    return shown_path(value);  // a control character as \xNN
+  };
+  if (blamed) {
+    // A rule of a key and its partner (keys_of's last: width, frame_period_us)
+    // blamed on one of them, 'width = 20: cu must be 0..width - 1 px', left
+    // the other's value and line unsaid (cu0_px=19.5 on the line before):
+    // the other side's given values are said beside it.
+    // (A lens table's reason names the width already.)
+    const std::string partner = keys.size() > 1 && lens_why.empty() ? keys.back() : std::string();
+    std::string with;
+    for (const GivenSetting& g : given.items) {
+      const bool other_side = blamed->key == partner
+                                  ? g.key != partner && std::find(keys.begin(), keys.end(), g.key) != keys.end()
+                                  : !partner.empty() && g.key == partner;
+      if (other_side)
+        with += std::string(with.empty() ? " (with " : ", ") + g.key + " = " + shown_value(g) +
+                (g.where == "command line" ? " on the command line" : " at " + g.where);
+    }
+    if (!with.empty()) with += ")";
+    return blamed->where + ": " + blamed->key + " = " + shown_value(*blamed) + ": " + rule + with;
   }
   std::string names;
   for (const std::string& k : keys) names += (names.empty() ? "" : ", ") + k;
