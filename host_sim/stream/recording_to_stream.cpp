@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
       !lumavel::stream::whole_argument(argv[0], "width", argv[3], 16, 2048, width) ||
       !lumavel::stream::whole_argument(argv[0], "height", argv[4], 1, 2048, height))
     return 2;
+  if (!lumavel::stream::output_argument(argv[0], "out.lvs", argv[2])) return 1;
   const int w = static_cast<int>(width);
   const int h = static_cast<int>(height);
   try {

@@ -54,6 +54,28 @@ if(NOT rc EQUAL 1 OR NOT err MATCHES "out\\.lvr: needs a path, not an empty one"
   message(FATAL_ERROR "lumavel_app_host in.lvs '': expected exit 1 and 'out.lvr: needs a path', got exit ${rc}: ${err}")
 endif()
 expect("${WORK}: read error: Is a directory" ${HOST_APP} ${WORK} out.lvr)
+# '-' as the stream made a file named '-' in the current folder, exit 0 (render,
+# import-slider and calibrate --write refuse it); a folder that is not there
+# was 'cannot create the stream: No such file or directory'. Exit 1, nothing made.
+file(REMOVE ${WORK}/-)
+foreach(tool convert gen)
+  foreach(out - nowhere/x.lvs)
+    if(tool STREQUAL "convert")
+      set(cmd ${CONVERT} rec ${out} 40 30)
+    else()
+      set(cmd ${GEN} ${out} 40 30 2)
+    endif()
+    execute_process(COMMAND ${cmd} WORKING_DIRECTORY ${WORK} RESULT_VARIABLE rc ERROR_VARIABLE err)
+    if(out STREQUAL "-")
+      set(want "- \\(out\\.lvs\\): '-' stands for standard output, where no stream file is written")
+    else()
+      set(want "nowhere/x\\.lvs \\(out\\.lvs\\): cannot be created: its folder nowhere does not exist")
+    endif()
+    if(NOT rc EQUAL 1 OR NOT err MATCHES "${want}" OR EXISTS ${WORK}/-)
+      message(FATAL_ERROR "${tool} out.lvs '${out}': expected exit 1 and '${want}', nothing made, got exit ${rc}: ${err}")
+    endif()
+  endforeach()
+endforeach()
 # A stream whose frames are larger than this build holds (lumavel_make_test_stream
 # writes up to 2048 columns): 'record 0: frame larger than the build's
 # capacity' said neither the stream's size nor the build's.

@@ -126,6 +126,7 @@ int main(int argc, char** argv) {
       !lumavel::stream::whole_argument(argv[0], "frames", argv[4], 1, 1000000, frame_count) ||
       (argc == 6 && !lumavel::stream::whole_argument(argv[0], "seed", argv[5], 0, UINT32_MAX, seed)))
     return 2;
+  if (!lumavel::stream::output_argument(argv[0], "out.lvs", argv[1])) return 1;
   const int w = static_cast<int>(width);
   const int h = static_cast<int>(height);
   const int frames = static_cast<int>(frame_count);

@@ -38,4 +38,19 @@ inline bool path_argument(const char* prog, const char* name, const char* text) 
   return false;
 }
 
+// The stream file `text` (the argument `name`) can be written; or false after
+// saying why on standard error, as lumavel-sim's outputs say it: "PROG: - 
+// (out.lvs): '-' stands for standard output, where no stream file is
+// written: ...", "PROG: nodir/x.lvs (out.lvs): cannot be created: its folder
+// nodir does not exist", for the caller's failure exit (1). '-' made a file
+// of that name in the current folder, exit 0 (render, import-slider and
+// calibrate --write refuse it), and a missing folder was said as 'cannot
+// create the stream: No such file or directory'.
+inline bool output_argument(const char* prog, const char* name, const char* text) {
+  const std::string why = host::why_not_writable(text, "stream file");
+  if (why.empty()) return true;
+  std::fprintf(stderr, "%s: %s (%s): %s\n", prog, host::shown_path(text).c_str(), name, why.c_str());
+  return false;
+}
+
 }  // namespace lumavel::stream
