@@ -1070,7 +1070,8 @@ TEST(Cli, OutputsIntoTheRecordingAreRefused) {
 // Standard output redirected to a file is one of the outputs: 'run rec >
 // rec_estimates.svg' (the default plot's name, in the current folder when
 // the CSV goes to standard output) streamed the CSV into the file, then the
-// plot was renamed over it: the CSV lost, exit 0; '--hid file:' the same.
+// plot was renamed over it: the CSV lost, exit 0; '--hid file:' the same;
+// '>> rec/mav0/...' appended to the recording (calibrate's report too).
 TEST(Cli, StandardOutputThatIsAnotherOutputIsRefused) {
   rec();
   const std::string cd = "cd '" + dir.path() + "' && '" LUMAVEL_SIM_EXE "' ";
@@ -1095,6 +1096,13 @@ TEST(Cli, StandardOutputThatIsAnotherOutputIsRefused) {
   STRCMP_CONTAINS("(standard output (the CSV)): that is part of the recording being read",
                   fixture::read_text(dir.path() + "/err.txt").c_str());
   CHECK(fixture::read_text(imu) == before);
+  // calibrate's report the same (was: appended to the sensor.yaml it read, exit 0).
+  const std::string yaml = dir.path() + "/rec/mav0/cam1/sensor.yaml", intact = fixture::read_text(yaml);
+  status = std::system((cd + "calibrate rec --quiet >> rec/mav0/cam1/sensor.yaml 2>err.txt").c_str());
+  LONGS_EQUAL(2, WEXITSTATUS(status));
+  STRCMP_CONTAINS("rec/mav0/cam1/sensor.yaml (standard output): that is part of the recording being read",
+                  fixture::read_text(dir.path() + "/err.txt").c_str());
+  CHECK(fixture::read_text(yaml) == intact);
   // A file standard output is, named by no other output, takes the CSV.
   status = std::system((cd + "run rec --quiet > est.csv 2>err.txt").c_str());
   LONGS_EQUAL(0, WEXITSTATUS(status));

@@ -84,6 +84,12 @@ int calibrate(CalibrateArgs& a) {
   if (!a.write_path.empty() && overwrites_recording(rec, a.write_path))
     throw cli::UsageError(shown_path(a.write_path) + " (--write): that is part of the recording being read (" +
                           shown_path(rec.root) + "); write the configuration elsewhere");
+  // Its report on standard output too, as run's CSV: 'calibrate rec >>
+  // rec/mav0/cam0/sensor.yaml' appended the report to the sensor.yaml it had
+  // read, exit 0 (the recording then refused: 'registered' is no key).
+  if (const std::string so = standard_output_file(); !so.empty() && overwrites_recording(rec, so))
+    throw cli::UsageError(shown_path(so) + " (standard output): that is part of the recording being read (" +
+                          shown_path(rec.root) + "); send the report elsewhere");
   WorkingSize write_size = default_working_size(rec);
   if (!a.write_size.empty()) {
     cli::parse_size(a.write_size, write_size.width, write_size.height);
