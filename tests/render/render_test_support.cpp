@@ -23,6 +23,24 @@ Scenario empty_scenario(int width, int height, double speed) {
   return s;
 }
 
+Scenario turning_pass(int width, int height, double duration_s) {
+  Scenario s = empty_scenario(width, height);
+  s.duration_s = duration_s;
+  s.trajectory.segments.clear();
+  SegmentSpec a;
+  a.kind = SegmentKind::Arc;
+  a.duration_s = duration_s / 2;
+  a.v0 = 0.5;
+  a.v1 = 1.5;
+  a.profile = SpeedProfile::Smooth;
+  a.curvature = 1.0 / 4;
+  s.trajectory.segments.push_back(a);
+  a.v0 = a.v1 = 1.0;
+  a.curvature = -1.0 / 6;
+  s.trajectory.segments.push_back(a);
+  return s;
+}
+
 PlaneSpec wall_at(double y, double x0, double x1, double z0, double z1, const PatternSpec& p) {
   PlaneSpec w;
   w.name = "wall";

@@ -11,6 +11,10 @@ namespace lumavel::host::render::test {
 // `speed`, no planes; background 0.
 Scenario empty_scenario(int width, int height, double speed = 0);
 
+// empty_scenario turning all the time: an arc left (R 4 m, 0.5 -> 1.5 m/s,
+// smooth), then right (R 6 m, 1 m/s), each half of `duration_s`.
+Scenario turning_pass(int width, int height, double duration_s);
+
 // A vertical plane parallel to the x axis at y = `y`, spanning x in [x0, x1]
 // and z in [z0, z1]; `from`/`to` ordered so it reads upright from the origin.
 PlaneSpec wall_at(double y, double x0, double x1, double z0, double z1, const PatternSpec& p);

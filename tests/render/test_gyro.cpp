@@ -13,20 +13,7 @@ using namespace lumavel::host::render;
 
 namespace {
 render::Scenario turning(double bias, double density) {
-  render::Scenario s = test::empty_scenario(40, 30);
-  s.duration_s = 30;
-  s.trajectory.segments.clear();
-  SegmentSpec a;
-  a.kind = SegmentKind::Arc;
-  a.duration_s = 15;
-  a.v0 = 0.5;
-  a.v1 = 1.5;
-  a.profile = SpeedProfile::Smooth;
-  a.curvature = 1.0 / 4;
-  s.trajectory.segments.push_back(a);
-  a.v0 = a.v1 = 1.0;
-  a.curvature = -1.0 / 6;
-  s.trajectory.segments.push_back(a);
+  render::Scenario s = test::turning_pass(40, 30, 30);
   s.imu.rate_hz = 200;
   s.imu.offset_s = 0.0013;
   s.imu.gyro_bias_z = bias;

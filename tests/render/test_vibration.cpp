@@ -22,20 +22,7 @@ constexpr double kPi = 3.14159265358979323846;
 
 // A turning pass (arc left, then right) with a trolley's shake.
 render::Scenario shaking(double pitch_deg, double roll_deg, double heave_m) {
-  render::Scenario s = test::empty_scenario(40, 30);
-  s.duration_s = 20;
-  s.trajectory.segments.clear();
-  SegmentSpec a;
-  a.kind = SegmentKind::Arc;
-  a.duration_s = 10;
-  a.v0 = 0.5;
-  a.v1 = 1.5;
-  a.profile = SpeedProfile::Smooth;
-  a.curvature = 1.0 / 4;
-  s.trajectory.segments.push_back(a);
-  a.v0 = a.v1 = 1.0;
-  a.curvature = -1.0 / 6;
-  s.trajectory.segments.push_back(a);
+  render::Scenario s = test::turning_pass(40, 30, 20);
   s.trajectory.heading0_deg = 200;  // past pi: the level quaternion's signs as before
   s.vibration.pitch_rms_deg = pitch_deg;
   s.vibration.roll_rms_deg = roll_deg;
