@@ -44,6 +44,14 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "%s: %s: needs a path, not an empty one\n", argv[0], i == 1 ? "in.lvs" : "out.lvr");
       return 1;
     }
+  // '-' made a file of that name in the current folder, exit 0 (the stream
+  // tools and lumavel-sim refuse it; boards may not include their path checks).
+  for (int i = 1; i <= 2; ++i)
+    if (std::strcmp(argv[i], "-") == 0) {
+      std::fprintf(stderr, "%s: - (%s): '-' stands for standard %s, which this tool does not use: give a file name "
+                   "(./- for a file of that name)\n", argv[0], i == 1 ? "in.lvs" : "out.lvr", i == 1 ? "input" : "output");
+      return 1;
+    }
   // The results written over the stream being read (or a link to it)
   // truncated it before its first byte was read: the input lost, and said
   // as 'record 0: not a lumavel stream (bad header)'.

@@ -54,6 +54,15 @@ if(NOT rc EQUAL 1 OR NOT err MATCHES "out\\.lvr: needs a path, not an empty one"
   message(FATAL_ERROR "lumavel_app_host in.lvs '': expected exit 1 and 'out.lvr: needs a path', got exit ${rc}: ${err}")
 endif()
 expect("${WORK}: read error: Is a directory" ${HOST_APP} ${WORK} out.lvr)
+# lumavel_app_host given '-' for its results made a file named '-', exit 0. Exit 1, nothing made.
+file(REMOVE ${WORK}/-)
+foreach(args "-;out.lvr" "in.lvs;-")
+  execute_process(COMMAND ${HOST_APP} ${args} WORKING_DIRECTORY ${WORK} RESULT_VARIABLE rc ERROR_VARIABLE err)
+  if(NOT rc EQUAL 1 OR NOT err MATCHES "- \\((in\\.lvs|out\\.lvr)\\): '-' stands for standard (input|output), which this tool does not use"
+     OR EXISTS ${WORK}/-)
+    message(FATAL_ERROR "lumavel_app_host ${args}: expected exit 1 and the '-' refusal, nothing made, got exit ${rc}: ${err}")
+  endif()
+endforeach()
 # '-' as the stream made a file named '-' in the current folder, exit 0 (render,
 # import-slider and calibrate --write refuse it); a folder that is not there
 # was 'cannot create the stream: No such file or directory'. Exit 1, nothing made.
