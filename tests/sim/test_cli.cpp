@@ -1103,6 +1103,13 @@ TEST(Cli, StandardOutputThatIsAnotherOutputIsRefused) {
   STRCMP_CONTAINS("rec/mav0/cam1/sensor.yaml (standard output): that is part of the recording being read",
                   fixture::read_text(dir.path() + "/err.txt").c_str());
   CHECK(fixture::read_text(yaml) == intact);
+  // ... and onto its --write file (was: the report lost under the
+  // configuration, exit 0), refused before the registration.
+  status = std::system((cd + "calibrate rec --quiet --write w.cfg > w.cfg 2>err.txt").c_str());
+  LONGS_EQUAL(2, WEXITSTATUS(status));
+  STRCMP_CONTAINS("w.cfg: standard output (the report) and --write name the same file",
+                  fixture::read_text(dir.path() + "/err.txt").c_str());
+  STRCMP_EQUAL("", fixture::read_text(dir.path() + "/w.cfg").c_str());
   // A file standard output is, named by no other output, takes the CSV.
   status = std::system((cd + "run rec --quiet > est.csv 2>err.txt").c_str());
   LONGS_EQUAL(0, WEXITSTATUS(status));
