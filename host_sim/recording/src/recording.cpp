@@ -7,6 +7,7 @@
 
 #include "lumavel/host/csv_table.hpp"
 #include "lumavel/host/groundtruth.hpp"
+#include "lumavel/host/frame_glitch.hpp"
 #include "lumavel/host/gyro_glitch.hpp"
 #include "lumavel/host/image_io.hpp"
 #include "lumavel/host/path_check.hpp"
@@ -338,6 +339,17 @@ Recording load_recording(const std::string& dir_arg) {
   for (int c = 0; c < 2; ++c) check_first_frame(rec.frames.front().path[c], c, rec.cam[c], yaml[c]);
 
   set_periods(rec);
+  {
+    std::vector<long> lines;  // pair_frames pairs cam0's rows one to one, in order
+    lines.reserve(c0.rows.size());
+    for (const CsvRow& r : c0.rows) lines.push_back(r.line);
+    const FrameGlitches fg = skip_frame_glitches(rec.frames, lines, rec.frame_period_s);
+    rec.frame_glitches = fg.count;
+    if (fg.count > 0) {
+      rec.frame_glitch_text = format_frame_glitches(fg, shown_path(c0.csv), rec.frame_period_s);
+      set_periods(rec);
+    }
+  }
   count_gaps(rec);
   const GyroGlitches glitches = repair_gyro_glitches(rec.imu_samples, rec.imu_period_s);
   rec.gyro_glitches = glitches.count;

@@ -404,6 +404,7 @@ int run(const RunArgs& a) {
   if (bar) bar->finish();
   // Said even with -q: a warning about the input, not a part of the summary.
   if (rec.gyro_glitches > 0) std::fprintf(stderr, "run: warning: %s\n", rec.gyro_glitch_text.c_str());
+  if (rec.frame_glitches > 0) std::fprintf(stderr, "run: warning: %s\n", rec.frame_glitch_text.c_str());
   for (int c = 0; c < 2; ++c)
     if (result.repeated[c] > 0) {
       const FramePairEntry& f = rec.frames[result.first_repeated[c]];

@@ -61,6 +61,8 @@ struct Recording {
   GapReport gaps;
   int gyro_glitches = 0;       // gyro values replaced as read glitches (gyro_glitch.hpp) ...
   std::string gyro_glitch_text;  // ... and what the first was ("" for none)
+  int frame_glitches = 0;      // frame pairs skipped as timing glitches (frame_glitch.hpp) ...
+  std::string frame_glitch_text;  // ... and what the first was ("" for none)
 };
 
 // "0 frame gaps (about 0 pairs missing, longest 0.000 s), 0 gyro holes
