@@ -331,6 +331,10 @@ TEST(ImportSlider, DamagedDatasetsAreRefusedNamingTheLine) {
       {[&] { line5("images.txt", [](std::string l) { return l.insert(l.find(' '), "abc"); }); },
        "images.txt:5: column 'time': '0.170000abc' is not a number"},
       // -5 s became 18446744068709551616 ns; 1e300 s an int64 overflow.
+      // Positions in millimetres (was: imported, exit 0, frames 12 m apart).
+      {[&] { line5("groundtruth.txt", [](const std::string& l) { return l.substr(0, l.find(' ')) + " 12.1 0 0 0 0 0 1"; }); },
+       "groundtruth.txt:5: x = 12.1 m is 12 m from line 1's 0.1 m: a linear slider's track is at most 10 m "
+       "(positions in millimetres? they must be metres)"},
       {[&] { line5("images.txt", [](const std::string& l) { return "-5" + l.substr(l.find(' ')); }); },
        "images.txt:5: time -5 s is outside 0..9.2e9 s"},
       {[&] { line5("groundtruth.txt", [](const std::string& l) { return "1e300" + l.substr(l.find(' ')); }); },
@@ -389,7 +393,9 @@ TEST(ImportSlider, DamagedDatasetsAreRefusedNamingTheLine) {
       {[&] { line5("groundtruth.txt", [](const std::string& l) { const size_t a = l.find(' ') + 1; return l.substr(0, a) + "1e300" + l.substr(l.find(' ', a)); }); },
        "groundtruth.txt:5: x: 1e+300 m is beyond +-1e+07 m"},
       {[&] { line5("groundtruth.txt", [](const std::string& l) { const size_t a = l.find(' ') + 1; return l.substr(0, a) + "1e5" + l.substr(l.find(' ', a)); }); },
-       "groundtruth.txt:3: the speed along x from line 1 to line 5: "},
+       // (within the recording's bound, beyond a slider's track: refused by
+       // the track's rule before its differenced speed is reached)
+       "groundtruth.txt:5: x = 100000 m is 99999.9 m from line 1's 0.1 m: a linear slider's track is at most 10 m"},
       // Ground truth on another clock, after every frame (was: 'no frame has a
       // partner 0.020000 m further on (baseline longer than the travel?)').
       {[&] {

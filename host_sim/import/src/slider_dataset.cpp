@@ -1,6 +1,7 @@
 #include "lumavel/host/slider_dataset.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -45,6 +46,12 @@ double number(std::istringstream& s, const std::string& path, long line, const c
 
 // Times become int64 nanoseconds in the recording written from them.
 constexpr double kMaxTimeS = 9.2e9;
+
+// A linear slider's track is a few metres at most: positions further apart
+// than this are in another unit (millimetres: a 1 m track read as 1000 m was
+// imported, exit 0, 'largest blended frame spacing 12.43 m', and run flagged
+// NO_STEREO on nearly every frame).
+constexpr double kMaxSliderTrackM = 10.0;
 
 double time_s(std::istringstream& s, const std::string& path, long line) {
   const double t = number(s, path, line, "time");
@@ -122,6 +129,16 @@ SliderDataset read_slider_dataset(const std::string& dir) {
     if (const std::string why = why_not_unit_quaternion(n); !why.empty())
       throw recording_error_at(gt, line, "qx qy qz qw " + why);
     check_increasing(d.poses.empty() ? 0 : d.poses.back().t, d.poses.empty() ? 0 : d.poses.back().line, p.t, gt, line);
+    for (int k = 0; k < 3 && !d.poses.empty(); ++k)
+      if (std::fabs(p.p[k] - d.poses.front().p[k]) > kMaxSliderTrackM) {
+        char why[320];
+        std::snprintf(why, sizeof why,
+                      "%s = %g m is %g m from line %ld's %g m: a linear slider's track is at most %g m (positions "
+                      "in millimetres? they must be metres)",
+                      kCols[k], p.p[k], std::fabs(p.p[k] - d.poses.front().p[k]), d.poses.front().line,
+                      d.poses.front().p[k], kMaxSliderTrackM);
+        throw recording_error_at(gt, line, why);
+      }
     d.poses.push_back(p);
   });
   if (d.poses.size() < 2) throw recording_error_in(gt, "fewer than two ground-truth samples");
