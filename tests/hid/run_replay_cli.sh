@@ -56,6 +56,13 @@ rc=$?
 [ $rc -eq 2 ] || fail "replay app.hidrep >> app.hidrep: exit $rc, expected 2: $(cat app.err)"
 grep -q "app.hidrep (standard output): that is the report file being read" app.err || fail "stdout onto the report file: $(cat app.err)"
 cmp -s run.hidrep app.hidrep || fail "replay >> onto the report file changed it"
+# '>' (the shell empties the file first) said the same, not 'not a lumavel
+# report file (no "LMVHID1" header)'.
+cp run.hidrep app.hidrep
+"$READ" replay app.hidrep > app.hidrep 2> app.err
+rc=$?
+[ $rc -eq 2 ] || fail "replay app.hidrep > app.hidrep: exit $rc, expected 2: $(cat app.err)"
+grep -q "app.hidrep (standard output): that is the report file being read" app.err || fail "stdout > the report file: $(cat app.err)"
 "$READ" replay missing.hidrep > /dev/null 2> missing.err && fail "missing file accepted"
 grep -q "missing.hidrep" missing.err || fail "missing file not named"
 "$READ" replay adir > /dev/null 2> dir.err && fail "a folder accepted as a report file"

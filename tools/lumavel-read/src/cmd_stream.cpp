@@ -140,7 +140,6 @@ int cmd_stream(const Common& c, const StreamOptions& o) {
 }
 
 int cmd_replay(const std::string& file, const StreamOptions& o) {
-  host::ReportFileReader in(file);  // a file that is not a report file is refused before any CSV is created
   // The CSV written over the report file (or a link to it) would destroy
   // what is being read: refused before anything is written.
   if (!o.output.empty() && o.output != "-") {
@@ -159,6 +158,10 @@ int cmd_replay(const std::string& file, const StreamOptions& o) {
       throw cli::UsageError(host::shown_path(so) + " (standard output): that is the report file being read (" +
                             host::shown_path(file) + "); write the CSV elsewhere");
   }
+  // Opened after those checks: 'replay r.hid > r.hid' (the shell empties the
+  // file before the tool starts) was 'not a lumavel report file (no "LMVHID1"
+  // header)', as if the file had never been one.
+  host::ReportFileReader in(file);  // a file that is not a report file is refused before any CSV is created
   Outputs out;
   open_outputs(o, false, out);
   Sink sink(out.csv, false, true);
