@@ -546,7 +546,7 @@ std::vector<Case> slider_cases() {
   refused("position 1e300 m", [=](const std::string& d) { line5(d + "/groundtruth.txt", [](const std::string& l) { const size_t a = l.find(' ') + 1; return l.substr(0, a) + "1e300" + l.substr(l.find(' ', a)); }); },
           "groundtruth.txt", ":5: x: 1e+300 m is beyond");
   refused("position jump of 1e5 m", [=](const std::string& d) { line5(d + "/groundtruth.txt", [](const std::string& l) { const size_t a = l.find(' ') + 1; return l.substr(0, a) + "1e5" + l.substr(l.find(' ', a)); }); },
-          "groundtruth.txt", ":3: the speed along x from line 1 to line 5");
+          "groundtruth.txt", ":5: x = 100000 m is 99999.9 m from line 1's 0.1 m: a linear slider's track is at most 10 m");
   // strtod's hexadecimal form, as the recording tables refuse it (was: read, exit 0).
   refused("hexadecimal position", [=](const std::string& d) { line5(d + "/groundtruth.txt", [](const std::string& l) { const size_t a = l.find(' ') + 1; return l.substr(0, a) + "0x1p-3" + l.substr(l.find(' ', a)); }); },
           "groundtruth.txt", ":5: column 'x': '0x1p-3' is a hexadecimal");
