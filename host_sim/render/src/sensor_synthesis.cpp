@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "lumavel/host/render/random.hpp"
+#include "lumavel/host/render/stereo_rig.hpp"
 
 namespace lumavel::host::render {
 
@@ -30,11 +31,8 @@ void specific_force(const BodyState& b, double f[3]) {
   f[1] = b.speed * b.yaw_rate;
   f[2] = b.az == 0.0 ? kGravity : kGravity + b.az;
   if (b.pitch == 0.0 && b.roll == 0.0) return;
-  // Into the tilted body frame: (Ry(pitch) Rx(roll))^T f.
-  const Eigen::Matrix3d tilt = (Eigen::AngleAxisd(b.pitch, Eigen::Vector3d::UnitY()) *
-                                Eigen::AngleAxisd(b.roll, Eigen::Vector3d::UnitX()))
-                                   .toRotationMatrix();
-  const Eigen::Vector3d fb = tilt.transpose() * Eigen::Vector3d(f[0], f[1], f[2]);
+  // Into the tilted body frame.
+  const Eigen::Vector3d fb = body_tilt(b).transpose() * Eigen::Vector3d(f[0], f[1], f[2]);
   for (int k = 0; k < 3; ++k) f[k] = fb[k];
 }
 
@@ -88,14 +86,15 @@ GroundTruthSample groundtruth_at(const Scenario& s, const BodyState& b, uint64_t
     g.q[2] = 0;
     g.q[3] = std::sin(0.5 * b.heading);
   } else {
-    // q = q_z(heading) q_y(pitch) q_x(roll), the same R as body_attitude.
-    const double cy = std::cos(0.5 * b.heading), sy = std::sin(0.5 * b.heading);
-    const double cp = std::cos(0.5 * b.pitch), sp = std::sin(0.5 * b.pitch);
-    const double cr = std::cos(0.5 * b.roll), sr = std::sin(0.5 * b.roll);
-    g.q[0] = cr * cp * cy + sr * sp * sy;
-    g.q[1] = sr * cp * cy - cr * sp * sy;
-    g.q[2] = cr * sp * cy + sr * cp * sy;
-    g.q[3] = cr * cp * sy - sr * sp * cy;
+    // The rotation of body_attitude as the product of its three turns' quaternions
+    // (w's sign continuing the level one's, which a matrix's conversion would not keep).
+    const Eigen::Quaterniond q = Eigen::Quaterniond(Eigen::AngleAxisd(b.heading, Eigen::Vector3d::UnitZ())) *
+                                 Eigen::Quaterniond(Eigen::AngleAxisd(b.pitch, Eigen::Vector3d::UnitY())) *
+                                 Eigen::Quaterniond(Eigen::AngleAxisd(b.roll, Eigen::Vector3d::UnitX()));
+    g.q[0] = q.w();
+    g.q[1] = q.x();
+    g.q[2] = q.y();
+    g.q[3] = q.z();
   }
   // The path's velocity plus the heave's: the body origin's, in the world.
   g.v[0] = b.speed * std::cos(b.heading);

@@ -80,11 +80,15 @@ StereoRig::StereoRig(const CameraSpec& spec)
   T_BS_[1].t = Eigen::Vector3d(half, 0, 0);
 }
 
+Eigen::Matrix3d body_tilt(const BodyState& b) {
+  return Eigen::AngleAxisd(b.pitch, Eigen::Vector3d::UnitY()).toRotationMatrix() *
+         Eigen::AngleAxisd(b.roll, Eigen::Vector3d::UnitX()).toRotationMatrix();
+}
+
 Eigen::Matrix3d body_attitude(const BodyState& b) {
   // Level (no vibration): the yaw alone, bit for bit as before tilts existed.
   if (b.pitch == 0.0 && b.roll == 0.0) return yaw(b.heading);
-  return yaw(b.heading) * Eigen::AngleAxisd(b.pitch, Eigen::Vector3d::UnitY()).toRotationMatrix() *
-         Eigen::AngleAxisd(b.roll, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  return yaw(b.heading) * body_tilt(b);
 }
 
 RigidPose body_in_world(const BodyState& b) {

@@ -58,8 +58,10 @@ class StereoRig {
   RigidPose T_BS_[2];
 };
 
-// Body-to-world rotation: yaw(heading) * Ry(pitch) * Rx(roll) (ZYX Euler
-// angles; positive pitch turns body x (forward) towards -z, nose down).
+// The body's tilt about its level (yawed) frame: Ry(pitch) * Rx(roll).
+Eigen::Matrix3d body_tilt(const BodyState& b);
+// Body-to-world rotation: yaw(heading) * body_tilt(b) (ZYX Euler angles;
+// positive pitch turns body x (forward) towards -z, nose down).
 Eigen::Matrix3d body_attitude(const BodyState& b);
 RigidPose body_in_world(const BodyState& b);
 
