@@ -87,13 +87,14 @@ int calibrate(CalibrateArgs& a) {
   // Its report on standard output too, as run's CSV: 'calibrate rec >>
   // rec/mav0/cam0/sensor.yaml' appended the report to the sensor.yaml it had
   // read, exit 0 (the recording then refused: 'registered' is no key).
-  if (const std::string so = standard_output_file(); !so.empty() && overwrites_recording(rec, so))
+  const std::string so = standard_output_file();
+  if (!so.empty() && overwrites_recording(rec, so))
     throw cli::UsageError(shown_path(so) + " (standard output): that is part of the recording being read (" +
                           shown_path(rec.root) + "); send the report elsewhere");
   // ... nor the --write file, as run's outputs: 'calibrate rec --write w.cfg >
   // w.cfg' wrote the configuration over the report (the shell had opened the
   // file first), exit 0, the report lost.
-  if (const std::string so = standard_output_file(); !so.empty() && !a.write_path.empty()) {
+  if (!so.empty() && !a.write_path.empty()) {
     const std::string at = written_path(a.write_path);
     if (!at.empty() && at == written_path(so))
       throw cli::UsageError(shown_path(a.write_path) + ": standard output (the report) and --write name the same file");
